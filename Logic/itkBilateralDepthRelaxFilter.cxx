@@ -1,0 +1,6 @@
+#include "itkBilateralDepthRelaxFilter.h"
+
+namespace itk
+{
+template class BilateralDepthRelaxFilter<Image<float, 2>>;
+} // namespace itk

@@ -1,0 +1,200 @@
+#ifndef itkBilateralDepthRelaxFilter_hxx
+#define itkBilateralDepthRelaxFilter_hxx
+
+#include "itkBilateralDepthRelaxFilter.h"
+
+#include "itkMultiThreaderBase.h"
+
+#include <cmath>
+#include <vector>
+
+namespace itk
+{
+
+template <typename TImage, typename TMaskImage>
+BilateralDepthRelaxFilter<TImage, TMaskImage>::BilateralDepthRelaxFilter()
+{
+  this->SetNumberOfRequiredInputs(1);
+  this->AddOptionalInputName("FixedMask");
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyPreconditions() ITKv5_CONST
+{
+  Superclass::VerifyPreconditions();
+  if (!(std::isfinite(m_Relaxation) && m_Relaxation >= 0.0 && m_Relaxation <= 1.0))
+  {
+    itkExceptionMacro(<< "Relaxation w = " << m_Relaxation << " is invalid: it must be a finite number in [0, 1]");
+  }
+  if (!(std::isfinite(m_Anisotropy) && m_Anisotropy >= 0.0))
+  {
+    itkExceptionMacro(<< "Anisotropy a = " << m_Anisotropy << " mm^-2 is invalid: it must be finite and >= 0");
+  }
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyInputInformation() ITKv5_CONST
+{
+  const ImageType *     depth = this->GetInput();
+  const MaskImageType * mask = this->GetFixedMask();
+  if (depth != nullptr && mask != nullptr &&
+      depth->GetLargestPossibleRegion().GetSize() != mask->GetLargestPossibleRegion().GetSize())
+  {
+    itkExceptionMacro(<< "FixedMask size " << mask->GetLargestPossibleRegion().GetSize()
+                      << " differs from the depth image size " << depth->GetLargestPossibleRegion().GetSize());
+  }
+  Superclass::VerifyInputInformation();
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateInputRequestedRegion()
+{
+  Superclass::GenerateInputRequestedRegion();
+  for (auto & input : this->GetInputs())
+  {
+    if (auto * image = dynamic_cast<ImageBase<ImageType::ImageDimension> *>(input.GetPointer()))
+    {
+      image->SetRequestedRegionToLargestPossibleRegion();
+    }
+  }
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::EnlargeOutputRequestedRegion(DataObject * output)
+{
+  Superclass::EnlargeOutputRequestedRegion(output);
+  output->SetRequestedRegionToLargestPossibleRegion();
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateOutputInformation()
+{
+  Superclass::GenerateOutputInformation();
+  this->GetOutput()->SetMetaDataDictionary(this->GetInput()->GetMetaDataDictionary());
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyDepthIsFinite() const
+{
+  const ImageType * depth = this->GetInput();
+  const auto &      region = depth->GetBufferedRegion();
+  const PixelType * values = depth->GetBufferPointer();
+  const std::size_t count = region.GetNumberOfPixels();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (!std::isfinite(values[k]))
+    {
+      const auto index = depth->ComputeIndex(static_cast<typename ImageType::OffsetValueType>(k));
+      itkExceptionMacro(<< "Depth input holds the non-finite value " << values[k] << " at pixel " << index);
+    }
+  }
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateData()
+{
+  this->AllocateOutputs();
+  this->VerifyDepthIsFinite();
+  this->RelaxOnHost();
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHost()
+{
+  const ImageType *     depth = this->GetInput();
+  const MaskImageType * mask = this->GetFixedMask();
+  ImageType *           output = this->GetOutput();
+
+  const auto        size = depth->GetLargestPossibleRegion().GetSize();
+  const std::size_t width = size[0];
+  const std::size_t height = size[1];
+  const std::size_t count = width * height;
+
+  std::vector<PixelType> current(depth->GetBufferPointer(), depth->GetBufferPointer() + count);
+  std::vector<PixelType> next(current);
+  const auto *           fixed = mask ? mask->GetBufferPointer() : nullptr;
+
+  const double w = m_Relaxation;
+  const double a = m_Anisotropy;
+  const double selfWeight = 1.0 - w;
+
+  auto weight = [a](double difference) {
+    const double exponent = a * difference * difference;
+    return exponent > WeightUnderflowExponent ? 0.0 : std::exp(-exponent);
+  };
+
+  // Each row reads only `current` and writes only its own part of `next`, so any split gives the same bits.
+  auto relaxRow = [&](SizeValueType row) {
+    for (std::size_t column = 0; column < width; ++column)
+    {
+      const std::size_t k = row * width + column;
+      const double      dp = current[k];
+      if (fixed && fixed[k])
+      {
+        next[k] = current[k];
+        continue;
+      }
+      double neighbours = 0.0;
+      double weightSum = 0.0;
+      double weightedDifference = 0.0;
+      auto   accumulate = [&](std::size_t q) {
+        const double difference = static_cast<double>(current[q]) - dp;
+        const double r = weight(difference);
+        neighbours += 1.0;
+        weightSum += r;
+        weightedDifference += r * difference;
+      };
+      if (column > 0)
+      {
+        accumulate(k - 1);
+      }
+      if (column + 1 < width)
+      {
+        accumulate(k + 1);
+      }
+      if (row > 0)
+      {
+        accumulate(k - width);
+      }
+      if (row + 1 < height)
+      {
+        accumulate(k + width);
+      }
+      // D' = D_p + w sum R (D_q - D_p) / ((1-w)|Omega| + w sum R): Eq. 1 rearranged, exact for w = 0.
+      const double denominator = selfWeight * neighbours + w * weightSum;
+      next[k] = denominator > 0.0 ? static_cast<PixelType>(dp + w * weightedDifference / denominator) : current[k];
+    }
+  };
+
+  MultiThreaderBase * threader = this->GetMultiThreader();
+  threader->SetNumberOfWorkUnits(this->GetNumberOfWorkUnits());
+  for (unsigned int iteration = 0; iteration < m_NumberOfIterations; ++iteration)
+  {
+    threader->ParallelizeArray(0, height, relaxRow, nullptr);
+    std::swap(current, next);
+    this->UpdateProgress(static_cast<float>(iteration + 1) / m_NumberOfIterations);
+  }
+  std::copy(current.begin(), current.end(), output->GetBufferPointer());
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Indent indent) const
+{
+  Superclass::PrintSelf(os, indent);
+  os << indent << "Relaxation (w): " << m_Relaxation << std::endl;
+  os << indent << "Anisotropy (a, mm^-2): " << m_Anisotropy << std::endl;
+  os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
+}
+
+} // namespace itk
+
+#endif

@@ -1,0 +1,243 @@
+#ifndef itkCPRResampleImageFilter_hxx
+#define itkCPRResampleImageFilter_hxx
+
+#include "itkCPRResampleImageFilter.h"
+
+#include "itkBSplineInterpolateImageFunction.h"
+#include "itkImageRegionConstIterator.h"
+#include "itkImageRegionIteratorWithIndex.h"
+#include "itkLinearInterpolateImageFunction.h"
+#include "itkMinimumMaximumImageCalculator.h"
+#include "itkNearestNeighborInterpolateImageFunction.h"
+
+#include <cmath>
+
+namespace itk
+{
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::CPRResampleImageFilter()
+{
+  this->SetPrimaryInputName("Volume");
+  this->AddRequiredInputName("Depth", 1);
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetView(const CPRViewGeometry & view)
+{
+  m_View = view;
+  m_HasExplicitView = true;
+  this->Modified();
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::ClearView()
+{
+  m_HasExplicitView = false;
+  this->Modified();
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetDefaultValue(OutputPixelType value)
+{
+  m_DefaultValue = value;
+  m_UseVolumeMinimumAsDefault = false;
+  this->Modified();
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VerifyPreconditions() ITKv5_CONST
+{
+  Superclass::VerifyPreconditions();
+  if (!(std::isfinite(m_SlabThickness) && m_SlabThickness >= 0.0))
+  {
+    itkExceptionMacro(<< "SlabThickness = " << m_SlabThickness << " mm is invalid: it must be finite and >= 0");
+  }
+  if (!m_UseVolumeMinimumAsDefault && !std::isfinite(static_cast<double>(m_DefaultValue)))
+  {
+    itkExceptionMacro(<< "DefaultValue = " << m_DefaultValue << " is not finite");
+  }
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateOutputInformation()
+{
+  const DepthImageType * depth = this->GetDepth();
+  OutputImageType *      output = this->GetOutput();
+  if (!m_HasExplicitView)
+  {
+    if (!CPRViewGeometry::DictionaryHasView(depth->GetMetaDataDictionary()))
+    {
+      itkExceptionMacro(<< "Depth image carries no CPR view in its metadata and no view was set with SetView()");
+    }
+    m_View = CPRViewGeometry::ReadFromDictionary(depth->GetMetaDataDictionary());
+  }
+  const auto depthSize = depth->GetLargestPossibleRegion().GetSize();
+  if (depthSize != m_View.GetSize())
+  {
+    itkExceptionMacro(<< "Depth image size " << depthSize << " differs from the view's size " << m_View.GetSize());
+  }
+  m_View.ConfigureImage(output);
+  output->SetLargestPossibleRegion(depth->GetLargestPossibleRegion());
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateInputRequestedRegion()
+{
+  auto * volume = const_cast<VolumeImageType *>(this->GetVolume());
+  auto * depth = const_cast<DepthImageType *>(this->GetDepth());
+  if (volume)
+  {
+    volume->SetRequestedRegionToLargestPossibleRegion();
+  }
+  if (depth)
+  {
+    depth->SetRequestedRegion(this->GetOutput()->GetRequestedRegion());
+  }
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::BeforeThreadedGenerateData()
+{
+  const VolumeImageType * volume = this->GetVolume();
+  switch (m_Interpolation)
+  {
+    case CPRInterpolationMode::Nearest:
+      m_Interpolator = NearestNeighborInterpolateImageFunction<VolumeImageType, double>::New();
+      break;
+    case CPRInterpolationMode::Cubic:
+    {
+      auto bspline = BSplineInterpolateImageFunction<VolumeImageType, double, float>::New();
+      bspline->SetSplineOrder(3);
+      m_Interpolator = bspline;
+      break;
+    }
+    default:
+      m_Interpolator = LinearInterpolateImageFunction<VolumeImageType, double>::New();
+  }
+  m_Interpolator->SetInputImage(volume);
+
+  m_OutsideValue = m_DefaultValue;
+  if (m_UseVolumeMinimumAsDefault)
+  {
+    auto calculator = MinimumMaximumImageCalculator<VolumeImageType>::New();
+    calculator->SetImage(volume);
+    calculator->SetRegion(volume->GetBufferedRegion());
+    calculator->ComputeMinimum();
+    m_OutsideValue = static_cast<OutputPixelType>(calculator->GetMinimum());
+  }
+
+  // X = B(i, j) + d v is affine in (i, j, d), and so is the volume's continuous index of X.
+  ContinuousIndexType atCenter;
+  ContinuousIndexType atColumn;
+  ContinuousIndexType atRow;
+  ContinuousIndexType atDepth;
+  const auto &        center = m_View.GetCenter();
+  volume->TransformPhysicalPointToContinuousIndex(center, atCenter);
+  volume->TransformPhysicalPointToContinuousIndex(center + m_View.GetU() * m_View.GetSpacing()[0], atColumn);
+  volume->TransformPhysicalPointToContinuousIndex(center - m_View.GetUp() * m_View.GetSpacing()[1], atRow);
+  volume->TransformPhysicalPointToContinuousIndex(center + m_View.GetV(), atDepth);
+  m_IndexAtCenter = atCenter;
+  m_IndexStepPerColumn = atColumn - atCenter;
+  m_IndexStepPerRow = atRow - atCenter;
+  m_IndexStepPerMillimetreDepth = atDepth - atCenter;
+
+  m_SlabOffsets.assign(1, 0.0);
+  if (m_SlabThickness > 0.0)
+  {
+    const auto & spacing = volume->GetSpacing();
+    const double step = 0.5 * std::min({ spacing[0], spacing[1], spacing[2] });
+    const auto   intervals = static_cast<std::size_t>(std::ceil(m_SlabThickness / step - 1e-9));
+    m_SlabOffsets.resize(intervals + 1);
+    for (std::size_t k = 0; k <= intervals; ++k)
+    {
+      m_SlabOffsets[k] = -0.5 * m_SlabThickness + m_SlabThickness * static_cast<double>(k) / intervals;
+    }
+  }
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::DynamicThreadedGenerateData(
+  const OutputRegionType & region)
+{
+  const DepthImageType * depth = this->GetDepth();
+  OutputImageType *      output = this->GetOutput();
+  const auto &           size = m_View.GetSize();
+  const double           centerColumn = 0.5 * (size[0] - 1.0);
+  const double           centerRow = 0.5 * (size[1] - 1.0);
+
+  ImageRegionConstIterator<DepthImageType>   depthIt(depth, region);
+  ImageRegionIteratorWithIndex<OutputImageType> outIt(output, region);
+  for (; !outIt.IsAtEnd(); ++outIt, ++depthIt)
+  {
+    const auto   index = outIt.GetIndex();
+    const double d = static_cast<double>(depthIt.Get());
+    Vector<double, 3> surface = m_IndexAtCenter.GetVectorFromOrigin() + m_IndexStepPerColumn * (index[0] - centerColumn) +
+                                m_IndexStepPerRow * (index[1] - centerRow) + m_IndexStepPerMillimetreDepth * d;
+    double sum = 0.0;
+    double extreme = 0.0;
+    int    inside = 0;
+    for (const double offset : m_SlabOffsets)
+    {
+      ContinuousIndexType sample;
+      for (unsigned int k = 0; k < 3; ++k)
+      {
+        sample[k] = surface[k] + m_IndexStepPerMillimetreDepth[k] * offset;
+      }
+      if (!m_Interpolator->IsInsideBuffer(sample))
+      {
+        continue;
+      }
+      const double value = m_Interpolator->EvaluateAtContinuousIndex(sample);
+      if (inside == 0)
+      {
+        extreme = value;
+      }
+      else if (m_SlabMode == CPRSlabMode::MIP)
+      {
+        extreme = std::max(extreme, value);
+      }
+      else if (m_SlabMode == CPRSlabMode::MinIP)
+      {
+        extreme = std::min(extreme, value);
+      }
+      sum += value;
+      ++inside;
+    }
+    if (inside == 0)
+    {
+      outIt.Set(m_OutsideValue);
+    }
+    else
+    {
+      const bool mean = m_SlabMode == CPRSlabMode::Mean && m_SlabOffsets.size() > 1;
+      outIt.Set(static_cast<OutputPixelType>(mean ? sum / inside : extreme));
+    }
+  }
+}
+
+template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::PrintSelf(std::ostream & os, Indent indent) const
+{
+  Superclass::PrintSelf(os, indent);
+  os << indent << "Interpolation: " << m_Interpolation << std::endl;
+  os << indent << "UseVolumeMinimumAsDefault: " << (m_UseVolumeMinimumAsDefault ? "On" : "Off") << std::endl;
+  os << indent << "DefaultValue: " << static_cast<double>(m_DefaultValue) << std::endl;
+  os << indent << "SlabThickness (mm): " << m_SlabThickness << std::endl;
+  os << indent << "SlabMode: " << m_SlabMode << std::endl;
+  os << indent << "View (" << (m_HasExplicitView ? "explicit" : "from the depth image") << "):" << std::endl;
+  m_View.Print(os, indent.GetNextIndent());
+}
+
+} // namespace itk
+
+#endif

@@ -1,0 +1,106 @@
+#ifndef itkCenterlineTree_h
+#define itkCenterlineTree_h
+
+#include "itkGroupSpatialObject.h"
+#include "itkPoint.h"
+
+#include <string>
+#include <vector>
+
+namespace itk
+{
+
+/** \class CenterlineBranch
+ * \brief One vessel section: an ordered polyline in LPS millimetres, an optional lumen radius per point (mm),
+ * and an integer id >= 1 that labels the pixels it owns in the reformation.
+ */
+struct CenterlineBranch
+{
+  using PointType = Point<double, 3>;
+
+  int                    Id{ 1 };
+  std::vector<PointType> Points;
+  /** Lumen radius per point, in mm; empty when unknown. */
+  std::vector<double> Radii;
+
+  bool
+  HasRadii() const
+  {
+    return !Radii.empty();
+  }
+};
+
+/** \class CenterlineTree
+ * \brief The centerlines of a vessel tree (DESIGN section 3.3): branches in LPS millimetres.
+ *
+ * A small value type that the reformation filters take as a parameter. It converts to and from the
+ * ITK-native representation, itk::TubeSpatialObject branches under an itk::GroupSpatialObject, which is what
+ * TubeTK's .tre files hold.
+ *
+ * \sa CPRDepthImageFilter, CPRViewGeometry
+ */
+class CenterlineTree
+{
+public:
+  using PointType = CenterlineBranch::PointType;
+  using BranchContainer = std::vector<CenterlineBranch>;
+  using GroupType = GroupSpatialObject<3>;
+
+  /** Appends a branch; Validate() checks it. */
+  void
+  AddBranch(CenterlineBranch branch);
+
+  const BranchContainer &
+  GetBranches() const
+  {
+    return m_Branches;
+  }
+  BranchContainer &
+  GetBranches()
+  {
+    return m_Branches;
+  }
+
+  std::size_t
+  GetNumberOfBranches() const
+  {
+    return m_Branches.size();
+  }
+  std::size_t
+  GetNumberOfPoints() const;
+  bool
+  IsEmpty() const
+  {
+    return GetNumberOfPoints() == 0;
+  }
+  /** True when every branch carries a radius per point. */
+  bool
+  HasRadii() const;
+
+  /** Axis-aligned bounds of all points (LPS mm). Throws on an empty tree. */
+  void
+  GetBounds(PointType & minimum, PointType & maximum) const;
+  /** The centre of the bounding box, the default view centre. */
+  PointType
+  GetBoundingBoxCenter() const;
+
+  /** Throws itk::ExceptionObject naming the branch and point when the tree is empty, a branch has no point,
+   * an id is < 1 or repeated, a coordinate or radius is not finite, a radius is negative, or the radius count
+   * differs from the point count. */
+  void
+  Validate() const;
+
+  /** Tube spatial objects (one per branch, id = branch id) under a group; positions in world (LPS) space. */
+  GroupType::Pointer
+  ToSpatialObject() const;
+  /** Reads every itk::TubeSpatialObject below \a group, in world space. Radii are kept when any is non-zero. */
+  static CenterlineTree
+  FromSpatialObject(const GroupType * group);
+
+private:
+  BranchContainer m_Branches;
+};
+
+} // namespace itk
+
+#endif
