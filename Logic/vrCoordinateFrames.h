@@ -1,0 +1,41 @@
+#ifndef vrCoordinateFrames_h
+#define vrCoordinateFrames_h
+
+#include "itkPoint.h"
+
+namespace vr
+{
+/** The coordinate systems a file or a platform node may use. Auto: take it from the file, else RAS. */
+enum class CoordinateSpace
+{
+  Auto,
+  RAS,
+  LPS
+};
+
+/** The one place where RAS (3D Slicer, VMTK) and LPS (ITK, DICOM) meet: negate x and y. The map is its own
+ * inverse. */
+inline itk::Point<double, 3>
+RASToLPS(const itk::Point<double, 3> & point)
+{
+  itk::Point<double, 3> converted = point;
+  converted[0] = -point[0];
+  converted[1] = -point[1];
+  return converted;
+}
+
+inline itk::Point<double, 3>
+LPSToRAS(const itk::Point<double, 3> & point)
+{
+  return RASToLPS(point);
+}
+
+/** "RAS", "LPS" or "auto". */
+const char *
+ToString(CoordinateSpace space);
+/** Parses "RAS", "LPS" or "auto" (any case); throws vr::InputError naming \a what otherwise. */
+CoordinateSpace
+ParseCoordinateSpace(const std::string & text, const std::string & what);
+} // namespace vr
+
+#endif

@@ -1,0 +1,18 @@
+#ifndef vrInputError_h
+#define vrInputError_h
+
+#include <stdexcept>
+#include <string>
+
+namespace vr
+{
+/** Bad input from a user: a file, a field, a flag or a parameter. The message names what is wrong and where,
+ * ready to show as it is. */
+class InputError : public std::runtime_error
+{
+public:
+  using std::runtime_error::runtime_error;
+};
+} // namespace vr
+
+#endif
