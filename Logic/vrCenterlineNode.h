@@ -1,0 +1,74 @@
+#ifndef vrCenterlineNode_h
+#define vrCenterlineNode_h
+
+#include <vtkObject.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+namespace vr
+{
+/** \class CenterlineNode
+ * \brief The centerlines of a vessel tree as a platform hands them over: a vtkPolyData whose polylines are the
+ * branches, points in RAS millimetres, with a lumen radius point array (mm), as 3D Slicer's models and curves
+ * hold them.
+ *
+ * One polyline is one vessel section (VMTK's overlapping source-to-target paths are merged by the centerline
+ * readers before they reach a node). The radius array is "Radius" (3D Slicer) or "MaximumInscribedSphereRadius"
+ * (VMTK); without one the lumen is unknown. An integer cell array "BranchId" (ids >= 1) names the branches;
+ * without it the n-th polyline is branch n (from 1).
+ *
+ * \sa VolumeNode, VesselReformationLogic, vrNodeConversion.h
+ */
+class CenterlineNode : public vtkObject
+{
+public:
+  static CenterlineNode *
+  New();
+  vtkTypeMacro(CenterlineNode, vtkObject);
+  void
+  PrintSelf(ostream & os, vtkIndent indent) override;
+
+  /** Point array names searched for lumen radii, in order. */
+  static constexpr const char * RadiusArrayNames[] = { "Radius", "MaximumInscribedSphereRadius" };
+  /** Cell array holding branch ids. */
+  static constexpr const char * BranchIdArrayName = "BranchId";
+
+  /** The polylines (RAS mm). The node keeps a reference. */
+  void
+  SetPolyData(vtkPolyData * polyData);
+  vtkPolyData *
+  GetPolyData() const
+  {
+    return m_PolyData;
+  }
+
+  /** A name for messages ("aorta-centerline.vtp"). */
+  void
+  SetName(const std::string & name);
+  const std::string &
+  GetName() const
+  {
+    return m_Name;
+  }
+
+  /** \return the latest modification time of the node and its polydata. */
+  vtkMTimeType
+  GetMTime() override;
+
+protected:
+  CenterlineNode();
+  ~CenterlineNode() override;
+
+private:
+  CenterlineNode(const CenterlineNode &) = delete;
+  void
+  operator=(const CenterlineNode &) = delete;
+
+  vtkSmartPointer<vtkPolyData> m_PolyData;
+  std::string                  m_Name;
+};
+} // namespace vr
+
+#endif
