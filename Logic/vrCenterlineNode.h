@@ -14,10 +14,10 @@ namespace vr
  * branches, points in RAS millimetres, with a lumen radius point array (mm), as 3D Slicer's models and curves
  * hold them.
  *
- * One polyline is one vessel section (VMTK's overlapping source-to-target paths are merged by the centerline
- * readers before they reach a node). The radius array is "Radius" (3D Slicer) or "MaximumInscribedSphereRadius"
- * (VMTK); without one the lumen is unknown. An integer cell array "BranchId" (ids >= 1) names the branches;
- * without it the n-th polyline is branch n (from 1).
+ * The polylines may be VMTK's overlapping source-to-target paths: the conversion to a tree
+ * (vr::CenterlineTreeFromPolyData) merges them so that each vessel section is one branch. Radii come from the point
+ * array "MaximumInscribedSphereRadius" (VMTK) or "Radius" (3D Slicer); without one the lumen is unknown. A cell
+ * array "BranchIds" names the branches when each polyline is one.
  *
  * \sa VolumeNode, VesselReformationLogic, vrNodeConversion.h
  */
@@ -29,11 +29,6 @@ public:
   vtkTypeMacro(CenterlineNode, vtkObject);
   void
   PrintSelf(ostream & os, vtkIndent indent) override;
-
-  /** Point array names searched for lumen radii, in order. */
-  static constexpr const char * RadiusArrayNames[] = { "Radius", "MaximumInscribedSphereRadius" };
-  /** Cell array holding branch ids. */
-  static constexpr const char * BranchIdArrayName = "BranchId";
 
   /** The polylines (RAS mm). The node keeps a reference. */
   void

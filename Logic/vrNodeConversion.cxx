@@ -2,20 +2,14 @@
 
 #include "itkCPRViewGeometry.h"
 #include "itkMetaDataObject.h"
+#include "vrCenterlinePolyData.h"
 #include "vrCoordinateFrames.h"
 #include "vrInputError.h"
 
-#include <vtkCellArray.h>
-#include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkDoubleArray.h>
 #include <vtkImageData.h>
-#include <vtkIntArray.h>
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
 #include <vtkSetGet.h>
 
 #include <cmath>
@@ -385,59 +379,11 @@ ConvertCenterlineNodeToTree(CenterlineNode * node)
 {
   const std::string what = Describe("centerline node", node ? node->GetName() : std::string());
   vtkPolyData *     polyData = node ? node->GetPolyData() : nullptr;
-  if (polyData == nullptr || polyData->GetNumberOfLines() == 0 || polyData->GetNumberOfPoints() == 0)
+  if (polyData == nullptr)
   {
-    throw InputError(what + ": has no polyline");
+    throw InputError(what + ": has no polydata");
   }
-  vtkDataArray * radii = nullptr;
-  for (const char * arrayName : CenterlineNode::RadiusArrayNames)
-  {
-    vtkDataArray * candidate = polyData->GetPointData()->GetArray(arrayName);
-    if (candidate != nullptr && candidate->GetNumberOfComponents() == 1)
-    {
-      radii = candidate;
-      break;
-    }
-  }
-  vtkDataArray * branchIds = polyData->GetCellData()->GetArray(CenterlineNode::BranchIdArrayName);
-
-  itk::CenterlineTree tree;
-  vtkCellArray *      lines = polyData->GetLines();
-  // Cell ids of a polydata count vertices first, then lines.
-  const vtkIdType firstLineCell = polyData->GetNumberOfVerts();
-  vtkIdType       lineIndex = 0;
-  vtkIdType       pointCount = 0;
-  const vtkIdType * pointIds = nullptr;
-  for (lines->InitTraversal(); lines->GetNextCell(pointCount, pointIds); ++lineIndex)
-  {
-    if (pointCount == 0)
-    {
-      continue;
-    }
-    itk::CenterlineBranch branch;
-    branch.Id = static_cast<int>(lineIndex + 1);
-    if (branchIds != nullptr)
-    {
-      const double id = branchIds->GetComponent(firstLineCell + lineIndex, 0);
-      if (!(id >= 1.0 && id == std::floor(id) && id <= std::numeric_limits<int>::max()))
-      {
-        throw InputError(what + ": polyline " + std::to_string(lineIndex) + " has BranchId " + std::to_string(id) +
-                         "; ids must be whole numbers >= 1");
-      }
-      branch.Id = static_cast<int>(id);
-    }
-    for (vtkIdType k = 0; k < pointCount; ++k)
-    {
-      double ras[3];
-      polyData->GetPoint(pointIds[k], ras);
-      branch.Points.push_back(RASToLPS(AsPoint(ras[0], ras[1], ras[2])));
-      if (radii != nullptr)
-      {
-        branch.Radii.push_back(radii->GetComponent(pointIds[k], 0));
-      }
-    }
-    tree.AddBranch(std::move(branch));
-  }
+  itk::CenterlineTree tree = CenterlineTreeFromPolyData(polyData, CoordinateSpace::RAS, what);
   try
   {
     tree.Validate();
@@ -452,39 +398,9 @@ ConvertCenterlineNodeToTree(CenterlineNode * node)
 vtkSmartPointer<CenterlineNode>
 ConvertTreeToCenterlineNode(const itk::CenterlineTree & tree, const std::string & name)
 {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  points->SetDataTypeToDouble();
-  auto lines = vtkSmartPointer<vtkCellArray>::New();
-  auto ids = vtkSmartPointer<vtkIntArray>::New();
-  ids->SetName(CenterlineNode::BranchIdArrayName);
-  auto radii = vtkSmartPointer<vtkDoubleArray>::New();
-  radii->SetName(CenterlineNode::RadiusArrayNames[0]);
-  const bool withRadii = tree.HasRadii();
-  for (const auto & branch : tree.GetBranches())
-  {
-    lines->InsertNextCell(static_cast<vtkIdType>(branch.Points.size()));
-    for (std::size_t k = 0; k < branch.Points.size(); ++k)
-    {
-      const Point3 ras = LPSToRAS(branch.Points[k]);
-      lines->InsertCellPoint(points->InsertNextPoint(ras[0], ras[1], ras[2]));
-      if (withRadii)
-      {
-        radii->InsertNextValue(branch.Radii[k]);
-      }
-    }
-    ids->InsertNextValue(branch.Id);
-  }
-  auto polyData = vtkSmartPointer<vtkPolyData>::New();
-  polyData->SetPoints(points);
-  polyData->SetLines(lines);
-  polyData->GetCellData()->AddArray(ids);
-  if (withRadii)
-  {
-    polyData->GetPointData()->AddArray(radii);
-  }
   auto node = vtkSmartPointer<CenterlineNode>::New();
   node->SetName(name);
-  node->SetPolyData(polyData);
+  node->SetPolyData(PolyDataFromCenterlineTree(tree, CoordinateSpace::RAS));
   return node;
 }
 } // namespace vr

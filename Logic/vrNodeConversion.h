@@ -55,16 +55,16 @@ ConvertVolumeNodeToMaskImage(VolumeNode * node);
 LabelImageType::Pointer
 ConvertVolumeNodeToLabelImage(VolumeNode * node);
 
-/** A centerline node's polylines as a tree in LPS: one branch per polyline (of at least one point), radii from
- * the first radius array found (CenterlineNode::RadiusArrayNames), ids from the "BranchId" cell array or
- * 1, 2, ... in order.
- * \param node a node with polydata.
+/** A centerline node's polylines as a tree in LPS, through vr::CenterlineTreeFromPolyData (vrCenterlinePolyData.h,
+ * the one polydata -> tree conversion, shared with the .vtp/.vtk reader): VMTK's overlapping paths are merged,
+ * radii come from "MaximumInscribedSphereRadius" or "Radius", ids from the "BranchIds" cell array when present.
+ * \param node a node with polydata (RAS).
  * \return the tree, validated (itk::CenterlineTree::Validate). */
 itk::CenterlineTree
 ConvertCenterlineNodeToTree(CenterlineNode * node);
 
-/** The inverse: one polyline per branch in RAS, a "Radius" point array when the tree has radii, and the ids in
- * a "BranchId" cell array.
+/** The inverse, through vr::PolyDataFromCenterlineTree: one polyline per branch in RAS, the "Radius" point array
+ * when the tree has radii and the ids in the "BranchIds" cell array.
  * \param tree a tree in LPS.
  * \param name the node's name.
  * \return a new node. */

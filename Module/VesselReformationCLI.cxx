@@ -1,0 +1,156 @@
+// The VesselReformation command-line module: volume + centerlines -> CPR images, depth maps, surface, PNG.
+// It only collects parameters and files; vr::VesselReformationLogic computes.
+
+#include "vrCLIModuleRunner.h"
+#include "vrCenterlineIO.h"
+#include "vrImageIO.h"
+#include "vrInputError.h"
+#include "vrModuleExport.h"
+#include "vrNodeConversion.h"
+#include "vrStagedOutputs.h"
+#include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
+
+namespace
+{
+std::string
+FileName(const std::string & path)
+{
+  return std::filesystem::path(path).filename().string();
+}
+
+vr::ReformationParameters
+ParametersFrom(const vr::CLIArguments & arguments)
+{
+  vr::ReformationParameters parameters;
+  const vr::UpAxisChoice    up = vr::ParseUpAxis(arguments.String("up"), "--up");
+  parameters.AutomaticUp = up.Automatic;
+  parameters.Up = up.Vector;
+  parameters.AngleInDegrees = arguments.Double("angle");
+  if (arguments.Given("size"))
+  {
+    parameters.ImageSize = vr::ParseImageSize(arguments.String("size"), "--size");
+  }
+  if (arguments.Given("spacing"))
+  {
+    parameters.PixelSpacing = vr::ParsePixelSpacing(arguments.String("spacing"), "--spacing");
+  }
+  parameters.Mode = vr::ParseDepthMode(arguments.String("mode"), "--mode");
+  parameters.FixLumen = vr::ParseOnOff(arguments.String("fixLumen"), "--fixLumen");
+  parameters.Relaxation = arguments.Double("relaxation");
+  parameters.Anisotropy = arguments.Double("anisotropy");
+  parameters.Iterations = arguments.Integer("iterations");
+  parameters.Backend = vr::ParseRelaxBackend(arguments.String("backend"), "--backend");
+  parameters.OpenCLDevice = arguments.String("openclDevice");
+  parameters.Interpolation = vr::ParseInterpolation(arguments.String("interpolation"), "--interpolation");
+  parameters.SlabThickness = arguments.Double("slabThickness");
+  parameters.SlabMode = vr::ParseSlabMode(arguments.String("slabMode"), "--slabMode");
+  parameters.Window = arguments.Double("window");
+  parameters.Level = arguments.Double("level");
+  parameters.Validate();
+  return parameters;
+}
+
+void
+RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progress)
+{
+  const vr::ReformationParameters parameters = ParametersFrom(arguments);
+  const vr::CoordinateSpace       centerlineSpace =
+    vr::ParseCoordinateSpace(arguments.String("centerlineSpace"), "--centerlineSpace");
+
+  // Every output path is checked before the work, and nothing lands until all are written.
+  vr::StagedOutputs staged;
+  const auto        stage = [&](const char * name) -> const std::string * {
+    return arguments.Given(name) ? &staged.Add(arguments.String(name), arguments.Spelling(name)) : nullptr;
+  };
+  const std::string * cprPath = stage("outputCPR");
+  const std::string * depthPath = stage("outputDepth");
+  const std::string * relaxedPath = stage("outputRelaxedDepth");
+  const std::string * maskPath = stage("outputMask");
+  const std::string * labelsPath = stage("outputLabels");
+  const std::string * unfilteredPath = stage("outputUnfilteredCPR");
+  const std::string * surfacePath = stage("outputSurface");
+  const std::string * pngPath = stage("outputPNG");
+
+  const std::string volumePath = arguments.String("inputVolume");
+  const std::string centerlinePath = arguments.String("inputCenterlines");
+  vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
+  vr::CenterlineReadReport     report;
+  const itk::CenterlineTree    tree = vr::ReadCenterlines(centerlinePath, centerlineSpace, &report);
+
+  vr::VesselReformationLogic logic;
+  logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, FileName(volumePath)));
+  volume = nullptr; // the node holds the voxels now
+  logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
+  logic.SetParameters(parameters);
+  logic.SetSurfaceEnabled(surfacePath != nullptr);
+  logic.SetWarningCallback([](const std::string & message) { std::cerr << "warning: " << message << std::endl; });
+  logic.SetProgressCallback([&progress](double fraction, const std::string & stageName) {
+    if (progress.AbortRequested())
+    {
+      throw vr::InputError("cancelled by the caller");
+    }
+    progress.Update(fraction, stageName);
+  });
+  const vr::ReformationOutputs & outputs = logic.Update();
+
+  vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.CPR), *cprPath);
+  if (depthPath)
+  {
+    vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.Depth), *depthPath);
+  }
+  if (relaxedPath)
+  {
+    vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth), *relaxedPath);
+  }
+  if (maskPath)
+  {
+    vr::WriteImage2D(vr::ConvertVolumeNodeToMaskImage(outputs.FixedMask), *maskPath);
+  }
+  if (labelsPath)
+  {
+    vr::WriteImage2D(vr::ConvertVolumeNodeToLabelImage(outputs.OwnerLabels), *labelsPath);
+  }
+  if (unfilteredPath)
+  {
+    vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR), *unfilteredPath);
+  }
+  if (surfacePath)
+  {
+    vr::WriteSurface(outputs.Surface, *surfacePath, vr::CoordinateSpace::RAS);
+  }
+  if (pngPath)
+  {
+    double window = 0.0;
+    double level = 0.0;
+    logic.GetDisplayWindowLevel(window, level);
+    vr::WriteWindowedPNG(vr::ConvertVolumeNodeToDepthImage(outputs.CPR), window, level, *pngPath);
+  }
+  staged.CommitAll();
+
+  const auto &       size = outputs.View.GetSize();
+  const auto &       times = outputs.Times;
+  std::ostringstream summary;
+  summary << std::fixed << std::setprecision(1) << "VesselReformation: " << tree.GetNumberOfBranches()
+          << " branches (" << report.Format << ", " << vr::ToString(report.FileSpace) << "), view " << size[0] << " x "
+          << size[1] << " pixels of " << outputs.View.GetSpacing()[0] << " mm; times (ms): conversion "
+          << 1e3 * times.Conversion << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " ("
+          << outputs.RelaxBackendUsed << ", " << parameters.Iterations << " iterations), resample "
+          << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface;
+  std::cout << summary.str() << std::endl;
+}
+} // namespace
+
+extern "C" VR_MODULE_EXPORT int
+ModuleEntryPoint(int argc, char * argv[])
+{
+  return vr::RunCLIModule(argc, argv, XMLModuleDescription, "VesselReformation",
+                          "Multipath curved planar reformation with bilateral depth filtering", RunVesselReformation);
+}
