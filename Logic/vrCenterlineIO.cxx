@@ -53,6 +53,14 @@ FormatOf(const std::string & path, const std::string & role)
                    ": unknown centerline format; use .vtp or .vtk (VMTK, 3D Slicer), .mrk.json (3D Slicer markups "
                    "curves), .tre (TubeTK) or .csv");
 }
+/** An ITK exception's description without ITK's "ITK ERROR: " prefix. */
+std::string
+Describe(const itk::ExceptionObject & exception)
+{
+  std::string text = exception.GetDescription();
+  const std::string prefix = "ITK ERROR: ";
+  return text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text;
+}
 } // namespace
 
 namespace detail
@@ -114,7 +122,7 @@ ReadCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadR
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("centerline file " + path + ": " + exception.GetDescription());
+    throw InputError("centerline file " + path + ": " + Describe(exception));
   }
   if (report != nullptr)
   {
@@ -133,8 +141,7 @@ WriteCenterlines(const itk::CenterlineTree & tree, const std::string & path, Coo
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("centerline output " + path + ": nothing written, the tree is invalid: " +
-                     exception.GetDescription());
+    throw InputError("centerline output " + path + ": nothing written, the tree is invalid: " + Describe(exception));
   }
   AtomicOutput output(path);
   switch (format)

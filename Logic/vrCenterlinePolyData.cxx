@@ -183,8 +183,11 @@ ExtractPolylines(vtkPolyData * polyData, bool rasPoints, vtkDataArray * radii, c
 struct Piece
 {
   std::vector<std::size_t> Vertices;
+  /** Where each vertex's radius comes from: an attachment takes the shared position but keeps the radius its own
+   * polyline gives there (a child's lumen at its start, not the parent's). */
+  std::vector<std::size_t> RadiusVertices;
   vtkIdType                CellId{ 0 };
-  bool                     Whole{ true }; // exactly one input polyline, neither cut nor joined
+  bool                     Whole{ true }; // exactly one input polyline, not cut
 };
 
 /** The VMTK overlapping-paths rule (see the header). */
@@ -268,19 +271,23 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
       }
       Piece piece;
       piece.CellId = polylines[line].CellId;
-      piece.Whole = (g == begin && runEnd == end);
+      // Whole: the piece is its polyline, at most an end point replaced by the identical earlier one.
+      piece.Whole = (g <= begin + 1 && runEnd + 1 >= end);
       if (g > begin)
       {
         piece.Vertices.push_back(canonical[g - 1]);
+        piece.RadiusVertices.push_back(g - 1);
         splitHere[canonical[g - 1]] = true;
       }
       for (std::size_t k = g; k < runEnd; ++k)
       {
         piece.Vertices.push_back(k);
+        piece.RadiusVertices.push_back(k);
       }
       if (runEnd < end)
       {
         piece.Vertices.push_back(canonical[runEnd]);
+        piece.RadiusVertices.push_back(runEnd);
         splitHere[canonical[runEnd]] = true;
       }
       pieces.push_back(std::move(piece));
@@ -301,6 +308,7 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
         part.CellId = piece.CellId;
         part.Whole = false;
         part.Vertices.assign(piece.Vertices.begin() + start, piece.Vertices.begin() + k + 1);
+        part.RadiusVertices.assign(piece.RadiusVertices.begin() + start, piece.RadiusVertices.begin() + k + 1);
         cut.push_back(std::move(part));
         start = k;
       }
@@ -308,40 +316,10 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
     if (start > 0)
     {
       piece.Vertices.erase(piece.Vertices.begin(), piece.Vertices.begin() + start);
+      piece.RadiusVertices.erase(piece.RadiusVertices.begin(), piece.RadiusVertices.begin() + start);
       piece.Whole = false;
     }
     cut.push_back(std::move(piece));
-  }
-
-  // Join a piece that ends where exactly one other starts, with nothing else there.
-  std::vector<bool> removed(cut.size(), false);
-  for (bool joined = true; joined;)
-  {
-    joined = false;
-    std::map<std::size_t, std::vector<std::pair<std::size_t, bool>>> ends; // vertex -> (piece, is its start)
-    for (std::size_t p = 0; p < cut.size(); ++p)
-    {
-      if (!removed[p] && cut[p].Vertices.size() > 1)
-      {
-        ends[cut[p].Vertices.front()].emplace_back(p, true);
-        ends[cut[p].Vertices.back()].emplace_back(p, false);
-      }
-    }
-    for (const auto & entry : ends)
-    {
-      const auto & touching = entry.second;
-      if (touching.size() != 2 || touching[0].first == touching[1].first || touching[0].second == touching[1].second)
-      {
-        continue;
-      }
-      const std::size_t head = touching[0].second ? touching[1].first : touching[0].first;
-      const std::size_t tail = touching[0].second ? touching[0].first : touching[1].first;
-      cut[head].Vertices.insert(cut[head].Vertices.end(), cut[tail].Vertices.begin() + 1, cut[tail].Vertices.end());
-      cut[head].Whole = false;
-      removed[tail] = true;
-      joined = true;
-      break;
-    }
   }
 
   // Branch ids from the writer's cell array when every polyline came back as exactly one branch.
@@ -351,10 +329,6 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
   std::set<int> seen;
   for (std::size_t p = 0; p < cut.size(); ++p)
   {
-    if (removed[p])
-    {
-      continue;
-    }
     if (useStoredIds && cut[p].Whole && cut[p].CellId < branchIds->GetNumberOfTuples())
     {
       const double stored = branchIds->GetTuple1(cut[p].CellId);
@@ -373,19 +347,15 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
   std::size_t         kept = 0;
   for (std::size_t p = 0; p < cut.size(); ++p)
   {
-    if (removed[p])
-    {
-      continue;
-    }
     itk::CenterlineBranch branch;
     branch.Id = useStoredIds ? ids[kept] : nextId++;
     ++kept;
-    for (const std::size_t g : cut[p].Vertices)
+    for (std::size_t k = 0; k < cut[p].Vertices.size(); ++k)
     {
-      branch.Points.push_back(positions[g]);
+      branch.Points.push_back(positions[cut[p].Vertices[k]]);
       if (hasRadii)
       {
-        branch.Radii.push_back(radii[g]);
+        branch.Radii.push_back(radii[cut[p].RadiusVertices[k]]);
       }
     }
     tree.AddBranch(std::move(branch));

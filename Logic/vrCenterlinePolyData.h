@@ -40,9 +40,9 @@ struct CenterlinePolyDataOptions
  * Without branch arrays, VMTK writes one polyline per source-to-target path, overlapping along shared trunks.
  * Each point of a polyline that lies within the tolerance of a point of an earlier polyline is dropped as a
  * repeat; each remaining run of new points becomes a branch, starting (ending) at the shared point where it
- * leaves (rejoins) the earlier paths, and an earlier branch is split where a later one leaves it. Two branches
- * that meet end to start with nothing else at that point are joined again. So two paths sharing a trunk give
- * three branches: the trunk, and each path's own part from the bifurcation.
+ * leaves (rejoins) the earlier paths, and an earlier branch is split where a later one leaves it. So two paths
+ * sharing a trunk give three branches: the trunk, and each path's own part from the bifurcation. Polylines that
+ * only touch at their ends stay separate branches.
  *
  * With the vmtkbranchextractor cell arrays GroupIds, Blanking, CenterlineIds and TractIds, each non-blanked
  * group becomes one branch: its tracts (one per path through it) are resampled to a common count by arc length

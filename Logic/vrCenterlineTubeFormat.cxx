@@ -11,23 +11,31 @@ namespace vr::detail
 {
 namespace
 {
-/** MetaIO reports trouble on std::cerr besides throwing: keep it for the message instead of printing it. */
-class CerrCapture
+/** MetaIO reports trouble on std::cout and std::cerr besides throwing: keep it for the message instead of
+ * printing it. */
+class MetaIOMessageCapture
 {
 public:
-  CerrCapture()
-    : m_Previous(std::cerr.rdbuf(m_Text.rdbuf()))
+  MetaIOMessageCapture()
+    : m_PreviousError(std::cerr.rdbuf(m_Text.rdbuf()))
+    , m_PreviousOutput(std::cout.rdbuf(m_Text.rdbuf()))
   {}
-  ~CerrCapture() { std::cerr.rdbuf(m_Previous); }
-  CerrCapture(const CerrCapture &) = delete;
-  CerrCapture &
-  operator=(const CerrCapture &) = delete;
+  ~MetaIOMessageCapture()
+  {
+    std::cerr.rdbuf(m_PreviousError);
+    std::cout.rdbuf(m_PreviousOutput);
+  }
+  MetaIOMessageCapture(const MetaIOMessageCapture &) = delete;
+  MetaIOMessageCapture &
+  operator=(const MetaIOMessageCapture &) = delete;
 
+  /** The first line MetaIO printed (it repeats itself line by line). */
   std::string
   Text() const
   {
     std::string text = m_Text.str();
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    text = text.substr(0, text.find('\n'));
+    while (!text.empty() && (text.back() == '\r' || text.back() == ' '))
     {
       text.pop_back();
     }
@@ -36,7 +44,8 @@ public:
 
 private:
   std::ostringstream m_Text;
-  std::streambuf *   m_Previous;
+  std::streambuf *   m_PreviousError;
+  std::streambuf *   m_PreviousOutput;
 };
 } // namespace
 
@@ -47,8 +56,9 @@ ReadTubeTree(const std::string & path, CoordinateSpace space, CenterlineReadRepo
   report.Format = "TubeTK .tre";
   auto                reader = ReaderType::New();
   itk::CenterlineTree tree;
+  std::string         metaText;
   {
-    CerrCapture metaMessages;
+    MetaIOMessageCapture metaMessages;
     try
     {
       reader->SetFileName(path);
@@ -61,10 +71,12 @@ ReadTubeTree(const std::string & path, CoordinateSpace space, CenterlineReadRepo
       throw InputError("centerline file " + path + ": not a readable TubeTK/MetaIO .tre file: " +
                        exception.GetDescription() + (detail.empty() ? std::string() : " (" + detail + ")"));
     }
+    metaText = metaMessages.Text();
   }
   if (tree.GetNumberOfBranches() == 0)
   {
-    throw InputError("centerline file " + path + ": holds no tube with points (ObjectType = Tube)");
+    throw InputError("centerline file " + path + ": holds no tube with points (ObjectType = Tube)" +
+                     (metaText.empty() ? std::string() : "; MetaIO says: " + metaText));
   }
   const CoordinateSpace used = space == CoordinateSpace::Auto ? CoordinateSpace::LPS : space;
   report.FileSpace = used;
@@ -81,7 +93,7 @@ WriteTubeTree(const itk::CenterlineTree & tree, const std::string & finalPath, c
   using WriterType = itk::SpatialObjectWriter<3>;
   const itk::CenterlineTree written = space == CoordinateSpace::RAS ? FlipRASLPS(tree) : tree;
   auto                      writer = WriterType::New();
-  CerrCapture               metaMessages;
+  MetaIOMessageCapture      metaMessages;
   try
   {
     writer->SetInput(written.ToSpatialObject());
