@@ -24,7 +24,7 @@ Trim(const std::string & text)
   {
     return std::string();
   }
-  const auto last = text.find_last_not_of(" \t\r\n");
+  const auto  last = text.find_last_not_of(" \t\r\n");
   std::string trimmed = text.substr(first, last - first + 1);
   if (trimmed.size() >= 2 && trimmed.front() == '"' && trimmed.back() == '"')
   {
@@ -53,11 +53,11 @@ SplitFields(const std::string & line)
 /** The columns a header names: their positions, or -1 when absent. */
 struct Columns
 {
-  int             Branch{ -1 };
-  int             Coordinate[3]{ -1, -1, -1 };
-  int             Radius{ -1 };
-  CoordinateSpace Space{ CoordinateSpace::Auto };
-  std::size_t     Count{ 0 };
+  int                      Branch{ -1 };
+  int                      Coordinate[3]{ -1, -1, -1 };
+  int                      Radius{ -1 };
+  CoordinateSpace          Space{ CoordinateSpace::Auto };
+  std::size_t              Count{ 0 };
   std::vector<std::string> Names; // lower case, one per column
 };
 
@@ -154,11 +154,11 @@ ReadCenterlineCSV(const std::string & path, CoordinateSpace space, CenterlineRea
     throw InputError("centerline file " + path + ": cannot be opened");
   }
   report.Format = "CSV";
-  const std::string file = "centerline file " + path;
-  std::string       line;
-  std::size_t       lineNumber = 0;
-  Columns           columns;
-  bool              haveHeader = false;
+  const std::string          file = "centerline file " + path;
+  std::string                line;
+  std::size_t                lineNumber = 0;
+  Columns                    columns;
+  bool                       haveHeader = false;
   std::map<int, std::size_t> branchIndex;
   itk::CenterlineTree        tree;
   std::size_t                rows = 0;
@@ -187,9 +187,8 @@ ReadCenterlineCSV(const std::string & path, CoordinateSpace space, CenterlineRea
       throw InputError(where + ": " + std::to_string(fields.size()) + " values, but the header names " +
                        std::to_string(columns.Count) + " columns");
     }
-    auto cell = [&](int column) {
-      return where + ", column " + std::to_string(column + 1) + " (" + columns.Names[column] + ")";
-    };
+    auto cell = [&](int column)
+    { return where + ", column " + std::to_string(column + 1) + " (" + columns.Names[column] + ")"; };
     const double branchValue = ParseNumber(fields[columns.Branch], cell(columns.Branch));
     if (branchValue < 1.0 || branchValue != std::floor(branchValue) || branchValue > std::numeric_limits<int>::max())
     {
@@ -233,18 +232,20 @@ ReadCenterlineCSV(const std::string & path, CoordinateSpace space, CenterlineRea
   }
   const CoordinateSpace used = space == CoordinateSpace::Auto ? columns.Space : space;
   report.FileSpace = used;
-  report.SpaceSource = space == CoordinateSpace::Auto
-                         ? std::string("the header's ") + (columns.Space == CoordinateSpace::RAS ? "r,a,s" : "x,y,z") +
-                             " columns"
-                         : std::string("override");
+  report.SpaceSource =
+    space == CoordinateSpace::Auto
+      ? std::string("the header's ") + (columns.Space == CoordinateSpace::RAS ? "r,a,s" : "x,y,z") + " columns"
+      : std::string("override");
   report.RadiusArray = columns.Radius != -1 ? "radius" : "";
   report.InputPolylines = tree.GetNumberOfBranches();
   return used == CoordinateSpace::RAS ? FlipRASLPS(tree) : tree;
 }
 
 void
-WriteCenterlineCSV(const itk::CenterlineTree & tree, const std::string & finalPath,
-                   const std::string & temporaryPath, CoordinateSpace space)
+WriteCenterlineCSV(const itk::CenterlineTree & tree,
+                   const std::string &         finalPath,
+                   const std::string &         temporaryPath,
+                   CoordinateSpace             space)
 {
   const bool    ras = space == CoordinateSpace::RAS;
   std::ofstream output(temporaryPath);

@@ -15,26 +15,34 @@ namespace vr::detail
 itk::CenterlineTree
 ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadReport & report);
 void
-WriteVTKCenterlines(const itk::CenterlineTree & tree, const std::string & finalPath,
-                    const std::string & temporaryPath, CoordinateSpace space);
+WriteVTKCenterlines(const itk::CenterlineTree & tree,
+                    const std::string &         finalPath,
+                    const std::string &         temporaryPath,
+                    CoordinateSpace             space);
 
 itk::CenterlineTree
 ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineReadReport & report);
 void
-WriteMarkupsCurves(const itk::CenterlineTree & tree, const std::string & finalPath,
-                   const std::string & temporaryPath, CoordinateSpace space);
+WriteMarkupsCurves(const itk::CenterlineTree & tree,
+                   const std::string &         finalPath,
+                   const std::string &         temporaryPath,
+                   CoordinateSpace             space);
 
 itk::CenterlineTree
 ReadTubeTree(const std::string & path, CoordinateSpace space, CenterlineReadReport & report);
 void
-WriteTubeTree(const itk::CenterlineTree & tree, const std::string & finalPath, const std::string & temporaryPath,
-              CoordinateSpace space);
+WriteTubeTree(const itk::CenterlineTree & tree,
+              const std::string &         finalPath,
+              const std::string &         temporaryPath,
+              CoordinateSpace             space);
 
 itk::CenterlineTree
 ReadCenterlineCSV(const std::string & path, CoordinateSpace space, CenterlineReadReport & report);
 void
-WriteCenterlineCSV(const itk::CenterlineTree & tree, const std::string & finalPath,
-                   const std::string & temporaryPath, CoordinateSpace space);
+WriteCenterlineCSV(const itk::CenterlineTree & tree,
+                   const std::string &         finalPath,
+                   const std::string &         temporaryPath,
+                   CoordinateSpace             space);
 
 /** \a tree with every point mapped RAS <-> LPS (the map is its own inverse). */
 itk::CenterlineTree

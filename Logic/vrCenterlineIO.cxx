@@ -2,6 +2,7 @@
 
 #include "vrAtomicOutput.h"
 #include "vrCenterlineFormats.h"
+#include "vrITKMessages.h"
 #include "vrInputError.h"
 
 #include "itkMacro.h"
@@ -52,14 +53,6 @@ FormatOf(const std::string & path, const std::string & role)
   throw InputError(role + " " + path +
                    ": unknown centerline format; use .vtp or .vtk (VMTK, 3D Slicer), .mrk.json (3D Slicer markups "
                    "curves), .tre (TubeTK) or .csv");
-}
-/** An ITK exception's description without ITK's "ITK ERROR: " prefix. */
-std::string
-Describe(const itk::ExceptionObject & exception)
-{
-  std::string text = exception.GetDescription();
-  const std::string prefix = "ITK ERROR: ";
-  return text.rfind(prefix, 0) == 0 ? text.substr(prefix.size()) : text;
 }
 } // namespace
 
@@ -122,7 +115,7 @@ ReadCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadR
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("centerline file " + path + ": " + Describe(exception));
+    throw InputError("centerline file " + path + ": " + detail::CondenseITKMessage(exception));
   }
   if (report != nullptr)
   {
@@ -141,7 +134,8 @@ WriteCenterlines(const itk::CenterlineTree & tree, const std::string & path, Coo
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("centerline output " + path + ": nothing written, the tree is invalid: " + Describe(exception));
+    throw InputError("centerline output " + path +
+                     ": nothing written, the tree is invalid: " + detail::CondenseITKMessage(exception));
   }
   AtomicOutput output(path);
   switch (format)

@@ -68,7 +68,8 @@ InterpolateSlicerCurve(const std::vector<PointType> & controls,
   spline->SetParameterizeByLength(false);
 
   const double intervals = static_cast<double>(controls.size() - 1);
-  auto         evaluate = [&](double parameter) {
+  auto         evaluate = [&](double parameter)
+  {
     double u[3] = { parameter / intervals, 0.0, 0.0 };
     double xyz[3];
     double derivatives[9];
@@ -79,7 +80,8 @@ InterpolateSlicerCurve(const std::vector<PointType> & controls,
     point[2] = xyz[2];
     return point;
   };
-  auto addSample = [&](double parameter, const PointType & point) {
+  auto addSample = [&](double parameter, const PointType & point)
+  {
     branch.Points.push_back(point);
     if (!controlRadii.empty())
     {
@@ -126,7 +128,7 @@ MarkupSpace(const Json & markup, const std::string & where)
   {
     return CoordinateSpace::LPS; // the markups schema's default
   }
-  const Json & value = markup["coordinateSystem"];
+  const Json &      value = markup["coordinateSystem"];
   const std::string text = value.is_string() ? Lower(value.get<std::string>()) : std::string();
   if (text == "lps")
   {
@@ -146,8 +148,8 @@ MarkupUnitsInMillimetres(const Json & markup, const std::string & where)
   {
     return 1.0;
   }
-  const Json & value = markup["coordinateUnits"];
-  const Json & unit = value.is_array() && !value.empty() ? value[0] : value;
+  const Json &      value = markup["coordinateUnits"];
+  const Json &      unit = value.is_array() && !value.empty() ? value[0] : value;
   const std::string text = unit.is_string() ? unit.get<std::string>() : std::string();
   if (text == "mm")
   {
@@ -238,8 +240,8 @@ ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineRea
     {
       throw InputError(where + " is " + Shown(markup) + ", not an object");
     }
-    const std::string type = markup.contains("type") && markup["type"].is_string() ? markup["type"].get<std::string>()
-                                                                                    : std::string();
+    const std::string type =
+      markup.contains("type") && markup["type"].is_string() ? markup["type"].get<std::string>() : std::string();
     if (type != "Curve")
     {
       otherTypes.push_back(type.empty() ? "(no type)" : type);
@@ -281,10 +283,11 @@ ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineRea
         continue;
       }
       const Json * position = controlPoint.contains("position") ? &controlPoint["position"] : nullptr;
-      const bool   threeNumbers = position != nullptr && position->is_array() && position->size() == 3 &&
-                                std::all_of(position->begin(), position->end(), [](const Json & value) {
-                                  return value.is_number() && std::isfinite(value.get<double>());
-                                });
+      const bool   threeNumbers =
+        position != nullptr && position->is_array() && position->size() == 3 &&
+        std::all_of(position->begin(),
+                    position->end(),
+                    [](const Json & value) { return value.is_number() && std::isfinite(value.get<double>()); });
       if (!threeNumbers)
       {
         throw InputError(field + ".position is not three finite numbers: " +
@@ -341,8 +344,10 @@ ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineRea
 }
 
 void
-WriteMarkupsCurves(const itk::CenterlineTree & tree, const std::string & finalPath,
-                   const std::string & temporaryPath, CoordinateSpace space)
+WriteMarkupsCurves(const itk::CenterlineTree & tree,
+                   const std::string &         finalPath,
+                   const std::string &         temporaryPath,
+                   CoordinateSpace             space)
 {
   const bool lps = space == CoordinateSpace::LPS;
   Json       markups = Json::array();

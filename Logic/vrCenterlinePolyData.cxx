@@ -324,8 +324,8 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
 
   // Branch ids from the writer's cell array when every polyline came back as exactly one branch.
   std::vector<int> ids;
-  auto * branchIds = vtkDataArray::SafeDownCast(polyData->GetCellData()->GetAbstractArray(BranchIdsArrayName));
-  bool   useStoredIds = branchIds != nullptr && branchIds->GetNumberOfComponents() == 1;
+  auto *        branchIds = vtkDataArray::SafeDownCast(polyData->GetCellData()->GetAbstractArray(BranchIdsArrayName));
+  bool          useStoredIds = branchIds != nullptr && branchIds->GetNumberOfComponents() == 1;
   std::set<int> seen;
   for (std::size_t p = 0; p < cut.size(); ++p)
   {
@@ -527,9 +527,9 @@ MergeBranchGroups(const std::vector<Polyline> & polylines,
   }
 
   // Give each blanked tract to the tract after it; note each tract's upstream group.
-  std::vector<Polyline>            extended(polylines.size());
+  std::vector<Polyline>                    extended(polylines.size());
   std::map<long, std::vector<std::size_t>> groupTracts;
-  std::map<long, long>             upstreamGroup;
+  std::map<long, long>                     upstreamGroup;
   for (const auto & path : paths)
   {
     std::vector<Tract> order;
@@ -646,17 +646,16 @@ CenterlineTreeFromPolyData(vtkPolyData *                     polyData,
   }
   found.FileSpace = space;
 
-  vtkDataArray * radii = FindRadiusArray(polyData, sourceName, found.RadiusArray);
-  const std::vector<Polyline> polylines =
-    ExtractPolylines(polyData, space == CoordinateSpace::RAS, radii, sourceName);
+  vtkDataArray *              radii = FindRadiusArray(polyData, sourceName, found.RadiusArray);
+  const std::vector<Polyline> polylines = ExtractPolylines(polyData, space == CoordinateSpace::RAS, radii, sourceName);
   found.InputPolylines = polylines.size();
 
-  const bool hasBranchGroups = CellArray(polyData, "GroupIds") != nullptr && CellArray(polyData, "Blanking") != nullptr &&
-                               CellArray(polyData, "CenterlineIds") != nullptr &&
-                               CellArray(polyData, "TractIds") != nullptr;
-  itk::CenterlineTree tree =
-    hasBranchGroups ? MergeBranchGroups(polylines, polyData, options.SharedPointTolerance, found)
-                    : MergeOverlappingPolylines(polylines, polyData, options.SharedPointTolerance, found);
+  const bool hasBranchGroups =
+    CellArray(polyData, "GroupIds") != nullptr && CellArray(polyData, "Blanking") != nullptr &&
+    CellArray(polyData, "CenterlineIds") != nullptr && CellArray(polyData, "TractIds") != nullptr;
+  itk::CenterlineTree tree = hasBranchGroups
+                               ? MergeBranchGroups(polylines, polyData, options.SharedPointTolerance, found)
+                               : MergeOverlappingPolylines(polylines, polyData, options.SharedPointTolerance, found);
   if (tree.IsEmpty())
   {
     throw InputError(sourceName + ": no branch left after merging (every polyline is a blanked bifurcation tract)");

@@ -1,4 +1,5 @@
 #include "vrCenterlineFormats.h"
+#include "vrITKMessages.h"
 #include "vrInputError.h"
 
 #include "itkSpatialObjectReader.h"
@@ -19,7 +20,8 @@ public:
   MetaIOMessageCapture()
     : m_PreviousError(std::cerr.rdbuf(m_Text.rdbuf()))
     , m_PreviousOutput(std::cout.rdbuf(m_Text.rdbuf()))
-  {}
+  {
+  }
   ~MetaIOMessageCapture()
   {
     std::cerr.rdbuf(m_PreviousError);
@@ -69,7 +71,7 @@ ReadTubeTree(const std::string & path, CoordinateSpace space, CenterlineReadRepo
     {
       const std::string detail = metaMessages.Text();
       throw InputError("centerline file " + path + ": not a readable TubeTK/MetaIO .tre file: " +
-                       exception.GetDescription() + (detail.empty() ? std::string() : " (" + detail + ")"));
+                       CondenseITKMessage(exception) + (detail.empty() ? std::string() : " (" + detail + ")"));
     }
     metaText = metaMessages.Text();
   }
@@ -87,8 +89,10 @@ ReadTubeTree(const std::string & path, CoordinateSpace space, CenterlineReadRepo
 }
 
 void
-WriteTubeTree(const itk::CenterlineTree & tree, const std::string & finalPath, const std::string & temporaryPath,
-              CoordinateSpace space)
+WriteTubeTree(const itk::CenterlineTree & tree,
+              const std::string &         finalPath,
+              const std::string &         temporaryPath,
+              CoordinateSpace             space)
 {
   using WriterType = itk::SpatialObjectWriter<3>;
   const itk::CenterlineTree written = space == CoordinateSpace::RAS ? FlipRASLPS(tree) : tree;
@@ -103,7 +107,8 @@ WriteTubeTree(const itk::CenterlineTree & tree, const std::string & finalPath, c
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("centerline output " + finalPath + ": could not be written: " + exception.GetDescription());
+    throw InputError("centerline output " + finalPath +
+                     ": could not be written: " + CondenseITKMessage(exception, temporaryPath, finalPath));
   }
 }
 } // namespace vr::detail

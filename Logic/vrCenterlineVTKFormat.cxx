@@ -114,10 +114,12 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
 }
 
 void
-WriteVTKCenterlines(const itk::CenterlineTree & tree, const std::string & finalPath,
-                    const std::string & temporaryPath, CoordinateSpace space)
+WriteVTKCenterlines(const itk::CenterlineTree & tree,
+                    const std::string &         finalPath,
+                    const std::string &         temporaryPath,
+                    CoordinateSpace             space)
 {
-  const CoordinateSpace used = space == CoordinateSpace::LPS ? CoordinateSpace::LPS : CoordinateSpace::RAS;
+  const CoordinateSpace        used = space == CoordinateSpace::LPS ? CoordinateSpace::LPS : CoordinateSpace::RAS;
   vtkSmartPointer<vtkPolyData> polyData = PolyDataFromCenterlineTree(tree, used);
   VTKErrorCapture              capture;
   int                          written = 0;

@@ -1,6 +1,7 @@
 #include "vrImageIO.h"
 
 #include "vrAtomicOutput.h"
+#include "vrITKMessages.h"
 #include "vrInputError.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
@@ -19,7 +20,7 @@ namespace vr
 {
 namespace
 {
-template <typename TImage>
+template<typename TImage>
 void
 WriteImageAtomically(const TImage * image, const std::string & path, itk::ImageIOBase * io = nullptr)
 {
@@ -42,7 +43,8 @@ WriteImageAtomically(const TImage * image, const std::string & path, itk::ImageI
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("output " + path + ": could not be written: " + exception.GetDescription());
+    throw InputError("output " + path +
+                     ": could not be written: " + detail::CondenseITKMessage(exception, output.TemporaryPath(), path));
   }
   output.Commit();
 }
@@ -75,7 +77,7 @@ Open2DImage(const std::string & path, const std::string & role)
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError(where + ": the header cannot be read: " + exception.GetDescription());
+    throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
   }
   const unsigned int dimensions = io->GetNumberOfDimensions();
   if (!(dimensions == 2 || (dimensions == 3 && io->GetDimensions(2) == 1)))
@@ -90,7 +92,7 @@ Open2DImage(const std::string & path, const std::string & role)
   return io;
 }
 
-template <typename TImage>
+template<typename TImage>
 typename TImage::Pointer
 Read2DImage(const std::string & path, const std::string & role)
 {
@@ -104,8 +106,8 @@ Read2DImage(const std::string & path, const std::string & role)
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError(role + " " + path + ": the pixel data cannot be read (truncated?): " +
-                     exception.GetDescription());
+    throw InputError(role + " " + path +
+                     ": the pixel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
   }
   typename TImage::Pointer image = reader->GetOutput();
   image->DisconnectPipeline();

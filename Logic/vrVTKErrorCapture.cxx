@@ -26,7 +26,7 @@ std::string
 CleanMessage(const char * text)
 {
   std::string message = text == nullptr ? std::string() : std::string(text);
-  const auto newline = message.find('\n');
+  const auto  newline = message.find('\n');
   if (message.rfind("ERROR: In ", 0) == 0 || message.rfind("Warning: In ", 0) == 0)
   {
     message = newline == std::string::npos ? std::string() : message.substr(newline + 1);
@@ -84,16 +84,20 @@ public:
   }
   void
   DisplayText(const char *) override
-  {}
+  {
+  }
   void
   DisplayWarningText(const char *) override
-  {}
+  {
+  }
   void
   DisplayGenericWarningText(const char *) override
-  {}
+  {
+  }
   void
   DisplayDebugText(const char *) override
-  {}
+  {
+  }
 
   vtkSmartPointer<ErrorRecorder> m_Recorder;
 };
@@ -103,10 +107,10 @@ vtkStandardNewMacro(RecordingOutputWindow);
 class VTKErrorCapture::Implementation
 {
 public:
-  std::unique_lock<std::mutex>            m_Lock{ CaptureMutex() };
-  vtkSmartPointer<ErrorRecorder>          m_Recorder{ vtkSmartPointer<ErrorRecorder>::New() };
-  vtkSmartPointer<vtkOutputWindow>        m_PreviousWindow;
-  vtkSmartPointer<RecordingOutputWindow>  m_Window{ vtkSmartPointer<RecordingOutputWindow>::New() };
+  std::unique_lock<std::mutex>           m_Lock{ CaptureMutex() };
+  vtkSmartPointer<ErrorRecorder>         m_Recorder{ vtkSmartPointer<ErrorRecorder>::New() };
+  vtkSmartPointer<vtkOutputWindow>       m_PreviousWindow;
+  vtkSmartPointer<RecordingOutputWindow> m_Window{ vtkSmartPointer<RecordingOutputWindow>::New() };
 };
 
 VTKErrorCapture::VTKErrorCapture()

@@ -1,6 +1,7 @@
 #include "vrVolumeIO.h"
 
 #include "vrAtomicOutput.h"
+#include "vrITKMessages.h"
 #include "vrInputError.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
@@ -22,11 +23,12 @@ namespace
 VolumeImageType::Pointer
 ReadDicomSeries(const std::string & folder)
 {
-  const std::string where = "volume folder " + folder;
-  auto              names = itk::GDCMSeriesFileNames::New();
+  const std::string        where = "volume folder " + folder;
+  auto                     names = itk::GDCMSeriesFileNames::New();
   std::vector<std::string> files;
   try
   {
+    const detail::ScopedSilentITKOutput quiet; // "No Series were found": said below, in our words
     names->SetUseSeriesDetails(true);
     names->SetDirectory(folder);
     // Several series in one folder: take the one with the most files (the volume, not a scout).
@@ -41,7 +43,7 @@ ReadDicomSeries(const std::string & folder)
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError(where + ": cannot scan for DICOM files: " + exception.GetDescription());
+    throw InputError(where + ": cannot scan for DICOM files: " + detail::CondenseITKMessage(exception));
   }
   if (files.empty())
   {
@@ -58,7 +60,7 @@ ReadDicomSeries(const std::string & folder)
   catch (const itk::ExceptionObject & exception)
   {
     throw InputError(where + ": the DICOM series (" + std::to_string(files.size()) +
-                     " files) cannot be read: " + exception.GetDescription());
+                     " files) cannot be read: " + detail::CondenseITKMessage(exception));
   }
   if (dicom->GetNumberOfComponents() != 1)
   {
@@ -78,7 +80,7 @@ ReadDicomSeries(const std::string & folder)
 VolumeImageType::Pointer
 ReadVolumeFile(const std::string & path)
 {
-  const std::string    where = "volume " + path;
+  const std::string         where = "volume " + path;
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
   if (io.IsNull())
@@ -93,7 +95,7 @@ ReadVolumeFile(const std::string & path)
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError(where + ": the header cannot be read: " + exception.GetDescription());
+    throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
   }
   if (io->GetNumberOfDimensions() != 3)
   {
@@ -115,7 +117,7 @@ ReadVolumeFile(const std::string & path)
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError(where + ": the voxel data cannot be read (truncated?): " + exception.GetDescription());
+    throw InputError(where + ": the voxel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
   }
   VolumeImageType::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
@@ -161,7 +163,8 @@ WriteVolume(const VolumeImageType * volume, const std::string & path)
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("volume output " + path + ": could not be written: " + exception.GetDescription());
+    throw InputError("volume output " + path +
+                     ": could not be written: " + detail::CondenseITKMessage(exception, output.TemporaryPath(), path));
   }
   output.Commit();
 }

@@ -60,7 +60,7 @@ InputErrorOf(const std::function<void()> & action)
   return std::string();
 }
 
-#define EXPECT_MESSAGE_HAS(message, part)                                                                           \
+#define EXPECT_MESSAGE_HAS(message, part)                                                                              \
   EXPECT_NE((message).find(part), std::string::npos) << "message: " << (message) << "\nmissing: " << (part)
 
 /** Distance from \a point to the polyline \a line. */
@@ -127,8 +127,10 @@ MakeYTree()
 }
 
 void
-ExpectSameTree(const itk::CenterlineTree & expected, const itk::CenterlineTree & actual, double tolerance,
-               bool sameIds = true)
+ExpectSameTree(const itk::CenterlineTree & expected,
+               const itk::CenterlineTree & actual,
+               double                      tolerance,
+               bool                        sameIds = true)
 {
   ASSERT_EQ(actual.GetNumberOfBranches(), expected.GetNumberOfBranches());
   for (std::size_t b = 0; b < expected.GetNumberOfBranches(); ++b)
@@ -323,7 +325,8 @@ TEST_F(AortaCenterlines, TruncatedVtpIsAnInputErrorNamingTheFileAndPrintsNothing
 // Round trips: every writer's output read back.
 
 class CenterlineRoundTrip : public ::testing::TestWithParam<std::string>
-{};
+{
+};
 
 TEST_P(CenterlineRoundTrip, ReadsBackWhatTheWriterWrote)
 {
@@ -338,7 +341,9 @@ TEST_P(CenterlineRoundTrip, ReadsBackWhatTheWriterWrote)
   EXPECT_EQ(folder.Entries(), std::vector<std::string>{ "tree" + GetParam() }) << "a temporary file was left";
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryExactFormat, CenterlineRoundTrip, ::testing::Values(".vtp", ".vtk", ".tre", ".csv"),
+INSTANTIATE_TEST_SUITE_P(EveryExactFormat,
+                         CenterlineRoundTrip,
+                         ::testing::Values(".vtp", ".vtk", ".tre", ".csv"),
                          [](const auto & info) { return info.param.substr(1); });
 
 TEST(CenterlineRoundTrip, CSVInEachHeaderForm)
@@ -406,7 +411,8 @@ TEST(CenterlineRoundTrip, MarkupsCurvesPassThroughEveryWrittenPoint)
 TEST(HandWrittenCenterlines, LegacyVTKHeaderSpaceDecidesTheFrame)
 {
   vr::test::ScopedTemporaryFolder folder;
-  auto legacy = [](const std::string & header) {
+  auto                            legacy = [](const std::string & header)
+  {
     return "# vtk DataFile Version 4.2\n" + header +
            "\nASCII\nDATASET POLYDATA\nPOINTS 4 double\n1 2 3\n4 5 6\n7 8 9\n-1 -2 -3\nLINES 2 7\n3 0 1 2\n2 2 3\n"
            "POINT_DATA 4\nSCALARS Radius double 1\nLOOKUP_TABLE default\n1.5 2.5 3.5 4.5\n";
@@ -437,7 +443,8 @@ TEST(HandWrittenCenterlines, LegacyVTKHeaderSpaceDecidesTheFrame)
 TEST(HandWrittenCenterlines, CSVInEachHeaderForm)
 {
   vr::test::ScopedTemporaryFolder folder;
-  vr::test::WriteTextFile(folder.File("lps.csv"), "branch,x,y,z,radius\n1,1,2,3,0.5\n1,4,5,6,0.75\n2,4,5,6,1\n2,7,8,9,2\n");
+  vr::test::WriteTextFile(folder.File("lps.csv"),
+                          "branch,x,y,z,radius\n1,1,2,3,0.5\n1,4,5,6,0.75\n2,4,5,6,1\n2,7,8,9,2\n");
   vr::test::WriteTextFile(folder.File("ras.csv"), "# a comment\nBranch, R, A, S\n3, 1, 2, 3\n\n3, 4, 5, 6\n");
 
   const itk::CenterlineTree lps = vr::ReadCenterlines(folder.File("lps.csv"));
@@ -676,8 +683,7 @@ TEST(CenterlinePolyData, BranchGroupsAverageTractsAndGiveBifurcationsToChildren)
     polyData->GetCellData()->AddArray(values);
   }
   vr::CenterlineReadReport  report;
-  const itk::CenterlineTree tree =
-    vr::CenterlineTreeFromPolyData(polyData, CoordinateSpace::LPS, "test", &report);
+  const itk::CenterlineTree tree = vr::CenterlineTreeFromPolyData(polyData, CoordinateSpace::LPS, "test", &report);
   EXPECT_TRUE(report.UsedBranchGroups);
   ASSERT_EQ(tree.GetNumberOfBranches(), 3U);
   // Group 0: the two tracts averaged (equal radii, equal weights) lie on x = 0.
@@ -792,8 +798,9 @@ TEST(BadCenterlineInput, VTKFilesWithoutLinesOrWithABadRadiusArray)
 {
   vr::test::ScopedTemporaryFolder folder;
   const std::string               vertices = folder.File("vertices.vtk");
-  vr::test::WriteTextFile(vertices, "# vtk DataFile Version 4.2\nvtk output\nASCII\nDATASET POLYDATA\n"
-                                    "POINTS 2 double\n1 2 3\n4 5 6\nVERTICES 2 4\n1 0\n1 1\n");
+  vr::test::WriteTextFile(vertices,
+                          "# vtk DataFile Version 4.2\nvtk output\nASCII\nDATASET POLYDATA\n"
+                          "POINTS 2 double\n1 2 3\n4 5 6\nVERTICES 2 4\n1 0\n1 1\n");
   std::string message = InputErrorOf([&] { vr::ReadCenterlines(vertices); });
   EXPECT_MESSAGE_HAS(message, vertices);
   EXPECT_MESSAGE_HAS(message, "holds no polyline");
