@@ -30,18 +30,20 @@ public:
   void
   PrintSelf(ostream & os, vtkIndent indent) override;
 
-  /** The polylines (RAS mm). The node keeps a reference. */
+  /** \param polyData the polylines (RAS mm); the node keeps a reference. */
   void
   SetPolyData(vtkPolyData * polyData);
+  /** \return the polylines, or null. */
   vtkPolyData *
   GetPolyData() const
   {
     return m_PolyData;
   }
 
-  /** A name for messages ("aorta-centerline.vtp"). */
+  /** \param name a name for messages ("aorta-centerline.vtp"). */
   void
   SetName(const std::string & name);
+  /** \return the name. */
   const std::string &
   GetName() const
   {

@@ -74,18 +74,20 @@ BuildCutSurface(const DepthImageType *       depth,
 
   // Connectivity in VTK 9's offsets + connectivity layout, filled directly: a million triangles through
   // InsertNextCell would be several times slower.
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto              offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+  auto              connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
   const std::size_t quads = width > 1 && height > 1 ? (width - 1) * (height - 1) : 0;
   offsets->Allocate(static_cast<vtkIdType>(2 * quads + 1));
   connectivity->Allocate(static_cast<vtkIdType>(6 * quads));
   offsets->InsertNextValue(0);
-  const auto bridged = [&](std::size_t a, std::size_t b, std::size_t c) {
+  const auto bridged = [&](std::size_t a, std::size_t b, std::size_t c)
+  {
     const float low = std::min({ d[a], d[b], d[c] });
     const float high = std::max({ d[a], d[b], d[c] });
     return static_cast<double>(high) - static_cast<double>(low) <= maximumBridgedJump;
   };
-  const auto addTriangle = [&](std::size_t a, std::size_t b, std::size_t c) {
+  const auto addTriangle = [&](std::size_t a, std::size_t b, std::size_t c)
+  {
     connectivity->InsertNextValue(static_cast<vtkIdType>(a));
     connectivity->InsertNextValue(static_cast<vtkIdType>(b));
     connectivity->InsertNextValue(static_cast<vtkIdType>(c));

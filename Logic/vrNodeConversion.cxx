@@ -38,7 +38,7 @@ AsPoint(double x, double y, double z)
   return point;
 }
 
-template <typename TSource>
+template<typename TSource>
 void
 CopyAsFloat(const TSource * source, std::size_t count, float * target)
 {
@@ -48,7 +48,7 @@ CopyAsFloat(const TSource * source, std::size_t count, float * target)
   }
 }
 
-template <typename TSource, typename TTarget>
+template<typename TSource, typename TTarget>
 void
 CopyCast(const TSource * source, std::size_t count, TTarget * target)
 {
@@ -103,7 +103,7 @@ CheckedImageData(VolumeNode * node, const std::string & what)
 }
 
 /** Makes a one-slice node on the view plane for a 2D output. */
-template <typename TImage>
+template<typename TImage>
 vtkSmartPointer<VolumeNode>
 Convert2DImageToNode(const TImage * image, int vtkScalarType, const std::string & name)
 {
@@ -132,14 +132,16 @@ Convert2DImageToNode(const TImage * image, int vtkScalarType, const std::string 
   data->SetExtent(0, static_cast<int>(size[0]) - 1, 0, static_cast<int>(size[1]) - 1, 0, 0);
   data->AllocateScalars(vtkScalarType, 1);
   const std::size_t count = size[0] * size[1];
-  std::copy(image->GetBufferPointer(), image->GetBufferPointer() + count,
+  std::copy(image->GetBufferPointer(),
+            image->GetBufferPointer() + count,
             static_cast<typename TImage::PixelType *>(data->GetScalarPointer()));
 
   // IJK -> LPS: B(i, j) = B(0, 0) + i sx u - j sy up; the third axis steps 1 mm along v.
   const auto   u = view.GetU() * view.GetSpacing()[0];
   const auto   down = view.GetUp() * -view.GetSpacing()[1];
   const auto & v = view.GetV();
-  const Point3 columns[3] = { LPSToRAS(AsPoint(u[0], u[1], u[2])), LPSToRAS(AsPoint(down[0], down[1], down[2])),
+  const Point3 columns[3] = { LPSToRAS(AsPoint(u[0], u[1], u[2])),
+                              LPSToRAS(AsPoint(down[0], down[1], down[2])),
                               LPSToRAS(AsPoint(v[0], v[1], v[2])) };
   const Point3 corner = LPSToRAS(view.PlanePoint(0.0, 0.0));
   auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
@@ -169,7 +171,7 @@ Convert2DImageToNode(const TImage * image, int vtkScalarType, const std::string 
 }
 
 /** Reads a one-slice node back onto its view grid. */
-template <typename TImage>
+template<typename TImage>
 typename TImage::Pointer
 ConvertNodeTo2DImage(VolumeNode * node)
 {
@@ -310,7 +312,8 @@ ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & n
   }
   data->SetExtent(extent);
   data->AllocateScalars(VTK_FLOAT, 1);
-  std::copy(image->GetBufferPointer(), image->GetBufferPointer() + region.GetNumberOfPixels(),
+  std::copy(image->GetBufferPointer(),
+            image->GetBufferPointer() + region.GetNumberOfPixels(),
             static_cast<float *>(data->GetScalarPointer()));
 
   const auto & direction = image->GetDirection();
@@ -318,8 +321,8 @@ ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & n
   auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
-    const Point3 column = LPSToRAS(AsPoint(direction[0][axis] * spacing[axis], direction[1][axis] * spacing[axis],
-                                           direction[2][axis] * spacing[axis]));
+    const Point3 column = LPSToRAS(AsPoint(
+      direction[0][axis] * spacing[axis], direction[1][axis] * spacing[axis], direction[2][axis] * spacing[axis]));
     for (unsigned int row = 0; row < 3; ++row)
     {
       matrix->SetElement(row, axis, column[row]);

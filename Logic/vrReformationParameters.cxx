@@ -84,7 +84,7 @@ Quoted(const std::string & text)
   return "\"" + text + "\"";
 }
 
-template <typename TValue>
+template<typename TValue>
 std::string
 Join(const TValue & values, unsigned int count)
 {
@@ -101,8 +101,7 @@ void
 ReformationParameters::Validate() const
 {
   std::ostringstream problem;
-  if (!AutomaticUp &&
-      !(std::isfinite(Up[0]) && std::isfinite(Up[1]) && std::isfinite(Up[2]) && Up.GetNorm() > 1e-12))
+  if (!AutomaticUp && !(std::isfinite(Up[0]) && std::isfinite(Up[1]) && std::isfinite(Up[2]) && Up.GetNorm() > 1e-12))
   {
     problem << "up axis (--up) = " << Join(Up, 3) << ": must be a finite, non-zero LPS vector, S or auto";
   }
@@ -183,8 +182,8 @@ ParseUpAxis(const std::string & text, const std::string & what)
   {
     const char * Name;
     double       X, Y, Z;
-  } named[] = { { "s", 0, 0, 1 }, { "i", 0, 0, -1 }, { "p", 0, 1, 0 },
-                { "a", 0, -1, 0 }, { "l", 1, 0, 0 }, { "r", -1, 0, 0 } };
+  } named[] = { { "s", 0, 0, 1 },  { "i", 0, 0, -1 }, { "p", 0, 1, 0 },
+                { "a", 0, -1, 0 }, { "l", 1, 0, 0 },  { "r", -1, 0, 0 } };
   for (const auto & direction : named)
   {
     if (key == direction.Name)

@@ -68,11 +68,11 @@ struct ReformationParameters
   double Window{ 0.0 };
   double Level{ 0.0 };
 
-  /** Throws vr::InputError naming the first invalid parameter, its flag and value. */
+  /** Checks every parameter; throws vr::InputError naming the first invalid one, its flag and its value. */
   void
   Validate() const;
 
-  /** \return the view part as the depth filter takes it (no margin change). */
+  /** \return the view part as itk::CPRDepthImageFilter takes it (default margin). */
   itk::CPRViewSpecification
   ToViewSpecification() const;
 };
@@ -80,12 +80,14 @@ struct ReformationParameters
 /** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto". */
 struct UpAxisChoice
 {
-  bool                  Automatic{ false };
+  bool                   Automatic{ false };
   itk::Vector<double, 3> Vector{ itk::MakeVector3(0.0, 0.0, 1.0) };
 };
 
-/** Parsers for the text forms of the parameters (command line, presets). Each throws vr::InputError naming
- * \a what (e.g. "--up") and the text. */
+/** Parsers for the text forms of the parameters (command line, presets).
+ * \param text the value as written.
+ * \param what how the caller names it in messages, e.g. "--up".
+ * \return the value; each throws vr::InputError naming \a what and \a text when the text is not a valid value. */
 UpAxisChoice
 ParseUpAxis(const std::string & text, const std::string & what);
 /** "W,H" in pixels, both >= 1. */
@@ -107,7 +109,8 @@ ParseSlabMode(const std::string & text, const std::string & what);
 bool
 ParseOnOff(const std::string & text, const std::string & what);
 
-/** The text forms back: "scanline", "linear", "mip", "on", ... */
+/** \param mode a mode.
+ * \return its text form: "scanline", "linear", "mip", ... */
 const char *
 ToString(itk::CPRDepthMode mode);
 const char *

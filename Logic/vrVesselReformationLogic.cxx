@@ -95,9 +95,9 @@ RunRelaxFilter(RelaxFilterType *                                filter,
   unsigned long observer = 0;
   if (progress)
   {
-    observer = filter->AddObserver(itk::ProgressEvent(), [filter, &progress, from, to](const itk::EventObject &) {
-      progress(from + (to - from) * filter->GetProgress(), "relax");
-    });
+    observer = filter->AddObserver(itk::ProgressEvent(),
+                                   [filter, &progress, from, to](const itk::EventObject &)
+                                   { progress(from + (to - from) * filter->GetProgress(), "relax"); });
   }
   try
   {
@@ -316,9 +316,9 @@ VesselReformationLogic::Internals::RunDepth(double from, double to)
   if (Progress)
   {
     DepthFilterType * raw = filter;
-    filter->AddObserver(itk::ProgressEvent(), [raw, this, from, to](const itk::EventObject &) {
-      Progress(from + (to - from) * raw->GetProgress(), "depth");
-    });
+    filter->AddObserver(itk::ProgressEvent(),
+                        [raw, this, from, to](const itk::EventObject &)
+                        { Progress(from + (to - from) * raw->GetProgress(), "depth"); });
   }
   try
   {
@@ -373,7 +373,8 @@ VesselReformationLogic::Internals::RunResample(double from, double to)
   const auto start = Clock::now();
   const int  images = (UnfilteredValid ? 0 : 1) + (RelaxedCPRValid ? 0 : 1);
   int        done = 0;
-  const auto sample = [&](const DepthImageType * depth) {
+  const auto sample = [&](const DepthImageType * depth)
+  {
     auto filter = ResampleFilterType::New();
     filter->SetVolume(Volume);
     filter->SetDepth(depth);
@@ -387,9 +388,9 @@ VesselReformationLogic::Internals::RunResample(double from, double to)
     if (Progress)
     {
       ResampleFilterType * raw = filter;
-      filter->AddObserver(itk::ProgressEvent(), [raw, this, imageFrom, imageTo](const itk::EventObject &) {
-        Progress(imageFrom + (imageTo - imageFrom) * raw->GetProgress(), "resample");
-      });
+      filter->AddObserver(itk::ProgressEvent(),
+                          [raw, this, imageFrom, imageTo](const itk::EventObject &)
+                          { Progress(imageFrom + (imageTo - imageFrom) * raw->GetProgress(), "resample"); });
     }
     try
     {
@@ -434,7 +435,8 @@ VesselReformationLogic::Internals::RunSurface()
 
 VesselReformationLogic::VesselReformationLogic()
   : m_Internals(std::make_unique<Internals>())
-{}
+{
+}
 
 VesselReformationLogic::~VesselReformationLogic() = default;
 
@@ -535,7 +537,8 @@ VesselReformationLogic::Update()
   // Progress weights of the stages this update runs: relaxation dominates unless N is small.
   const double relaxWeight = 0.05 + 0.6 * std::min(1.0, static_cast<double>(d.Parameters.Iterations) / 100.0);
   const bool   runSurface = d.SurfaceEnabled && !d.SurfaceValid;
-  const double weights[4] = { d.DepthValid ? 0.0 : 0.1, d.RelaxValid ? 0.0 : relaxWeight,
+  const double weights[4] = { d.DepthValid ? 0.0 : 0.1,
+                              d.RelaxValid ? 0.0 : relaxWeight,
                               (d.UnfilteredValid ? 0.0 : 0.1) + (d.RelaxedCPRValid ? 0.0 : 0.1),
                               runSurface ? 0.1 : 0.0 };
   const double total = weights[0] + weights[1] + weights[2] + weights[3];

@@ -12,7 +12,8 @@ vtkStandardNewMacro(VolumeNode);
 
 VolumeNode::VolumeNode()
   : m_IJKToRAS(vtkSmartPointer<vtkMatrix4x4>::New())
-{}
+{
+}
 
 VolumeNode::~VolumeNode() = default;
 

@@ -32,16 +32,17 @@ public:
   void
   PrintSelf(ostream & os, vtkIndent indent) override;
 
-  /** The voxels (single component, origin 0, spacing 1). The node keeps a reference. */
+  /** \param imageData the voxels (single component, origin 0, spacing 1); the node keeps a reference. */
   void
   SetImageData(vtkImageData * imageData);
+  /** \return the voxels, or null. */
   vtkImageData *
   GetImageData() const
   {
     return m_ImageData;
   }
 
-  /** The IJK->RAS matrix (mm); copied. Identity until set. */
+  /** \param matrix the IJK->RAS matrix (mm), copied; null resets it to identity (the default). */
   void
   SetIJKToRASMatrix(vtkMatrix4x4 * matrix);
   /** \return the node's own matrix; modify it through SetIJKToRASMatrix so the node notices. */
@@ -51,21 +52,26 @@ public:
     return m_IJKToRAS;
   }
 
-  /** A name for messages ("aorta.mha"). */
+  /** \param name a name for messages ("aorta.mha"). */
   void
   SetName(const std::string & name);
+  /** \return the name. */
   const std::string &
   GetName() const
   {
     return m_Name;
   }
 
-  /** Sets a string attribute, as vtkMRMLNode::SetAttribute does. */
+  /** Sets a string attribute, as vtkMRMLNode::SetAttribute does.
+   * \param key the attribute's name.
+   * \param value its value. */
   void
   SetAttribute(const std::string & key, const std::string & value);
-  /** \return the attribute's value, or nullptr when the node has none of that name. */
+  /** \param key the attribute's name.
+   * \return the attribute's value, or nullptr when the node has none of that name. */
   const char *
   GetAttribute(const std::string & key) const;
+  /** \return every attribute, by name. */
   const std::map<std::string, std::string> &
   GetAttributes() const
   {

@@ -48,8 +48,11 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
 
   std::vector<std::string> warnings;
   const auto               relaxed = vr::VesselReformationLogic::RelaxDepthImage(
-    depth, mask, parameters,
-    [&progress](double fraction, const std::string & stage) {
+    depth,
+    mask,
+    parameters,
+    [&progress](double fraction, const std::string & stage)
+    {
       if (progress.AbortRequested())
       {
         throw vr::InputError("cancelled by the caller");
@@ -69,6 +72,10 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
 extern "C" VR_MODULE_EXPORT int
 ModuleEntryPoint(int argc, char * argv[])
 {
-  return vr::RunCLIModule(argc, argv, XMLModuleDescription, "BilateralDepthRelax",
-                          "Bilateral relaxation of a CPR depth map", RunBilateralDepthRelax);
+  return vr::RunCLIModule(argc,
+                          argv,
+                          XMLModuleDescription,
+                          "BilateralDepthRelax",
+                          "Bilateral relaxation of a CPR depth map",
+                          RunBilateralDepthRelax);
 }

@@ -67,9 +67,8 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
 
   // Every output path is checked before the work, and nothing lands until all are written.
   vr::StagedOutputs staged;
-  const auto        stage = [&](const char * name) -> const std::string * {
-    return arguments.Given(name) ? &staged.Add(arguments.String(name), arguments.Spelling(name)) : nullptr;
-  };
+  const auto        stage = [&](const char * name) -> const std::string *
+  { return arguments.Given(name) ? &staged.Add(arguments.String(name), arguments.Spelling(name)) : nullptr; };
   const std::string * cprPath = stage("outputCPR");
   const std::string * depthPath = stage("outputDepth");
   const std::string * relaxedPath = stage("outputRelaxedDepth");
@@ -79,8 +78,8 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   const std::string * surfacePath = stage("outputSurface");
   const std::string * pngPath = stage("outputPNG");
 
-  const std::string volumePath = arguments.String("inputVolume");
-  const std::string centerlinePath = arguments.String("inputCenterlines");
+  const std::string            volumePath = arguments.String("inputVolume");
+  const std::string            centerlinePath = arguments.String("inputCenterlines");
   vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
   vr::CenterlineReadReport     report;
   const itk::CenterlineTree    tree = vr::ReadCenterlines(centerlinePath, centerlineSpace, &report);
@@ -92,13 +91,15 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   logic.SetParameters(parameters);
   logic.SetSurfaceEnabled(surfacePath != nullptr);
   logic.SetWarningCallback([](const std::string & message) { std::cerr << "warning: " << message << std::endl; });
-  logic.SetProgressCallback([&progress](double fraction, const std::string & stageName) {
-    if (progress.AbortRequested())
+  logic.SetProgressCallback(
+    [&progress](double fraction, const std::string & stageName)
     {
-      throw vr::InputError("cancelled by the caller");
-    }
-    progress.Update(fraction, stageName);
-  });
+      if (progress.AbortRequested())
+      {
+        throw vr::InputError("cancelled by the caller");
+      }
+      progress.Update(fraction, stageName);
+    });
   const vr::ReformationOutputs & outputs = logic.Update();
 
   vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.CPR), *cprPath);
@@ -138,12 +139,12 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   const auto &       size = outputs.View.GetSize();
   const auto &       times = outputs.Times;
   std::ostringstream summary;
-  summary << std::fixed << std::setprecision(1) << "VesselReformation: " << tree.GetNumberOfBranches()
-          << " branches (" << report.Format << ", " << vr::ToString(report.FileSpace) << "), view " << size[0] << " x "
-          << size[1] << " pixels of " << outputs.View.GetSpacing()[0] << " mm; times (ms): conversion "
-          << 1e3 * times.Conversion << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " ("
-          << outputs.RelaxBackendUsed << ", " << parameters.Iterations << " iterations), resample "
-          << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface;
+  summary << std::fixed << std::setprecision(1) << "VesselReformation: " << tree.GetNumberOfBranches() << " branches ("
+          << report.Format << ", " << vr::ToString(report.FileSpace) << "), view " << size[0] << " x " << size[1]
+          << " pixels of " << outputs.View.GetSpacing()[0] << " mm; times (ms): conversion " << 1e3 * times.Conversion
+          << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << outputs.RelaxBackendUsed
+          << ", " << parameters.Iterations << " iterations), resample " << 1e3 * times.Resample << ", surface "
+          << 1e3 * times.Surface;
   std::cout << summary.str() << std::endl;
 }
 } // namespace
@@ -151,6 +152,10 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
 extern "C" VR_MODULE_EXPORT int
 ModuleEntryPoint(int argc, char * argv[])
 {
-  return vr::RunCLIModule(argc, argv, XMLModuleDescription, "VesselReformation",
-                          "Multipath curved planar reformation with bilateral depth filtering", RunVesselReformation);
+  return vr::RunCLIModule(argc,
+                          argv,
+                          XMLModuleDescription,
+                          "VesselReformation",
+                          "Multipath curved planar reformation with bilateral depth filtering",
+                          RunVesselReformation);
 }

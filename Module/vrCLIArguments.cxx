@@ -73,7 +73,8 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
 {
   const std::string   what = Spell(parameter) + " \"" + value + "\"";
   const std::string & tag = parameter.Tag;
-  const auto          checkRange = [&](double number) {
+  const auto          checkRange = [&](double number)
+  {
     if (parameter.HasConstraints && number < parameter.Minimum)
     {
       throw InputError(Spell(parameter) + " " + value + ": must be >= " + FormatNumber(parameter.Minimum) + " (" +
@@ -172,15 +173,16 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
       positionals.push_back(token);
       continue;
     }
-    std::string       flag = token.substr(2);
-    std::string       value;
-    const bool        inlineValue = flag.find('=') != std::string::npos;
+    std::string flag = token.substr(2);
+    std::string value;
+    const bool  inlineValue = flag.find('=') != std::string::npos;
     if (inlineValue)
     {
       value = flag.substr(flag.find('=') + 1);
       flag = flag.substr(0, flag.find('='));
     }
-    const auto takeValue = [&](const std::string & spelling) {
+    const auto takeValue = [&](const std::string & spelling)
+    {
       if (inlineValue)
       {
         return value;

@@ -38,29 +38,38 @@ public:
   /** The address 3D Slicer gave with --processinformationaddress, or null. */
   void * ProcessInformation{ nullptr };
 
-  /** \return whether the command line gave the parameter \a name. */
+  /** \param name a parameter's name in the XML.
+   * \return whether the command line gave it. Throws std::logic_error when the XML has no such parameter. */
   bool
   Given(const std::string & name) const;
-  /** \return the value given for \a name, else its XML default (empty when it has none). */
+  /** \param name a parameter's name in the XML.
+   * \return the value given for it, else its XML default (empty when it has none). */
   std::string
   String(const std::string & name) const;
-  /** \return String(name) as a number; the parser has checked it. */
+  /** \param name a float parameter's name.
+   * \return String(name) as a number; the parser has checked it. */
   double
   Double(const std::string & name) const;
+  /** \param name an integer parameter's name.
+   * \return String(name) as a whole number; the parser has checked it. */
   long long
   Integer(const std::string & name) const;
-  /** \return "--flag" for a flag, "<name>" for a positional parameter: how messages name it. */
+  /** \param name a parameter's name in the XML.
+   * \return "--flag" for a flag, "<name>" for a positional parameter: how messages name it. */
   std::string
   Spelling(const std::string & name) const;
 
-  /** \return the usage text: every flag with its type, default and description, then the reserved flags. */
+  /** \param description the module's description.
+   * \param program the module's name.
+   * \return the usage text: every flag with its type, default and description, then the reserved flags. */
   static std::string
   Usage(const CLIModuleDescription & description, const std::string & program);
 
 private:
   explicit CLIArguments(const CLIModuleDescription & description)
     : m_Description(&description)
-  {}
+  {
+  }
 
   const CLIModuleDescription *       m_Description;
   std::map<std::string, std::string> m_Values;

@@ -172,7 +172,8 @@ CLIModuleDescription::Positionals() const
       positionals.push_back(&parameter);
     }
   }
-  std::sort(positionals.begin(), positionals.end(),
+  std::sort(positionals.begin(),
+            positionals.end(),
             [](const CLIParameter * a, const CLIParameter * b) { return a->Index < b->Index; });
   return positionals;
 }

@@ -36,8 +36,8 @@ RunCLIModule(int                   argc,
     else
     {
       auto *      information = static_cast<vrModuleProcessInformation *>(arguments.ProcessInformation);
-      CLIProgress progress(name, comment, information, std::cout,
-                           information == nullptr && ::isatty(STDOUT_FILENO) == 1);
+      CLIProgress progress(
+        name, comment, information, std::cout, information == nullptr && ::isatty(STDOUT_FILENO) == 1);
       progress.Start();
       body(arguments, progress);
       progress.End();

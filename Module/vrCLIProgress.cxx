@@ -19,7 +19,8 @@ CLIProgress::CLIProgress(std::string                  name,
   , m_Out(out)
   , m_Terminal(terminal)
   , m_Start(std::chrono::steady_clock::now())
-{}
+{
+}
 
 double
 CLIProgress::ElapsedSeconds() const

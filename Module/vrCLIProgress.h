@@ -27,8 +27,11 @@ public:
    * \param information Slicer's structure, or null.
    * \param out where the lines or the bar go (stdout).
    * \param terminal whether \a out is a terminal. */
-  CLIProgress(std::string name, std::string comment, vrModuleProcessInformation * information, std::ostream & out,
-              bool terminal);
+  CLIProgress(std::string                  name,
+              std::string                  comment,
+              vrModuleProcessInformation * information,
+              std::ostream &               out,
+              bool                         terminal);
 
   /** Starts the report; call once. */
   void

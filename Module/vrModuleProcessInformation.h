@@ -5,21 +5,22 @@
  * address arrives with --processinformationaddress. The layout is SlicerExecutionModel's
  * ModuleProcessInformation (ModuleDescriptionParser/ModuleProcessInformation.h), field for field; the module
  * writes the progress fields and calls the callback, and reads Abort. */
-extern "C" {
-struct vrModuleProcessInformation
+extern "C"
 {
-  /** Set by the caller to ask the module to stop. */
-  unsigned char Abort;
-  /** Overall progress in [0, 1]. */
-  float Progress;
-  /** Progress of the current stage in [0, 1]. */
-  float StageProgress;
-  char  ProgressMessage[1024];
-  void (*ProgressCallbackFunction)(void *);
-  void * ProgressCallbackClientData;
-  /** Seconds since the module started. */
-  double ElapsedTime;
-};
+  struct vrModuleProcessInformation
+  {
+    /** Set by the caller to ask the module to stop. */
+    unsigned char Abort;
+    /** Overall progress in [0, 1]. */
+    float Progress;
+    /** Progress of the current stage in [0, 1]. */
+    float StageProgress;
+    char  ProgressMessage[1024];
+    void (*ProgressCallbackFunction)(void *);
+    void * ProgressCallbackClientData;
+    /** Seconds since the module started. */
+    double ElapsedTime;
+  };
 }
 
 #endif

@@ -10,7 +10,7 @@ const std::string &
 StagedOutputs::Add(const std::string & path, const std::string & flag)
 {
   namespace fs = std::filesystem;
-  const fs::path  wanted = fs::absolute(fs::path(path)).lexically_normal();
+  const fs::path wanted = fs::absolute(fs::path(path)).lexically_normal();
   for (const auto & entry : m_Entries)
   {
     if (fs::absolute(fs::path(entry.Output->FinalPath())).lexically_normal() == wanted)

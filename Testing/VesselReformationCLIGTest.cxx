@@ -86,20 +86,20 @@ WriteText(const fs::path & path, const std::string & text)
 fs::path
 TestFolder()
 {
-  const auto * info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path folder = fs::path(VR_TEST_OUTPUT_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;
 }
 
-/** Runs \a arguments[0] with the rest as its arguments; stdout and stderr go to files outside \a captureFolder's
- * data so that tests can check which files appear. */
+/** Runs \a arguments[0] with the rest as its arguments; stdout and stderr are captured through files in a folder of
+ * their own, so that tests can check which files appear beside the outputs. */
 RunResult
 RunProgram(const std::vector<std::string> & arguments)
 {
-  static int      counter = 0;
-  const fs::path  capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
+  static int     counter = 0;
+  const fs::path capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
   fs::create_directories(capture);
   const fs::path out = capture / ("out-" + std::to_string(::getpid()) + "-" + std::to_string(counter) + ".txt");
   const fs::path err = capture / ("err-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".txt");
@@ -133,7 +133,7 @@ RunProgram(const std::vector<std::string> & arguments)
   return result;
 }
 
-template <typename TSymbol>
+template<typename TSymbol>
 TSymbol
 LoadSymbol(const std::string & library, const char * name)
 {
@@ -161,8 +161,8 @@ RunInProcess(const std::string & library, const std::vector<std::string> & argum
   }
   const fs::path capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
   fs::create_directories(capture);
-  const fs::path out = capture / "in-process-out.txt";
-  const fs::path err = capture / "in-process-err.txt";
+  const fs::path           out = capture / ("in-process-out-" + std::to_string(::getpid()) + ".txt");
+  const fs::path           err = capture / ("in-process-err-" + std::to_string(::getpid()) + ".txt");
   std::vector<std::string> copies = arguments;
   std::vector<char *>      argv;
   for (auto & argument : copies)
@@ -327,7 +327,8 @@ XMLOf(const std::string & executable)
 }
 
 class ModuleXMLTest : public ::testing::TestWithParam<std::string>
-{};
+{
+};
 
 TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
 {
@@ -338,8 +339,8 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   vtkXMLDataElement * root = parsed->Root;
   EXPECT_STREQ(root->GetName(), "executable");
 
-  const std::vector<std::string> header = { "category", "title",   "description", "version", "documentation-url",
-                                            "license",  "contributor", "acknowledgements" };
+  const std::vector<std::string> header = { "category",          "title",   "description", "version",
+                                            "documentation-url", "license", "contributor", "acknowledgements" };
   ASSERT_GT(root->GetNumberOfNestedElements(), static_cast<int>(header.size()));
   for (std::size_t k = 0; k < header.size(); ++k)
   {
@@ -351,9 +352,14 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   }
   EXPECT_EQ(Text(root->FindNestedElementWithName("category")), "Vascular");
   const std::string acknowledgements = Text(root->FindNestedElementWithName("acknowledgements"));
-  for (const char * part : { "Kretschmer", "Preim", "Stamminger", "Bilateral Depth Filtering for Enhanced Vessel "
-                                                                  "Reformation",
-                             "EuroVis", "2014", "short paper" })
+  for (const char * part : { "Kretschmer",
+                             "Preim",
+                             "Stamminger",
+                             "Bilateral Depth Filtering for Enhanced Vessel "
+                             "Reformation",
+                             "EuroVis",
+                             "2014",
+                             "short paper" })
   {
     EXPECT_TRUE(Contains(acknowledgements, part)) << acknowledgements << " lacks " << part;
   }
@@ -361,10 +367,10 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   EXPECT_FALSE(Text(root->FindNestedElementWithName("contributor")).empty());
 
   // Inside a parameter: name, longflag or index, label, description, default, (elements,) channel, constraints.
-  const std::map<std::string, int> rank = { { "name", 0 },        { "longflag", 1 }, { "index", 1 },
-                                            { "label", 2 },       { "description", 3 }, { "default", 4 },
-                                            { "element", 5 },     { "channel", 6 },  { "constraints", 7 } };
-  std::set<std::string> names;
+  const std::map<std::string, int> rank = { { "name", 0 },    { "longflag", 1 },    { "index", 1 },
+                                            { "label", 2 },   { "description", 3 }, { "default", 4 },
+                                            { "element", 5 }, { "channel", 6 },     { "constraints", 7 } };
+  std::set<std::string>            names;
   for (const auto & parameter : ParametersOf(root))
   {
     EXPECT_TRUE(names.insert(parameter.Name).second) << "two parameters named " << parameter.Name;
@@ -388,7 +394,11 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(BothModules, ModuleXMLTest, ::testing::Values(ReformationExecutable, RelaxExecutable));
+INSTANTIATE_TEST_SUITE_P(BothModules,
+                         ModuleXMLTest,
+                         ::testing::Values(ReformationExecutable, RelaxExecutable),
+                         [](const ::testing::TestParamInfo<std::string> & info)
+                         { return fs::path(info.param).filename().string(); });
 
 /** The long flags of an XML description. */
 std::set<std::string>
@@ -473,12 +483,31 @@ ExpectFlagsAreExactlyTheXMLs(const std::string & executable, const std::set<std:
 
 TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
 {
-  ExpectFlagsAreExactlyTheXMLs(
-    ReformationExecutable,
-    { "angle", "up", "mode", "size", "spacing", "relaxation", "anisotropy", "iterations", "fixLumen", "backend",
-      "openclDevice", "interpolation", "slabThickness", "slabMode", "centerlineSpace", "outputDepth",
-      "outputRelaxedDepth", "outputMask", "outputLabels", "outputUnfilteredCPR", "outputSurface", "outputPNG", "window",
-      "level" });
+  ExpectFlagsAreExactlyTheXMLs(ReformationExecutable,
+                               { "angle",
+                                 "up",
+                                 "mode",
+                                 "size",
+                                 "spacing",
+                                 "relaxation",
+                                 "anisotropy",
+                                 "iterations",
+                                 "fixLumen",
+                                 "backend",
+                                 "openclDevice",
+                                 "interpolation",
+                                 "slabThickness",
+                                 "slabMode",
+                                 "centerlineSpace",
+                                 "outputDepth",
+                                 "outputRelaxedDepth",
+                                 "outputMask",
+                                 "outputLabels",
+                                 "outputUnfilteredCPR",
+                                 "outputSurface",
+                                 "outputPNG",
+                                 "window",
+                                 "level" });
 }
 
 TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)
@@ -489,7 +518,7 @@ TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)
 
 TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
 {
-  const auto parsed = ParseXML(XMLOf(ReformationExecutable));
+  const auto                          parsed = ParseXML(XMLOf(ReformationExecutable));
   std::map<std::string, XMLParameter> byName;
   for (const auto & parameter : ParametersOf(parsed->Root))
   {
@@ -523,8 +552,8 @@ TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
 void
 WriteSmallDepthAndMask(const fs::path & depthPath, const fs::path & maskPath)
 {
-  auto depth = vr::DepthImageType::New();
-  auto mask = vr::MaskImageType::New();
+  auto                                 depth = vr::DepthImageType::New();
+  auto                                 mask = vr::MaskImageType::New();
   const vr::DepthImageType::RegionType region({ { 0, 0 } }, { { 24, 16 } });
   depth->SetRegions(region);
   depth->Allocate();
@@ -556,8 +585,9 @@ TEST(SharedLibraries, RelaxEntryPointWritesWhatTheExecutableWrites)
 {
   const fs::path folder = TestFolder();
   WriteSmallDepthAndMask(folder / "depth.nrrd", folder / "mask.nrrd");
-  const std::vector<std::string> flags = { "--mask", (folder / "mask.nrrd").string(), "--iterations", "40",
-                                           "--anisotropy", "0.25", "--backend", "cpu" };
+  const std::vector<std::string> flags = {
+    "--mask", (folder / "mask.nrrd").string(), "--iterations", "40", "--anisotropy", "0.25", "--backend", "cpu"
+  };
   std::vector<std::string> byExecutable = { RelaxExecutable };
   byExecutable.insert(byExecutable.end(), flags.begin(), flags.end());
   byExecutable.push_back((folder / "depth.nrrd").string());
@@ -578,7 +608,8 @@ TEST(SharedLibraries, RelaxEntryPointWritesWhatTheExecutableWrites)
 TEST(SharedLibraries, ReformationEntryPointWritesWhatTheExecutableWrites)
 {
   const fs::path folder = TestFolder();
-  const auto     arguments = [&](const std::string & program, const std::string & prefix) {
+  const auto     arguments = [&](const std::string & program, const std::string & prefix)
+  {
     return std::vector<std::string>{ program,
                                      "--up",
                                      "auto",
@@ -618,9 +649,16 @@ TEST(SharedLibraries, ReportProgressThroughSlicersStructureAndHonourAbort)
   char address[64];
   std::snprintf(address, sizeof(address), "%p", static_cast<void *>(&information));
 
-  const RunResult run = RunInProcess(RelaxLibrary, { "BilateralDepthRelax", "--processinformationaddress", address,
-                                                     "--iterations", "100", "--backend", "cpu",
-                                                     (folder / "depth.nrrd").string(), (folder / "out.nrrd").string() });
+  const RunResult run = RunInProcess(RelaxLibrary,
+                                     { "BilateralDepthRelax",
+                                       "--processinformationaddress",
+                                       address,
+                                       "--iterations",
+                                       "100",
+                                       "--backend",
+                                       "cpu",
+                                       (folder / "depth.nrrd").string(),
+                                       (folder / "out.nrrd").string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   EXPECT_EQ(information.Progress, 1.0f);
   EXPECT_GT(calls, 10);
@@ -629,10 +667,16 @@ TEST(SharedLibraries, ReportProgressThroughSlicersStructureAndHonourAbort)
   EXPECT_TRUE(fs::exists(folder / "out.nrrd"));
 
   information.Abort = 1;
-  const RunResult aborted =
-    RunInProcess(RelaxLibrary, { "BilateralDepthRelax", "--processinformationaddress", address, "--iterations", "100",
-                                 "--backend", "cpu", (folder / "depth.nrrd").string(),
-                                 (folder / "aborted.nrrd").string() });
+  const RunResult aborted = RunInProcess(RelaxLibrary,
+                                         { "BilateralDepthRelax",
+                                           "--processinformationaddress",
+                                           address,
+                                           "--iterations",
+                                           "100",
+                                           "--backend",
+                                           "cpu",
+                                           (folder / "depth.nrrd").string(),
+                                           (folder / "aborted.nrrd").string() });
   EXPECT_EQ(aborted.ExitCode, 1);
   EXPECT_TRUE(Contains(aborted.Err, "cancelled")) << aborted.Err;
   EXPECT_FALSE(fs::exists(folder / "aborted.nrrd"));
@@ -653,8 +697,17 @@ TEST(BilateralDepthRelaxModule, RelaxesByEquationOneAndHoldsTheMask)
   depth->GetBufferPointer()[2] = 0.0f;
   itk::EncapsulateMetaData<std::string>(depth->GetMetaDataDictionary(), "CPR_Note", "kept");
   vr::WriteImage2D(depth.GetPointer(), (folder / "depth.nrrd").string());
-  const RunResult free = RunProgram({ RelaxExecutable, "--relaxation", "1", "--anisotropy", "0", "--iterations", "1",
-                               "--backend", "cpu", (folder / "depth.nrrd").string(), (folder / "free.nrrd").string() });
+  const RunResult free = RunProgram({ RelaxExecutable,
+                                      "--relaxation",
+                                      "1",
+                                      "--anisotropy",
+                                      "0",
+                                      "--iterations",
+                                      "1",
+                                      "--backend",
+                                      "cpu",
+                                      (folder / "depth.nrrd").string(),
+                                      (folder / "free.nrrd").string() });
   ASSERT_EQ(free.ExitCode, 0) << free.Err;
   auto relaxed = vr::ReadDepthImage((folder / "free.nrrd").string());
   EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[0], 10.0f);
@@ -672,9 +725,17 @@ TEST(BilateralDepthRelaxModule, RelaxesByEquationOneAndHoldsTheMask)
   mask->GetBufferPointer()[1] = 0;
   mask->GetBufferPointer()[2] = 1;
   vr::WriteImage2D(mask.GetPointer(), (folder / "mask.nrrd").string());
-  const RunResult held = RunProgram({ RelaxExecutable, "--mask", (folder / "mask.nrrd").string(), "--anisotropy", "0",
-                               "--iterations", "1", "--backend", "cpu", (folder / "depth.nrrd").string(),
-                               (folder / "held.nrrd").string() });
+  const RunResult held = RunProgram({ RelaxExecutable,
+                                      "--mask",
+                                      (folder / "mask.nrrd").string(),
+                                      "--anisotropy",
+                                      "0",
+                                      "--iterations",
+                                      "1",
+                                      "--backend",
+                                      "cpu",
+                                      (folder / "depth.nrrd").string(),
+                                      (folder / "held.nrrd").string() });
   ASSERT_EQ(held.ExitCode, 0) << held.Err;
   relaxed = vr::ReadDepthImage((folder / "held.nrrd").string());
   EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[0], 0.0f);
@@ -707,9 +768,18 @@ TEST(VesselReformationModule, RealAortaCenterlinePixelsShowLumenAndFixedPixelsIg
   constexpr float   background = 230.0f;
 
   // Centerline pixels alone are fixed with --fixLumen off: each must show lumen.
-  const RunResult centerlineRun =
-    RunProgram({ ReformationExecutable, "--up", "auto", "--fixLumen", "off", "--backend", "cpu", "--outputMask",
-          (folder / "centerline-mask.nrrd").string(), volume, centerlines, (folder / "centerline-cpr.nrrd").string() });
+  const RunResult centerlineRun = RunProgram({ ReformationExecutable,
+                                               "--up",
+                                               "auto",
+                                               "--fixLumen",
+                                               "off",
+                                               "--backend",
+                                               "cpu",
+                                               "--outputMask",
+                                               (folder / "centerline-mask.nrrd").string(),
+                                               volume,
+                                               centerlines,
+                                               (folder / "centerline-cpr.nrrd").string() });
   ASSERT_EQ(centerlineRun.ExitCode, 0) << centerlineRun.Err;
   EXPECT_FALSE(Contains(centerlineRun.Err, "outside the volume")) << centerlineRun.Err;
   auto        cpr = vr::ReadDepthImage((folder / "centerline-cpr.nrrd").string());
@@ -734,11 +804,26 @@ TEST(VesselReformationModule, RealAortaCenterlinePixelsShowLumenAndFixedPixelsIg
   EXPECT_GT(std::abs(up[1]), 0.999) << up[0] << " " << up[1] << " " << up[2];
 
   // With lumen fixing (the default) and without relaxation, the fixed pixels are the same.
-  const RunResult relaxedRun = RunProgram({ ReformationExecutable, "--up", "auto", "--backend", "cpu", "--outputMask",
-                                     (folder / "mask.nrrd").string(), volume, centerlines,
-                                     (folder / "relaxed-cpr.nrrd").string() });
-  const RunResult unrelaxedRun = RunProgram({ ReformationExecutable, "--up", "auto", "--backend", "cpu", "--relaxation", "0",
-                                       volume, centerlines, (folder / "unrelaxed-cpr.nrrd").string() });
+  const RunResult relaxedRun = RunProgram({ ReformationExecutable,
+                                            "--up",
+                                            "auto",
+                                            "--backend",
+                                            "cpu",
+                                            "--outputMask",
+                                            (folder / "mask.nrrd").string(),
+                                            volume,
+                                            centerlines,
+                                            (folder / "relaxed-cpr.nrrd").string() });
+  const RunResult unrelaxedRun = RunProgram({ ReformationExecutable,
+                                              "--up",
+                                              "auto",
+                                              "--backend",
+                                              "cpu",
+                                              "--relaxation",
+                                              "0",
+                                              volume,
+                                              centerlines,
+                                              (folder / "unrelaxed-cpr.nrrd").string() });
   ASSERT_EQ(relaxedRun.ExitCode, 0) << relaxedRun.Err;
   ASSERT_EQ(unrelaxedRun.ExitCode, 0) << unrelaxedRun.Err;
   auto        relaxed = vr::ReadDepthImage((folder / "relaxed-cpr.nrrd").string());
@@ -765,9 +850,16 @@ TEST(VesselReformationModule, RealAortaCenterlinePixelsShowLumenAndFixedPixelsIg
 TEST(VesselReformationModule, ReportsProgressInSlicersFormat)
 {
   const fs::path  folder = TestFolder();
-  const RunResult run = RunProgram({ ReformationExecutable, "--up", "auto", "--iterations", "20", "--backend", "cpu",
-                              (DataFolder / "aorta.mha").string(), (DataFolder / "aorta-centerline.vtp").string(),
-                              (folder / "cpr.nrrd").string() });
+  const RunResult run = RunProgram({ ReformationExecutable,
+                                     "--up",
+                                     "auto",
+                                     "--iterations",
+                                     "20",
+                                     "--backend",
+                                     "cpu",
+                                     (DataFolder / "aorta.mha").string(),
+                                     (DataFolder / "aorta-centerline.vtp").string(),
+                                     (folder / "cpr.nrrd").string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   const auto start = run.Out.find("<filter-start>");
   const auto end = run.Out.find("<filter-end>");
@@ -951,8 +1043,16 @@ TEST_F(BadInputTest, OutputFolderThatDoesNotExist)
 TEST_F(BadInputTest, CenterlinesOutsideTheVolumeWarnAndTheRunContinues)
 {
   // The .vtp is RAS; read as LPS, every point lands outside the volume.
-  const RunResult result = RunProgram({ ReformationExecutable, "--centerlineSpace", "LPS", "--iterations", "10", "--backend",
-                                 "cpu", Volume(), Centerlines(), (m_Folder / "cpr.nrrd").string() });
+  const RunResult result = RunProgram({ ReformationExecutable,
+                                        "--centerlineSpace",
+                                        "LPS",
+                                        "--iterations",
+                                        "10",
+                                        "--backend",
+                                        "cpu",
+                                        Volume(),
+                                        Centerlines(),
+                                        (m_Folder / "cpr.nrrd").string() });
   EXPECT_EQ(result.ExitCode, 0) << result.Err;
   EXPECT_TRUE(Contains(result.Err, "warning: ")) << result.Err;
   EXPECT_TRUE(Contains(result.Err, "outside the volume")) << result.Err;

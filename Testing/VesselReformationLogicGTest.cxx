@@ -28,8 +28,8 @@ namespace
 using vr::ReformationParameters;
 using vr::VesselReformationLogic;
 
-constexpr float Lumen = 1000.0f;
-constexpr float Background = 100.0f;
+constexpr float  Lumen = 1000.0f;
+constexpr float  Background = 100.0f;
 constexpr double LumenRadius = 3.0;
 
 /** A polyline given in LPS, stored in RAS as a platform would hand it over. */
@@ -100,8 +100,9 @@ MakeVolumeNode(const std::vector<Polyline> & vessels)
         {
           for (std::size_t s = 0; s + 1 < vessel.PointsLPS.size(); ++s)
           {
-            distance = std::min(distance, DistanceToSegment({ double(i), double(j), double(k) }, vessel.PointsLPS[s],
-                                                            vessel.PointsLPS[s + 1]));
+            distance = std::min(
+              distance,
+              DistanceToSegment({ double(i), double(j), double(k) }, vessel.PointsLPS[s], vessel.PointsLPS[s + 1]));
           }
         }
         voxels[(k * 40 + j) * 40 + i] = static_cast<short>(distance <= LumenRadius ? Lumen : Background);
@@ -187,8 +188,12 @@ protected:
 };
 
 void
-ExpectCounts(const vr::StageCounts & counts, unsigned depth, unsigned relax, unsigned resample, unsigned unfiltered,
-             unsigned relaxed)
+ExpectCounts(const vr::StageCounts & counts,
+             unsigned                depth,
+             unsigned                relax,
+             unsigned                resample,
+             unsigned                unfiltered,
+             unsigned                relaxed)
 {
   EXPECT_EQ(counts.Depth, depth);
   EXPECT_EQ(counts.Relax, relax);
@@ -365,10 +370,10 @@ TEST_F(VesselReformationLogicTest, WarnsWhenMostCenterlinePointsLieOutsideAndCon
   EXPECT_NE(warned[0].find("two-vessels-centerlines"), std::string::npos) << warned[0];
   ASSERT_EQ(m_Logic.GetWarnings().size(), 1u);
   EXPECT_NE(outputs.CPR, nullptr);
-  EXPECT_EQ(vr::VesselReformationLogic::FractionOfPointsOutside(
-              vr::ConvertCenterlineNodeToTree(MakeCenterlineNode(m_Vessels)),
-              vr::ConvertVolumeNodeToItkImage(m_Volume)),
-            0.0);
+  EXPECT_EQ(
+    vr::VesselReformationLogic::FractionOfPointsOutside(vr::ConvertCenterlineNodeToTree(MakeCenterlineNode(m_Vessels)),
+                                                        vr::ConvertVolumeNodeToItkImage(m_Volume)),
+    0.0);
 }
 
 TEST_F(VesselReformationLogicTest, AutoBackendNoticeIsAWarning)
@@ -483,7 +488,7 @@ TEST(VesselReformationLogicRelax, RelaxDepthImageFollowsEquationOne)
   parameters.Iterations = 1;
   parameters.Backend = vr::RelaxBackend::CPU;
   std::vector<std::string> warnings;
-  auto relaxed = VesselReformationLogic::RelaxDepthImage(depth, nullptr, parameters, {}, warnings);
+  auto                     relaxed = VesselReformationLogic::RelaxDepthImage(depth, nullptr, parameters, {}, warnings);
   EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[0], 10.0f);
   EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[1], 0.0f);
   EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[2], 10.0f);
@@ -500,7 +505,7 @@ TEST(NodeConversion, VolumeNodeGeometryBecomesLPS)
 {
   // IJK->RAS with a rotation, anisotropic spacing and an offset:
   //   R = -2 j + 10,  A = 3 i + 20,  S = 4 k - 30.
-  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
   const double elements[16] = { 0, -2, 0, 10, 3, 0, 0, 20, 0, 0, 4, -30, 0, 0, 0, 1 };
   matrix->DeepCopy(elements);
   auto data = vtkSmartPointer<vtkImageData>::New();
@@ -584,7 +589,7 @@ TEST(NodeConversion, CenterlineNodePointsBecomeLPS)
   points->InsertNextPoint(10.0, 20.0, 30.0);
   points->InsertNextPoint(-1.5, 2.5, -3.5);
   points->InsertNextPoint(7.0, -8.0, 9.0);
-  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto            lines = vtkSmartPointer<vtkCellArray>::New();
   const vtkIdType first[2] = { 0, 1 };
   const vtkIdType second[1] = { 2 };
   lines->InsertNextCell(2, first);
@@ -617,7 +622,7 @@ TEST(NodeConversion, CenterlineNodePointsBecomeLPS)
   EXPECT_DOUBLE_EQ(tree.GetBranches()[1].Points[0][1], 8.0);
 
   // Back to a node and again to a tree: ids and radii survive.
-  auto back = vr::ConvertTreeToCenterlineNode(tree, "back");
+  auto   back = vr::ConvertTreeToCenterlineNode(tree, "back");
   double ras[3];
   back->GetPolyData()->GetPoint(0, ras);
   EXPECT_DOUBLE_EQ(ras[0], 10.0);
@@ -635,8 +640,8 @@ TEST(NodeConversion, CenterlineNodePointsBecomeLPS)
 TEST(NodeConversion, OutputImageNodeLiesOnTheViewPlane)
 {
   // up S, angle 0: u = LPS (1, 0, 0), v = (0, 1, 0); C = (5, 6, 7), 4 x 3 pixels of 0.5 x 2 mm.
-  const itk::CPRViewGeometry view(itk::MakeVector3(0, 0, 1), 0.0, MakePoint(5, 6, 7),
-                                  itk::Size<2>{ { 4, 3 } }, itk::MakeVector2(0.5, 2.0));
+  const itk::CPRViewGeometry view(
+    itk::MakeVector3(0, 0, 1), 0.0, MakePoint(5, 6, 7), itk::Size<2>{ { 4, 3 } }, itk::MakeVector2(0.5, 2.0));
   auto image = vr::DepthImageType::New();
   view.ConfigureImage(image.GetPointer());
   image->Allocate();
@@ -669,8 +674,8 @@ TEST(NodeConversion, OutputImageNodeLiesOnTheViewPlane)
 TEST(CutSurface, PointsLieAtTheDepthAndJumpsStayOpen)
 {
   // 3 x 2 pixels of 1 mm, C = 0, up S, angle 0. Depths: left column 0, the rest 0 except pixel (2, 1) = 10 mm.
-  const itk::CPRViewGeometry view(itk::MakeVector3(0, 0, 1), 0.0, MakePoint(0, 0, 0), itk::Size<2>{ { 3, 2 } },
-                                  itk::MakeVector2(1.0, 1.0));
+  const itk::CPRViewGeometry view(
+    itk::MakeVector3(0, 0, 1), 0.0, MakePoint(0, 0, 0), itk::Size<2>{ { 3, 2 } }, itk::MakeVector2(1.0, 1.0));
   auto depth = vr::DepthImageType::New();
   auto intensity = vr::DepthImageType::New();
   view.ConfigureImage(depth.GetPointer());

@@ -40,9 +40,9 @@ main()
   resample->SetDepth(relax->GetOutput());
   resample->Update();
 
-  const auto * cpr = resample->GetOutput();
-  const auto * mask = depth->GetFixedMaskOutput();
-  const auto   count = cpr->GetBufferedRegion().GetNumberOfPixels();
+  const auto *       cpr = resample->GetOutput();
+  const auto *       mask = depth->GetFixedMaskOutput();
+  const auto         count = cpr->GetBufferedRegion().GetNumberOfPixels();
   std::vector<float> centerline;
   for (std::size_t k = 0; k < count; ++k)
   {
