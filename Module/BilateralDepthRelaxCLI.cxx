@@ -25,8 +25,8 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
   parameters.OpenCLDevice = arguments.String("openclDevice");
   parameters.Validate();
 
-  vr::StagedOutputs   staged;
-  const std::string & outputPath = staged.Add(arguments.String("outputDepth"), arguments.Spelling("outputDepth"));
+  vr::StagedOutputs staged;
+  const std::size_t output = staged.Add(arguments.String("outputDepth"), arguments.Spelling("outputDepth"));
 
   const std::string           depthPath = arguments.String("inputDepth");
   vr::DepthImageType::Pointer depth = vr::ReadDepthImage(depthPath);
@@ -64,7 +64,7 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
   {
     std::cerr << "warning: " << warning << std::endl;
   }
-  vr::WriteImage2D(relaxed.GetPointer(), outputPath);
+  staged.Write(output, [&relaxed](const std::string & path) { vr::WriteImage2D(relaxed.GetPointer(), path); });
   staged.CommitAll();
 }
 } // namespace

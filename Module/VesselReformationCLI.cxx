@@ -12,6 +12,8 @@
 #include "vrVolumeIO.h"
 
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -66,17 +68,22 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     vr::ParseCoordinateSpace(arguments.String("centerlineSpace"), "--centerlineSpace");
 
   // Every output path is checked before the work, and nothing lands until all are written.
-  vr::StagedOutputs staged;
-  const auto        stage = [&](const char * name) -> const std::string *
-  { return arguments.Given(name) ? &staged.Add(arguments.String(name), arguments.Spelling(name)) : nullptr; };
-  const std::string * cprPath = stage("outputCPR");
-  const std::string * depthPath = stage("outputDepth");
-  const std::string * relaxedPath = stage("outputRelaxedDepth");
-  const std::string * maskPath = stage("outputMask");
-  const std::string * labelsPath = stage("outputLabels");
-  const std::string * unfilteredPath = stage("outputUnfilteredCPR");
-  const std::string * surfacePath = stage("outputSurface");
-  const std::string * pngPath = stage("outputPNG");
+  vr::StagedOutputs                  staged;
+  std::map<std::string, std::size_t> outputs;
+  for (const char * name : { "outputCPR",
+                             "outputDepth",
+                             "outputRelaxedDepth",
+                             "outputMask",
+                             "outputLabels",
+                             "outputUnfilteredCPR",
+                             "outputSurface",
+                             "outputPNG" })
+  {
+    if (arguments.Given(name))
+    {
+      outputs[name] = staged.Add(arguments.String(name), arguments.Spelling(name));
+    }
+  }
 
   const std::string            volumePath = arguments.String("inputVolume");
   const std::string            centerlinePath = arguments.String("inputCenterlines");
@@ -89,7 +96,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   volume = nullptr; // the node holds the voxels now
   logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
   logic.SetParameters(parameters);
-  logic.SetSurfaceEnabled(surfacePath != nullptr);
+  logic.SetSurfaceEnabled(outputs.count("outputSurface") != 0);
   logic.SetWarningCallback([](const std::string & message) { std::cerr << "warning: " << message << std::endl; });
   logic.SetProgressCallback(
     [&progress](double fraction, const std::string & stageName)
@@ -100,49 +107,49 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
       }
       progress.Update(fraction, stageName);
     });
-  const vr::ReformationOutputs & outputs = logic.Update();
+  const vr::ReformationOutputs & results = logic.Update();
 
-  vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.CPR), *cprPath);
-  if (depthPath)
+  const auto write = [&](const char * name, const std::function<void(const std::string &)> & writer)
   {
-    vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.Depth), *depthPath);
-  }
-  if (relaxedPath)
-  {
-    vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth), *relaxedPath);
-  }
-  if (maskPath)
-  {
-    vr::WriteImage2D(vr::ConvertVolumeNodeToMaskImage(outputs.FixedMask), *maskPath);
-  }
-  if (labelsPath)
-  {
-    vr::WriteImage2D(vr::ConvertVolumeNodeToLabelImage(outputs.OwnerLabels), *labelsPath);
-  }
-  if (unfilteredPath)
-  {
-    vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR), *unfilteredPath);
-  }
-  if (surfacePath)
-  {
-    vr::WriteSurface(outputs.Surface, *surfacePath, vr::CoordinateSpace::RAS);
-  }
-  if (pngPath)
-  {
-    double window = 0.0;
-    double level = 0.0;
-    logic.GetDisplayWindowLevel(window, level);
-    vr::WriteWindowedPNG(vr::ConvertVolumeNodeToDepthImage(outputs.CPR), window, level, *pngPath);
-  }
+    if (outputs.count(name) != 0)
+    {
+      staged.Write(outputs.at(name), writer);
+    }
+  };
+  write("outputCPR",
+        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.CPR), path); });
+  write("outputDepth",
+        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.Depth), path); });
+  write("outputRelaxedDepth",
+        [&](const std::string & path)
+        { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.RelaxedDepth), path); });
+  write("outputMask",
+        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToMaskImage(results.FixedMask), path); });
+  write("outputLabels",
+        [&](const std::string & path)
+        { vr::WriteImage2D(vr::ConvertVolumeNodeToLabelImage(results.OwnerLabels), path); });
+  write("outputUnfilteredCPR",
+        [&](const std::string & path)
+        { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.UnfilteredCPR), path); });
+  write("outputSurface",
+        [&](const std::string & path) { vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS); });
+  write("outputPNG",
+        [&](const std::string & path)
+        {
+          double window = 0.0;
+          double level = 0.0;
+          logic.GetDisplayWindowLevel(window, level);
+          vr::WriteWindowedPNG(vr::ConvertVolumeNodeToDepthImage(results.CPR), window, level, path);
+        });
   staged.CommitAll();
 
-  const auto &       size = outputs.View.GetSize();
-  const auto &       times = outputs.Times;
+  const auto &       size = results.View.GetSize();
+  const auto &       times = results.Times;
   std::ostringstream summary;
   summary << std::fixed << std::setprecision(1) << "VesselReformation: " << tree.GetNumberOfBranches() << " branches ("
           << report.Format << ", " << vr::ToString(report.FileSpace) << "), view " << size[0] << " x " << size[1]
-          << " pixels of " << outputs.View.GetSpacing()[0] << " mm; times (ms): conversion " << 1e3 * times.Conversion
-          << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << outputs.RelaxBackendUsed
+          << " pixels of " << results.View.GetSpacing()[0] << " mm; times (ms): conversion " << 1e3 * times.Conversion
+          << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed
           << ", " << parameters.Iterations << " iterations), resample " << 1e3 * times.Resample << ", surface "
           << 1e3 * times.Surface;
   std::cout << summary.str() << std::endl;

@@ -6,7 +6,7 @@
 
 namespace vr
 {
-const std::string &
+std::size_t
 StagedOutputs::Add(const std::string & path, const std::string & flag)
 {
   namespace fs = std::filesystem;
@@ -31,7 +31,29 @@ StagedOutputs::Add(const std::string & path, const std::string & flag)
   {
     throw InputError(flag + " " + problem.what());
   }
-  return m_Entries.back().Output->TemporaryPath();
+  return m_Entries.size() - 1;
+}
+
+void
+StagedOutputs::Write(std::size_t handle, const std::function<void(const std::string & temporaryPath)> & writer)
+{
+  const Entry &       entry = m_Entries.at(handle);
+  const std::string & temporary = entry.Output->TemporaryPath();
+  try
+  {
+    writer(temporary);
+  }
+  catch (const InputError & problem)
+  {
+    // The user never named the temporary file: speak of the file they asked for.
+    std::string message = problem.what();
+    for (auto at = message.find(temporary); at != std::string::npos; at = message.find(temporary, at))
+    {
+      message.replace(at, temporary.size(), entry.Output->FinalPath());
+      at += entry.Output->FinalPath().size();
+    }
+    throw InputError(entry.Flag + ": " + message);
+  }
 }
 
 void

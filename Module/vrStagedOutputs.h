@@ -3,6 +3,7 @@
 
 #include "vrAtomicOutput.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,12 +21,20 @@ namespace vr
 class StagedOutputs
 {
 public:
-  /** \param path the final path.
+  /** Reserves an output.
+   * \param path the final path.
    * \param flag how the command line named it ("--outputDepth", "<outputCPR>"), for messages.
-   * \return the temporary path to write to (same folder, same extension). Throws vr::InputError naming the flag
-   * when the folder does not exist or another output already has this path. */
-  const std::string &
+   * \return a handle for Write(). Throws vr::InputError naming the flag when the folder does not exist, the path is a
+   * folder, or another output already has this path. */
+  std::size_t
   Add(const std::string & path, const std::string & flag);
+
+  /** Writes an output under its temporary name.
+   * \param handle what Add() returned.
+   * \param writer writes the file at the path it is given (the temporary one, which keeps the final extension).
+   * Rethrows the writer's vr::InputError naming the flag and the final path instead of the temporary one. */
+  void
+  Write(std::size_t handle, const std::function<void(const std::string & temporaryPath)> & writer);
 
   /** Renames every staged file onto its final path. Throws vr::InputError naming the path on failure. */
   void

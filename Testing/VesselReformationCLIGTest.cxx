@@ -1040,6 +1040,20 @@ TEST_F(BadInputTest, OutputFolderThatDoesNotExist)
   ExpectRejected({ "--outputMask", nowhere, Volume(), Centerlines() }, { "--outputMask", "no-such-folder" });
 }
 
+TEST_F(BadInputTest, AWriteThatFailsAfterTheOthersLeavesNoOutputAtAll)
+{
+  // The CPR and the mask are written first; the surface writer then refuses the extension. Nothing may land.
+  ExpectRejected({ "--iterations",
+                   "10",
+                   "--outputMask",
+                   (m_Folder / "mask.nrrd").string(),
+                   "--outputSurface",
+                   (m_Folder / "surface.xyz").string(),
+                   Volume(),
+                   Centerlines() },
+                 { "surface.xyz" });
+}
+
 TEST_F(BadInputTest, CenterlinesOutsideTheVolumeWarnAndTheRunContinues)
 {
   // The .vtp is RAS; read as LPS, every point lands outside the volume.
