@@ -62,7 +62,7 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
     warnings);
   for (const auto & warning : warnings)
   {
-    std::cerr << "warning: " << warning << std::endl;
+    progress.Print(std::cerr, "warning: " + warning);
   }
   staged.Write(output, [&relaxed](const std::string & path) { vr::WriteImage2D(relaxed.GetPointer(), path); });
   staged.CommitAll();

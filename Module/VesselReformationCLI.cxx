@@ -97,7 +97,8 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
   logic.SetParameters(parameters);
   logic.SetSurfaceEnabled(outputs.count("outputSurface") != 0);
-  logic.SetWarningCallback([](const std::string & message) { std::cerr << "warning: " << message << std::endl; });
+  logic.SetWarningCallback([&progress](const std::string & message)
+                           { progress.Print(std::cerr, "warning: " + message); });
   logic.SetProgressCallback(
     [&progress](double fraction, const std::string & stageName)
     {
@@ -152,7 +153,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
           << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed
           << ", " << parameters.Iterations << " iterations), resample " << 1e3 * times.Resample << ", surface "
           << 1e3 * times.Surface;
-  std::cout << summary.str() << std::endl;
+  progress.Print(std::cout, summary.str());
 }
 } // namespace
 

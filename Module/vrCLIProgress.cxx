@@ -78,7 +78,8 @@ CLIProgress::Update(double fraction, const std::string & stage)
   if (m_Terminal)
   {
     constexpr int width = 40;
-    const int     filled = static_cast<int>(std::lround(fraction * width));
+    m_BarOpen = true;
+    const int filled = static_cast<int>(std::lround(fraction * width));
     m_Out << "\r" << m_Name << " [" << std::string(filled, '#') << std::string(width - filled, '.') << "] "
           << std::setw(3) << static_cast<int>(std::lround(100.0 * fraction)) << "% " << std::left << std::setw(10)
           << stage << std::right << std::flush;
@@ -110,6 +111,17 @@ CLIProgress::End()
   }
   m_Out << "<filter-end>\n<filter-name>" << m_Name << "</filter-name>\n<filter-time>" << ElapsedSeconds()
         << "</filter-time>\n</filter-end>" << std::endl;
+}
+
+void
+CLIProgress::Print(std::ostream & stream, const std::string & text)
+{
+  if (m_BarOpen)
+  {
+    m_Out << std::endl;
+    m_BarOpen = false;
+  }
+  stream << text << std::endl;
 }
 
 bool

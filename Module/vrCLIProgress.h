@@ -44,6 +44,12 @@ public:
   void
   End();
 
+  /** Prints a line of text (a warning, a summary) without tearing the progress bar: an open bar is ended first.
+   * \param stream where the line goes (stdout or stderr).
+   * \param text the line, without its newline. */
+  void
+  Print(std::ostream & stream, const std::string & text);
+
   /** \return whether 3D Slicer asked the module to stop. */
   bool
   AbortRequested() const;

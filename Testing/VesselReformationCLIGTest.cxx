@@ -885,7 +885,13 @@ TEST(CLIProgress, DrawsABarOnATerminal)
   vr::CLIProgress    progress("VesselReformation", "comment", nullptr, out, /*terminal=*/true);
   progress.Start();
   progress.Update(0.42, "relax");
+  std::ostringstream warnings;
+  progress.Print(warnings, "warning: something");
+  progress.Update(0.5, "relax");
   progress.End();
+  EXPECT_EQ(warnings.str(), "warning: something\n");
+  // The bar was ended before the warning went out, and redrawn after it.
+  EXPECT_TRUE(Contains(out.str(), "relax     \n\r")) << out.str();
   EXPECT_FALSE(Contains(out.str(), "<filter")) << out.str();
   EXPECT_TRUE(Contains(out.str(), " 42% relax")) << out.str();
   EXPECT_TRUE(Contains(out.str(), "100%")) << out.str();
