@@ -48,18 +48,19 @@ BuildCutSurface(const DepthImageType *       depth,
 
   const std::size_t width = size[0];
   const std::size_t height = size[1];
+  const auto        pixelCount = static_cast<vtkIdType>(width) * static_cast<vtkIdType>(height);
   const float *     d = depth->GetBufferPointer();
   const float *     values = intensity->GetBufferPointer();
 
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(width * height));
+  points->SetNumberOfPoints(pixelCount);
   auto intensities = vtkSmartPointer<vtkFloatArray>::New();
   intensities->SetName(CutSurfaceIntensityArrayName);
-  intensities->SetNumberOfValues(static_cast<vtkIdType>(width * height));
+  intensities->SetNumberOfValues(pixelCount);
   auto depths = vtkSmartPointer<vtkFloatArray>::New();
   depths->SetName(CutSurfaceDepthArrayName);
-  depths->SetNumberOfValues(static_cast<vtkIdType>(width * height));
+  depths->SetNumberOfValues(pixelCount);
   for (std::size_t j = 0; j < height; ++j)
   {
     for (std::size_t i = 0; i < width; ++i)
@@ -77,8 +78,8 @@ BuildCutSurface(const DepthImageType *       depth,
   auto              offsets = vtkSmartPointer<vtkIdTypeArray>::New();
   auto              connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
   const std::size_t quads = width > 1 && height > 1 ? (width - 1) * (height - 1) : 0;
-  offsets->Allocate(static_cast<vtkIdType>(2 * quads + 1));
-  connectivity->Allocate(static_cast<vtkIdType>(6 * quads));
+  offsets->Allocate(2 * static_cast<vtkIdType>(quads) + 1);
+  connectivity->Allocate(6 * static_cast<vtkIdType>(quads));
   offsets->InsertNextValue(0);
   const auto bridged = [&](std::size_t a, std::size_t b, std::size_t c)
   {

@@ -13,6 +13,7 @@
 #include <vtkSetGet.h>
 
 #include <cmath>
+#include <type_traits>
 #include <sstream>
 
 namespace vr
@@ -48,13 +49,21 @@ CopyAsFloat(const TSource * source, std::size_t count, float * target)
   }
 }
 
+/** Copies with a cast; for an unsigned target (mask, labels) a negative value becomes 0 rather than wrapping. */
 template<typename TSource, typename TTarget>
 void
 CopyCast(const TSource * source, std::size_t count, TTarget * target)
 {
   for (std::size_t k = 0; k < count; ++k)
   {
-    target[k] = static_cast<TTarget>(source[k]);
+    if constexpr (std::is_unsigned_v<TTarget> && std::is_signed_v<TSource>)
+    {
+      target[k] = source[k] < 0 ? TTarget{ 0 } : static_cast<TTarget>(source[k]);
+    }
+    else
+    {
+      target[k] = static_cast<TTarget>(source[k]);
+    }
   }
 }
 
@@ -276,7 +285,9 @@ ConvertVolumeNodeToItkImage(VolumeNode * node)
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     region.SetIndex(axis, extent[2 * axis]);
-    region.SetSize(axis, static_cast<itk::SizeValueType>(extent[2 * axis + 1] - extent[2 * axis] + 1));
+    region.SetSize(axis,
+                   static_cast<itk::SizeValueType>(extent[2 * axis + 1]) -
+                     static_cast<itk::SizeValueType>(extent[2 * axis]) + 1);
   }
   auto image = VolumeImageType::New();
   image->SetRegions(region);

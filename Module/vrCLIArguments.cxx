@@ -191,7 +191,8 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
       {
         throw InputError(spelling + " needs a value");
       }
-      return std::string(argv[++k]);
+      ++k;
+      return std::string(argv[k] ? argv[k] : "");
     };
     if (flag == "xml")
     {
