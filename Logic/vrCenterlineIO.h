@@ -13,9 +13,11 @@ struct CenterlineReadReport
 {
   std::string Format;          // "VMTK .vtp", "Slicer markups", "TubeTK .tre", "CSV", ...
   CoordinateSpace FileSpace{}; // the space the coordinates were read in (after the override)
+  std::string     SpaceSource; // where FileSpace came from: "override", "SPACE=LPS header", "default (RAS)", ...
   std::string RadiusArray;     // the array radii came from, empty when none
   std::size_t InputPolylines{ 0 };
   std::size_t MergedPoints{ 0 }; // points dropped because an overlapping path repeated them
+  bool        UsedBranchGroups{ false }; // the vmtkbranchextractor GroupIds/Blanking arrays defined the branches
 };
 
 /** Reads a centerline tree in LPS mm from .vtp, .vtk (VMTK or 3D Slicer), .mrk.json (3D Slicer markups

@@ -2,6 +2,7 @@
 #define vrImageIO_h
 
 #include "itkImage.h"
+#include "vrCoordinateFrames.h"
 
 #include <string>
 
@@ -22,7 +23,9 @@ WriteImage2D(const MaskImageType * image, const std::string & path);
 void
 WriteImage2D(const LabelImageType * image, const std::string & path);
 
-/** Reads a 2D depth image (and its metadata) or a mask; throws vr::InputError naming the file. */
+/** Reads a 2D depth image (and its metadata) or a mask; throws vr::InputError naming the file. A 3D file with a
+ * single slice counts as 2D. The mask may be stored with any scalar pixel type: non-zero pixels become 1 (fixed),
+ * zero 0, a non-finite one is an error naming the pixel. */
 DepthImageType::Pointer
 ReadDepthImage(const std::string & path);
 MaskImageType::Pointer
@@ -31,10 +34,18 @@ ReadMaskImage(const std::string & path);
 /** Writes an 8-bit PNG of \a image through window/level (intensities level -+ window/2 map to 0..255). */
 void
 WriteWindowedPNG(const DepthImageType * image, double window, double level, const std::string & path);
+// Grey = round(255 (v - level + window/2) / window) clamped to [0, 255]; NaN gives 0. Throws vr::InputError
+// naming the window or level when window is not > 0 or either is not finite. Row 0 of the image is the PNG's top.
 
-/** Writes a surface (.vtp XML or legacy .vtk) atomically. */
+/** Writes a surface (.vtp XML or legacy .vtk) atomically, point and cell arrays included (the CPR intensity
+ * as point scalars). Throws vr::InputError naming the path on an unknown extension, an empty surface or a
+ * failed write. */
 void
 WriteSurface(vtkPolyData * surface, const std::string & path);
+/** The same, marking the points' coordinate system the way 3D Slicer reads it: the "SPACE" field-data string
+ * array in .vtp, "SPACE=RAS" or "SPACE=LPS" in the legacy .vtk header. */
+void
+WriteSurface(vtkPolyData * surface, const std::string & path, CoordinateSpace pointSpace);
 } // namespace vr
 
 #endif

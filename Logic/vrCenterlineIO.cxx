@@ -1,0 +1,158 @@
+#include "vrCenterlineIO.h"
+
+#include "vrAtomicOutput.h"
+#include "vrCenterlineFormats.h"
+#include "vrITKMessages.h"
+#include "vrInputError.h"
+
+#include "itkMacro.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+
+namespace vr
+{
+namespace
+{
+enum class CenterlineFormat
+{
+  VTK,
+  Markups,
+  Tube,
+  CSV
+};
+
+bool
+EndsWith(const std::string & text, const std::string & suffix)
+{
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+CenterlineFormat
+FormatOf(const std::string & path, const std::string & role)
+{
+  std::string lower = std::filesystem::path(path).filename().string();
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (EndsWith(lower, ".vtp") || EndsWith(lower, ".vtk"))
+  {
+    return CenterlineFormat::VTK;
+  }
+  if (EndsWith(lower, ".json"))
+  {
+    return CenterlineFormat::Markups;
+  }
+  if (EndsWith(lower, ".tre"))
+  {
+    return CenterlineFormat::Tube;
+  }
+  if (EndsWith(lower, ".csv"))
+  {
+    return CenterlineFormat::CSV;
+  }
+  throw InputError(role + " " + path +
+                   ": unknown centerline format; use .vtp or .vtk (VMTK, 3D Slicer), .mrk.json (3D Slicer markups "
+                   "curves), .tre (TubeTK) or .csv");
+}
+} // namespace
+
+namespace detail
+{
+itk::CenterlineTree
+FlipRASLPS(const itk::CenterlineTree & tree)
+{
+  itk::CenterlineTree flipped = tree;
+  for (auto & branch : flipped.GetBranches())
+  {
+    for (auto & point : branch.Points)
+    {
+      point = RASToLPS(point);
+    }
+  }
+  return flipped;
+}
+} // namespace detail
+
+itk::CenterlineTree
+ReadCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadReport * report)
+{
+  namespace fs = std::filesystem;
+  const CenterlineFormat format = FormatOf(path, "centerline file");
+  std::error_code        error;
+  if (!fs::exists(path, error))
+  {
+    throw InputError("centerline file " + path + ": no such file");
+  }
+  if (fs::is_directory(path, error))
+  {
+    throw InputError("centerline file " + path + ": is a folder, not a file");
+  }
+  if (fs::file_size(path, error) == 0 && !error)
+  {
+    throw InputError("centerline file " + path + ": is empty");
+  }
+
+  CenterlineReadReport found;
+  itk::CenterlineTree  tree;
+  switch (format)
+  {
+    case CenterlineFormat::VTK:
+      tree = detail::ReadVTKCenterlines(path, space, found);
+      break;
+    case CenterlineFormat::Markups:
+      tree = detail::ReadMarkupsCurves(path, space, found);
+      break;
+    case CenterlineFormat::Tube:
+      tree = detail::ReadTubeTree(path, space, found);
+      break;
+    case CenterlineFormat::CSV:
+      tree = detail::ReadCenterlineCSV(path, space, found);
+      break;
+  }
+  try
+  {
+    tree.Validate();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError("centerline file " + path + ": " + detail::CondenseITKMessage(exception));
+  }
+  if (report != nullptr)
+  {
+    *report = found;
+  }
+  return tree;
+}
+
+void
+WriteCenterlines(const itk::CenterlineTree & tree, const std::string & path, CoordinateSpace space)
+{
+  const CenterlineFormat format = FormatOf(path, "centerline output");
+  try
+  {
+    tree.Validate();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError("centerline output " + path +
+                     ": nothing written, the tree is invalid: " + detail::CondenseITKMessage(exception));
+  }
+  AtomicOutput output(path);
+  switch (format)
+  {
+    case CenterlineFormat::VTK:
+      detail::WriteVTKCenterlines(tree, path, output.TemporaryPath(), space);
+      break;
+    case CenterlineFormat::Markups:
+      detail::WriteMarkupsCurves(tree, path, output.TemporaryPath(), space);
+      break;
+    case CenterlineFormat::Tube:
+      detail::WriteTubeTree(tree, path, output.TemporaryPath(), space);
+      break;
+    case CenterlineFormat::CSV:
+      detail::WriteCenterlineCSV(tree, path, output.TemporaryPath(), space);
+      break;
+  }
+  output.Commit();
+}
+} // namespace vr

@@ -1,0 +1,38 @@
+#ifndef vrITKMessages_h
+#define vrITKMessages_h
+
+#include "itkMacro.h"
+#include "itkObjectFactory.h"
+#include "itkOutputWindow.h"
+
+#include <string>
+
+/** Turning ITK's error and warning text into the one-line messages vr::InputError carries. Not installed: an
+ * implementation detail of the IO library. */
+namespace vr::detail
+{
+/** The description of \a exception on one line: without ITK's "ITK ERROR: Class(0x...): " prefix, with the
+ * NRRD library's chain of "trouble" lines reduced to the ones that say what is wrong, and \a temporaryPath
+ * (an AtomicOutput name the user never sees) replaced by \a finalPath. */
+std::string
+CondenseITKMessage(const itk::ExceptionObject & exception,
+                   const std::string &          temporaryPath = std::string(),
+                   const std::string &          finalPath = std::string());
+
+/** While alive, ITK warnings (itkWarningMacro, e.g. GDCMSeriesFileNames' "No Series were found") go nowhere
+ * instead of to the terminal: the caller reports what went wrong itself. */
+class ScopedSilentITKOutput
+{
+public:
+  ScopedSilentITKOutput();
+  ~ScopedSilentITKOutput();
+  ScopedSilentITKOutput(const ScopedSilentITKOutput &) = delete;
+  ScopedSilentITKOutput &
+  operator=(const ScopedSilentITKOutput &) = delete;
+
+private:
+  itk::OutputWindow::Pointer m_Previous;
+};
+} // namespace vr::detail
+
+#endif

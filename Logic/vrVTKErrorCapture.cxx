@@ -1,0 +1,175 @@
+#include "vrVTKErrorCapture.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLReader.h>
+
+#include <mutex>
+
+namespace vr
+{
+namespace
+{
+std::recursive_mutex &
+CaptureMutex()
+{
+  static std::recursive_mutex mutex;
+  return mutex;
+}
+
+/** "ERROR: In file.cxx, line 12\nvtkClass (0x1234): what went wrong\n\n" -> "what went wrong". */
+std::string
+CleanMessage(const char * text)
+{
+  std::string message = text == nullptr ? std::string() : std::string(text);
+  const auto  newline = message.find('\n');
+  if (message.rfind("ERROR: In ", 0) == 0 || message.rfind("Warning: In ", 0) == 0)
+  {
+    message = newline == std::string::npos ? std::string() : message.substr(newline + 1);
+  }
+  const auto objectEnd = message.find("): ");
+  if (objectEnd != std::string::npos && message.find('(') < objectEnd)
+  {
+    message = message.substr(objectEnd + 3);
+  }
+  const auto last = message.find_last_not_of(" \t\r\n");
+  message = last == std::string::npos ? std::string() : message.substr(0, last + 1);
+  const auto first = message.find_first_not_of(" \t\r\n");
+  return first == std::string::npos ? std::string() : message.substr(first);
+}
+
+/** Records ErrorEvent messages; owned by reference counting, so an algorithm that outlives the capture still
+ * holds a valid command. */
+class ErrorRecorder : public vtkCommand
+{
+public:
+  static ErrorRecorder *
+  New()
+  {
+    return new ErrorRecorder;
+  }
+  vtkTypeMacro(ErrorRecorder, vtkCommand);
+
+  void
+  Execute(vtkObject *, unsigned long event, void * callData) override
+  {
+    if (event == vtkCommand::ErrorEvent)
+    {
+      m_Errors.push_back(CleanMessage(static_cast<const char *>(callData)));
+    }
+  }
+
+  std::vector<std::string> m_Errors;
+};
+
+/** An output window that prints nothing and hands errors to a recorder. */
+class RecordingOutputWindow : public vtkOutputWindow
+{
+public:
+  static RecordingOutputWindow *
+  New();
+  vtkTypeMacro(RecordingOutputWindow, vtkOutputWindow);
+
+  void
+  DisplayErrorText(const char * text) override
+  {
+    if (m_Recorder != nullptr)
+    {
+      m_Recorder->m_Errors.push_back(CleanMessage(text));
+    }
+  }
+  void
+  DisplayText(const char *) override
+  {
+  }
+  void
+  DisplayWarningText(const char *) override
+  {
+  }
+  void
+  DisplayGenericWarningText(const char *) override
+  {
+  }
+  void
+  DisplayDebugText(const char *) override
+  {
+  }
+
+  vtkSmartPointer<ErrorRecorder> m_Recorder;
+};
+vtkStandardNewMacro(RecordingOutputWindow);
+} // namespace
+
+class VTKErrorCapture::Implementation
+{
+public:
+  std::unique_lock<std::recursive_mutex> m_Lock{ CaptureMutex() };
+  vtkSmartPointer<ErrorRecorder>         m_Recorder{ vtkSmartPointer<ErrorRecorder>::New() };
+  vtkSmartPointer<vtkOutputWindow>       m_PreviousWindow;
+  vtkSmartPointer<RecordingOutputWindow> m_Window{ vtkSmartPointer<RecordingOutputWindow>::New() };
+};
+
+VTKErrorCapture::VTKErrorCapture()
+  : m_Implementation(std::make_unique<Implementation>())
+{
+  m_Implementation->m_PreviousWindow = vtkOutputWindow::GetInstance();
+  m_Implementation->m_Window->m_Recorder = m_Implementation->m_Recorder;
+  vtkOutputWindow::SetInstance(m_Implementation->m_Window);
+}
+
+VTKErrorCapture::~VTKErrorCapture()
+{
+  vtkOutputWindow::SetInstance(m_Implementation->m_PreviousWindow);
+}
+
+void
+VTKErrorCapture::Observe(vtkObject * object)
+{
+  if (object == nullptr)
+  {
+    return;
+  }
+  object->AddObserver(vtkCommand::ErrorEvent, m_Implementation->m_Recorder);
+  object->AddObserver(vtkCommand::WarningEvent, m_Implementation->m_Recorder);
+  if (auto * xmlReader = vtkXMLReader::SafeDownCast(object))
+  {
+    xmlReader->SetReaderErrorObserver(m_Implementation->m_Recorder);
+    xmlReader->SetParserErrorObserver(m_Implementation->m_Recorder);
+  }
+  if (auto * algorithm = vtkAlgorithm::SafeDownCast(object))
+  {
+    algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, m_Implementation->m_Recorder);
+  }
+}
+
+bool
+VTKErrorCapture::HasErrors() const
+{
+  return !m_Implementation->m_Recorder->m_Errors.empty();
+}
+
+std::string
+VTKErrorCapture::FirstError() const
+{
+  // The executive's "returned failure for request" only repeats that the algorithm failed: prefer the cause.
+  for (const auto & error : m_Implementation->m_Recorder->m_Errors)
+  {
+    if (error.find("returned failure for request") == std::string::npos && !error.empty())
+    {
+      return error;
+    }
+  }
+  return m_Implementation->m_Recorder->m_Errors.empty() ? std::string()
+                                                        : m_Implementation->m_Recorder->m_Errors.front();
+}
+
+const std::vector<std::string> &
+VTKErrorCapture::Errors() const
+{
+  return m_Implementation->m_Recorder->m_Errors;
+}
+} // namespace vr

@@ -1,0 +1,49 @@
+#ifndef vrVTKErrorCapture_h
+#define vrVTKErrorCapture_h
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkObject;
+
+namespace vr
+{
+/** \class VTKErrorCapture
+ * \brief Collects the errors VTK readers and writers report, instead of letting VTK print them.
+ *
+ * VTK reports file errors through vtkErrorMacro (an ErrorEvent on the object, else text on the global
+ * vtkOutputWindow), never through exceptions. While a capture lives, the output window is replaced by a silent
+ * one that records what it is given, and Observe() adds ErrorEvent/WarningEvent observers to an algorithm (and,
+ * for XML readers, to their parser), so a caller can turn the first message into a vr::InputError that names
+ * the file. Captures are serialised by a process-wide lock because the output window is global.
+ */
+class VTKErrorCapture
+{
+public:
+  VTKErrorCapture();
+  ~VTKErrorCapture();
+  VTKErrorCapture(const VTKErrorCapture &) = delete;
+  VTKErrorCapture &
+  operator=(const VTKErrorCapture &) = delete;
+
+  /** Routes the errors and warnings of \a object (and of its executive) to this capture. */
+  void
+  Observe(vtkObject * object);
+
+  bool
+  HasErrors() const;
+  /** The first error without VTK's "ERROR: In file, line" preamble; empty when none. */
+  std::string
+  FirstError() const;
+  const std::vector<std::string> &
+  Errors() const;
+
+  class Implementation;
+
+private:
+  std::unique_ptr<Implementation> m_Implementation;
+};
+} // namespace vr
+
+#endif

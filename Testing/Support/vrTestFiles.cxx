@@ -1,0 +1,79 @@
+#include "vrTestFiles.h"
+
+#include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace vr::test
+{
+ScopedTemporaryFolder::ScopedTemporaryFolder()
+{
+  static std::atomic<unsigned> counter{ 0 };
+  m_Path = std::filesystem::temp_directory_path() /
+           ("vr-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(m_Path);
+  std::filesystem::create_directories(m_Path);
+}
+
+ScopedTemporaryFolder::~ScopedTemporaryFolder()
+{
+  std::error_code ignored;
+  std::filesystem::remove_all(m_Path, ignored);
+}
+
+std::string
+ScopedTemporaryFolder::File(const std::string & name) const
+{
+  return (m_Path / name).string();
+}
+
+std::vector<std::string>
+ScopedTemporaryFolder::Entries() const
+{
+  std::vector<std::string> names;
+  for (const auto & entry : std::filesystem::directory_iterator(m_Path))
+  {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+void
+WriteTextFile(const std::string & path, const std::string & text)
+{
+  std::ofstream output(path, std::ios::binary);
+  output << text;
+  if (!output)
+  {
+    throw std::runtime_error("cannot write " + path);
+  }
+}
+
+std::string
+ReadTextFile(const std::string & path)
+{
+  std::ifstream input(path, std::ios::binary);
+  if (!input)
+  {
+    throw std::runtime_error("cannot read " + path);
+  }
+  std::ostringstream text;
+  text << input.rdbuf();
+  return text.str();
+}
+
+std::string
+AortaDataFolder()
+{
+#ifdef VR_SHARED_DATA_DIR
+  const std::filesystem::path folder = std::filesystem::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
+  return std::filesystem::exists(folder / "aorta.mha") ? folder.string() : std::string();
+#else
+  return std::string();
+#endif
+}
+} // namespace vr::test

@@ -1,0 +1,47 @@
+#ifndef vrTestFiles_h
+#define vrTestFiles_h
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+/** Files for the IO tests: a fresh folder per test, whole-file reads and writes. */
+namespace vr::test
+{
+/** A new empty folder under the system temporary folder, removed with everything in it on destruction. */
+class ScopedTemporaryFolder
+{
+public:
+  ScopedTemporaryFolder();
+  ~ScopedTemporaryFolder();
+  ScopedTemporaryFolder(const ScopedTemporaryFolder &) = delete;
+  ScopedTemporaryFolder &
+  operator=(const ScopedTemporaryFolder &) = delete;
+
+  const std::filesystem::path &
+  Path() const
+  {
+    return m_Path;
+  }
+  /** The path of \a name inside the folder, as a string. */
+  std::string
+  File(const std::string & name) const;
+  /** The names of the entries in the folder, sorted (hidden ones included). */
+  std::vector<std::string>
+  Entries() const;
+
+private:
+  std::filesystem::path m_Path;
+};
+
+void
+WriteTextFile(const std::string & path, const std::string & text);
+std::string
+ReadTextFile(const std::string & path);
+
+/** The shared real-data folder (VR_SHARED_DATA_DIR/vmtk-aorta-mra), or "" when this checkout lacks it. */
+std::string
+AortaDataFolder();
+} // namespace vr::test
+
+#endif
