@@ -152,6 +152,10 @@ unsigned char
 WindowLevelToByte(double value, double window, double level)
 {
   const double t = (value - (level - 0.5 * window)) / window;
+  if (std::isnan(t))
+  {
+    return 0;
+  }
   return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, t))));
 }
 

@@ -13,7 +13,7 @@ using RGBPixelType = itk::RGBPixel<unsigned char>;
 using RGBImageType = itk::Image<RGBPixelType, 2>;
 using FloatImage2DType = itk::Image<float, 2>;
 
-/** Maps an intensity through window/level to 0..255: level - window/2 -> 0, level + window/2 -> 255. */
+/** Maps an intensity through window/level to 0..255: level - window/2 -> 0, level + window/2 -> 255, NaN -> 0. */
 unsigned char
 WindowLevelToByte(double value, double window, double level);
 
