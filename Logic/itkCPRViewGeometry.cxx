@@ -373,7 +373,27 @@ CPRViewGeometry::ReadFromDictionary(const MetaDataDictionary & dictionary)
     imageSize[k] = static_cast<SizeValueType>(size[k]);
     pixelSpacing[k] = spacing[k];
   }
-  return CPRViewGeometry(MakeVector3(up[0], up[1], up[2]), angle[0], c, imageSize, pixelSpacing);
+  CPRViewGeometry view(MakeVector3(up[0], up[1], up[2]), angle[0], c, imageSize, pixelSpacing);
+  // Keep the stored frame bit for bit (re-normalising would move the last bits), once it agrees with the one
+  // recomputed from up and the angle.
+  const std::pair<const char *, VectorType *> stored[] = { { KeyUp, &view.m_Up }, { KeyU, &view.m_U }, { KeyV, &view.m_V } };
+  for (const auto & [key, target] : stored)
+  {
+    if (!dictionary.HasKey(key))
+    {
+      continue;
+    }
+    const auto       values = ReadNumbers(dictionary, key, 3);
+    const VectorType vector = MakeVector3(values[0], values[1], values[2]);
+    if ((vector - *target).GetNorm() > 1e-9)
+    {
+      itkGenericExceptionMacro(<< "CPRViewGeometry: metadata entry " << key << " = " << vector
+                               << " disagrees with the frame given by " << KeyUp << " and " << KeyAngle << " ("
+                               << *target << ")");
+    }
+    *target = vector;
+  }
+  return view;
 }
 
 bool

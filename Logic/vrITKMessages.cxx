@@ -67,10 +67,10 @@ protected:
   ~SilentOutputWindow() override = default;
 };
 
-std::mutex &
+std::recursive_mutex &
 OutputWindowMutex()
 {
-  static std::mutex mutex;
+  static std::recursive_mutex mutex;
   return mutex;
 }
 } // namespace

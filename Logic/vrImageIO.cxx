@@ -1,5 +1,7 @@
 #include "vrImageIO.h"
 
+#include "vrFigure.h"
+
 #include "vrAtomicOutput.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
@@ -194,14 +196,12 @@ WriteWindowedPNG(const DepthImageType * image, double window, double level, cons
   bytes->CopyInformation(image);
   bytes->SetRegions(image->GetLargestPossibleRegion());
   bytes->Allocate();
-  const double      lowest = level - 0.5 * window;
   const std::size_t count = image->GetLargestPossibleRegion().GetNumberOfPixels();
   const float *     values = image->GetBufferPointer();
   unsigned char *   grey = bytes->GetBufferPointer();
   for (std::size_t k = 0; k < count; ++k)
   {
-    const double scaled = (static_cast<double>(values[k]) - lowest) / window * 255.0;
-    grey[k] = std::isnan(scaled) ? 0 : static_cast<unsigned char>(std::lround(std::min(255.0, std::max(0.0, scaled))));
+    grey[k] = WindowLevelToByte(values[k], window, level);
   }
   WriteImageAtomically<MaskImageType>(bytes, path, itk::PNGImageIO::New());
 }

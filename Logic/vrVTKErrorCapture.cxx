@@ -14,10 +14,10 @@ namespace vr
 {
 namespace
 {
-std::mutex &
+std::recursive_mutex &
 CaptureMutex()
 {
-  static std::mutex mutex;
+  static std::recursive_mutex mutex;
   return mutex;
 }
 
@@ -107,7 +107,7 @@ vtkStandardNewMacro(RecordingOutputWindow);
 class VTKErrorCapture::Implementation
 {
 public:
-  std::unique_lock<std::mutex>           m_Lock{ CaptureMutex() };
+  std::unique_lock<std::recursive_mutex> m_Lock{ CaptureMutex() };
   vtkSmartPointer<ErrorRecorder>         m_Recorder{ vtkSmartPointer<ErrorRecorder>::New() };
   vtkSmartPointer<vtkOutputWindow>       m_PreviousWindow;
   vtkSmartPointer<RecordingOutputWindow> m_Window{ vtkSmartPointer<RecordingOutputWindow>::New() };

@@ -99,6 +99,17 @@ TEST(Image2DIO, NRRDDepthKeepsValuesGeometryAndTheView)
   EXPECT_EQ(itk::CPRViewGeometry::ReadFromDictionary(read->GetMetaDataDictionary()), MakeView());
 }
 
+TEST(Image2DIO, MetaImageKeepsTheViewToo)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const auto                      depth = MakeViewImage<vr::DepthImageType>([](unsigned int k) { return 0.5f * k; });
+  const std::string               path = folder.File("depth.mha");
+  vr::WriteImage2D(depth, path);
+  const vr::DepthImageType::Pointer read = vr::ReadDepthImage(path);
+  EXPECT_EQ(read->GetBufferPointer()[14], 7.0f);
+  EXPECT_EQ(itk::CPRViewGeometry::ReadFromDictionary(read->GetMetaDataDictionary()), MakeView());
+}
+
 TEST(Image2DIO, MaskAndLabelImagesRoundTrip)
 {
   vr::test::ScopedTemporaryFolder folder;

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds, and runs the main job on the built-in phantom. Pictures land in
+# ./vessel-reformation-demo/ (or the folder given as the first argument).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+output="${1:-vessel-reformation-demo}"
+
+bash scripts/install-dependencies.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build --target VesselReformationDemo
+./build/bin/VesselReformationDemo --output "$output"

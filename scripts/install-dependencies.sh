@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs what VesselReformation needs to build and test on Debian 12 (bookworm), from Debian's packages.
+set -euo pipefail
+
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO=sudo; else
+    echo "install-dependencies.sh: run as root (or install sudo): apt-get needs it" >&2; exit 1
+  fi
+else
+  SUDO=
+fi
+
+packages=(
+  build-essential cmake ninja-build pkg-config python3
+  libinsighttoolkit5-dev libgdcm-tools            # ITK 5.2 (its CMake config wants the GDCM tools present)
+  libvtk9-dev                                     # VTK 9.1: polydata IO, FreeType text in figures
+  pocl-opencl-icd ocl-icd-opencl-dev opencl-clhpp-headers clinfo   # OpenCL 3.0 on the CPU through PoCL
+  libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+)
+
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}"
