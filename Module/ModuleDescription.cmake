@@ -1,5 +1,6 @@
-# The module description: the one source of truth for both command-line modules' XML (VesselReformation.xml.in,
-# BilateralDepthRelax.xml.in) and for vrModuleDescription.h, which platforms and widgets include.
+# The module description: the one source of truth for both command-line modules' XML
+# (Resources/VesselReformation.xml.in, Resources/BilateralDepthRelax.xml.in) and for vrModuleDescription.h, which
+# platforms and widgets include.
 # Plain text only: the values are pasted into XML, so no <, > or &.
 
 set(VR_MODULE_TITLE "Vessel Reformation")

@@ -4,6 +4,7 @@
 
 #include "vrCLIProgress.h"
 #include "vrImageIO.h"
+#include "vrModuleDescription.h"
 #include "vrReformationParameters.h"
 
 #include "itkMetaDataObject.h"
@@ -364,7 +365,12 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
     EXPECT_TRUE(Contains(acknowledgements, part)) << acknowledgements << " lacks " << part;
   }
   EXPECT_FALSE(Text(root->FindNestedElementWithName("description")).empty());
-  EXPECT_FALSE(Text(root->FindNestedElementWithName("contributor")).empty());
+  // One source: the description platforms include says the same.
+  EXPECT_EQ(Text(root->FindNestedElementWithName("category")), vr::ModuleDescription::Category);
+  EXPECT_EQ(Text(root->FindNestedElementWithName("version")), vr::ModuleDescription::Version);
+  EXPECT_EQ(Text(root->FindNestedElementWithName("contributor")), vr::ModuleDescription::Contributors);
+  EXPECT_EQ(acknowledgements, vr::ModuleDescription::Acknowledgements);
+  EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
 
   // Inside a parameter: name, longflag or index, label, description, default, (elements,) channel, constraints.
   const std::map<std::string, int> rank = { { "name", 0 },    { "longflag", 1 },    { "index", 1 },
@@ -514,6 +520,18 @@ TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)
 {
   ExpectFlagsAreExactlyTheXMLs(RelaxExecutable,
                                { "mask", "relaxation", "anisotropy", "iterations", "backend", "openclDevice" });
+}
+
+TEST(ModuleDescription, TitlesAreTheModulesAndHelpIsTheDescriptions)
+{
+  const auto reformation = ParseXML(XMLOf(ReformationExecutable));
+  const auto relax = ParseXML(XMLOf(RelaxExecutable));
+  EXPECT_EQ(Text(reformation->Root->FindNestedElementWithName("title")), "Vessel Reformation");
+  EXPECT_EQ(Text(reformation->Root->FindNestedElementWithName("title")), vr::ModuleDescription::Title);
+  EXPECT_EQ(Text(reformation->Root->FindNestedElementWithName("description")), vr::ModuleDescription::Help);
+  EXPECT_EQ(std::string(vr::ModuleDescription::Category), "Vascular");
+  // 3D Slicer keys modules by title: the relax module needs its own.
+  EXPECT_NE(Text(relax->Root->FindNestedElementWithName("title")), vr::ModuleDescription::Title);
 }
 
 TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
