@@ -147,12 +147,12 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   const auto &       size = results.View.GetSize();
   const auto &       times = results.Times;
   std::ostringstream summary;
-  summary << std::fixed << std::setprecision(1) << "VesselReformation: " << tree.GetNumberOfBranches() << " branches ("
-          << report.Format << ", " << vr::ToString(report.FileSpace) << "), view " << size[0] << " x " << size[1]
-          << " pixels of " << results.View.GetSpacing()[0] << " mm; times (ms): conversion " << 1e3 * times.Conversion
-          << ", depth " << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed
-          << ", " << parameters.Iterations << " iterations), resample " << 1e3 * times.Resample << ", surface "
-          << 1e3 * times.Surface;
+  summary << "VesselReformation: " << tree.GetNumberOfBranches() << " branches (" << report.Format << ", "
+          << vr::ToString(report.FileSpace) << "), view " << size[0] << " x " << size[1] << " pixels of "
+          << results.View.GetSpacing()[0] << " x " << results.View.GetSpacing()[1] << " mm; times (ms): " << std::fixed
+          << std::setprecision(1) << "conversion " << 1e3 * times.Conversion << ", depth " << 1e3 * times.Depth
+          << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", " << parameters.Iterations
+          << " iterations), resample " << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface;
   progress.Print(std::cout, summary.str());
 }
 } // namespace

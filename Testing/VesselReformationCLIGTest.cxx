@@ -861,6 +861,9 @@ TEST(VesselReformationModule, RealAortaCenterlinePixelsShowLumenAndFixedPixelsIg
       ++changed;
     }
   }
+  std::cout << "aorta: " << cpr->GetLargestPossibleRegion().GetSize() << " pixels, " << centerlinePixels
+            << " centerline pixels, darkest " << darkest << "; " << fixed << " fixed pixels with lumen fixing, "
+            << changed << " others changed by relaxation" << std::endl;
   EXPECT_GT(fixed, centerlinePixels) << "lumen fixing should fix more than the centerline";
   EXPECT_GT(changed, 0u) << "the relaxation changed no pixel";
 }
