@@ -18,6 +18,7 @@ namespace itk
 namespace
 {
 constexpr const char * KernelName = "RelaxIteration";
+constexpr unsigned int ProgressReports = 10;
 
 std::mutex &
 KernelSourceMutex()
@@ -300,10 +301,25 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       kernel.setArg(7, static_cast<cl_float>(this->GetRelaxation()));
       kernel.setArg(8, static_cast<cl_float>(this->GetAnisotropy()));
     }
+    // Progress, and a chance to abort, about ProgressReports times per update: the host waits for the queue once
+    // per chunk of iterations, never once per iteration.
     const unsigned int iterations = this->GetNumberOfIterations();
-    for (unsigned int iteration = 0; iteration < iterations; ++iteration)
+    const unsigned int chunk = std::max(1u, (iterations + ProgressReports - 1) / ProgressReports);
+    for (unsigned int iteration = 0; iteration < iterations;)
     {
-      state.Queue.enqueueNDRangeKernel(state.Kernels[iteration % 2], cl::NullRange, global, local);
+      for (const unsigned int end = std::min(iterations, iteration + chunk); iteration < end; ++iteration)
+      {
+        state.Queue.enqueueNDRangeKernel(state.Kernels[iteration % 2], cl::NullRange, global, local);
+      }
+      state.Queue.finish();
+      this->UpdateProgress(static_cast<float>(iteration) / static_cast<float>(iterations));
+      if (this->GetAbortGenerateData())
+      {
+        ProcessAborted aborted(__FILE__, __LINE__);
+        aborted.SetDescription("OpenCLBilateralDepthRelaxFilter aborted after " + std::to_string(iteration) + " of " +
+                               std::to_string(iterations) + " iterations");
+        throw aborted;
+      }
     }
     state.Queue.enqueueReadBufferRect(state.Depth[iterations % 2],
                                       CL_TRUE,

@@ -16,8 +16,9 @@ namespace itk
  * "Bilateral Depth Filtering for Enhanced Vessel Reformation", EuroVis 2014, Eq. 1 and 2), exactly as
  * BilateralDepthRelaxFilter documents it, with the kernel of OpenCL/BilateralDepthRelax.cl. One Update() uploads
  * the depth and the fixed mask once, runs the N Jacobi iterations on the device between two ping-pong buffers
- * (no host round trip), and downloads the result once. Arithmetic is in single precision; on the paper's depth
- * maps the result agrees with the CPU filter to within 1e-4 mm.
+ * (no host round trip), and downloads the result once. It reports progress, and honours AbortGenerateData,
+ * about ten times per update, waiting for the queue once per tenth of the iterations. Arithmetic is in single
+ * precision; on the paper's depth maps the result agrees with the CPU filter to within 1e-4 mm.
  *
  * Parameters are checked, the depth is checked to be finite and the input's metadata dictionary (the CPR view)
  * is passed on by the base class, exactly as on the CPU. Only GenerateData() differs (the ITK/RTK pattern of a

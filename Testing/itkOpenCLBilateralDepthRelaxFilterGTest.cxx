@@ -265,6 +265,40 @@ TEST(OpenCLBilateralDepthRelax, ZeroIterationsReturnsTheInput)
   EXPECT_EQ(vr::test::PixelsOf(after.GetPointer()), vr::test::PixelsOf(depth.GetPointer()));
 }
 
+TEST(OpenCLBilateralDepthRelax, ReportsProgressWhileIteratingAndCanBeAborted)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeRandomDepthImage(40, 30, 0.0f, 5.0f, 21);
+  auto       filter = OpenCLFilter::New();
+  filter->SetDepthInput(depth);
+  filter->SetNumberOfIterations(100);
+  OpenCLFilter *     observed = filter.GetPointer();
+  std::vector<float> progress;
+  bool               abortEarly = false;
+  filter->AddObserver(itk::ProgressEvent(),
+                      [&](const itk::EventObject &)
+                      {
+                        progress.push_back(observed->GetProgress());
+                        if (abortEarly && observed->GetProgress() >= 0.3f)
+                        {
+                          observed->AbortGenerateDataOn();
+                        }
+                      });
+
+  filter->Update();
+  ASSERT_FALSE(progress.empty());
+  EXPECT_FLOAT_EQ(progress.back(), 1.0f);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_GE(std::count_if(progress.begin(), progress.end(), [](float p) { return p > 0.0f && p < 1.0f; }), 5);
+
+  progress.clear();
+  abortEarly = true;
+  filter->Modified();
+  EXPECT_THROW(filter->Update(), itk::ProcessAborted);
+  ASSERT_FALSE(progress.empty());
+  EXPECT_LT(progress.back(), 1.0f);
+}
+
 // --- The output contract of the base class --------------------------------------------------------------------
 
 TEST(OpenCLBilateralDepthRelax, OutputCarriesTheViewAndTheGridOfTheInput)
