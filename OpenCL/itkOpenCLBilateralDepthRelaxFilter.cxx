@@ -67,7 +67,7 @@ ChooseKernelShape(const cl::Device & device)
   if ((device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) == 0 &&
       (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0)
   {
-    shape.VectorsPerItem = 4;
+    shape.VectorsPerItem = 8;
     shape.RowsPerItem = 16;
     shape.LocalWidth = 1;
     shape.LocalHeight = 4;
