@@ -147,6 +147,12 @@ OpenCLBilateralDepthRelaxFilter::SetKernelSourceForTesting(const std::string & s
 }
 
 std::string
+OpenCLBilateralDepthRelaxFilter::GetKernelSource()
+{
+  return CurrentKernelSource();
+}
+
+std::string
 OpenCLBilateralDepthRelaxFilter::GetDeviceLabel() const
 {
   return m_DeviceState ? m_DeviceState->Info.Label() : std::string();

@@ -65,6 +65,11 @@ public:
   std::string
   GetDeviceLabel() const;
 
+  /** The OpenCL C source the filter builds (after its #define lines): OpenCL/BilateralDepthRelax.cl as embedded at
+   * build time, or what SetKernelSourceForTesting() put in its place. */
+  static std::string
+  GetKernelSource();
+
   /** TEST HOOK ONLY: replaces the OpenCL source of every filter built afterwards (in this process) by \a source,
    * so a test can make the program build fail; an empty string restores the real kernel. Production code must
    * never call it. */

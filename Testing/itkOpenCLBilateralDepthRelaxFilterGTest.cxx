@@ -13,7 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <string>
 
 namespace
@@ -383,6 +385,21 @@ TEST(OpenCLBilateralDepthRelax, AFailedProgramBuildThrowsWithTheCompilersLog)
   }
   // With the real kernel back, a filter builds and runs again.
   EXPECT_NO_THROW(RelaxOnOpenCL(depth, nullptr, { 1.0, 0.5, 2 }));
+}
+
+// The build embeds the .cl file byte for byte (a raw string literal starting on its first line), so the compiler's
+// line numbers are those of the file. Needs no device.
+TEST(OpenCLBilateralDepthRelax, TheEmbeddedKernelIsTheClFileByteForByte)
+{
+  std::ifstream file(VR_OPENCL_KERNEL_FILE, std::ios::binary);
+  ASSERT_TRUE(file) << VR_OPENCL_KERNEL_FILE;
+  const std::string onDisk((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(OpenCLFilter::GetKernelSource(), onDisk);
+  {
+    const vr::test::ScopedKernelSource replaced("__kernel void RelaxIteration() {}\n");
+    EXPECT_EQ(OpenCLFilter::GetKernelSource(), "__kernel void RelaxIteration() {}\n");
+  }
+  EXPECT_EQ(OpenCLFilter::GetKernelSource(), onDisk);
 }
 
 TEST(OpenCLBilateralDepthRelax, ARequestForAMissingDeviceNamesTheDevicesThatExist)
