@@ -111,6 +111,38 @@ TEST(RelaxBackendWithOpenCL, OpenCLWithoutTheRequestedDeviceIsAnInputErrorListin
   }
 }
 
+// CTest runs this suite a second time with OCL_ICD_VENDORS naming an empty folder, so that the OpenCL ICD loader
+// finds no platform at all (RelaxBackendWithoutAnyOpenCLPlatform); elsewhere this test skips.
+TEST(RelaxBackendWithOpenCL, WithoutAnyOpenCLPlatformAutoFallsBackAndOpenCLFailsSayingSo)
+{
+  std::string problem;
+  if (!vr::ListOpenCLDevices(&problem).empty())
+  {
+    GTEST_SKIP() << "this machine has OpenCL devices; the CTest test RelaxBackendWithoutAnyOpenCLPlatform hides them";
+  }
+  EXPECT_FALSE(problem.empty());
+
+  std::string      notice;
+  vr::RelaxBackend chosen = vr::RelaxBackend::OpenCL;
+  const auto       filter = vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", notice, &chosen);
+  EXPECT_FALSE(IsOpenCL(filter));
+  EXPECT_EQ(chosen, vr::RelaxBackend::CPU);
+  EXPECT_NE(notice.find("relaxing on the CPU"), std::string::npos) << notice;
+  EXPECT_NE(notice.find(problem), std::string::npos) << notice;
+  ExpectItRelaxes(filter);
+
+  try
+  {
+    vr::CreateRelaxFilter(vr::RelaxBackend::OpenCL, "", notice);
+    FAIL() << "backend opencl was accepted without any OpenCL platform";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_NE(std::string(error.what()).find("no OpenCL device was found"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
+  }
+}
+
 TEST(RelaxBackendWithOpenCL, AKernelThatDoesNotBuildMakesAutoFallBackAndOpenCLFail)
 {
   VR_SKIP_WITHOUT_OPENCL_DEVICE();
