@@ -2,6 +2,11 @@
 
 #include "vrInputError.h"
 
+#ifdef VESSELREFORMATION_HAS_OPENCL
+#include "itkOpenCLBilateralDepthRelaxFilter.h"
+#include "vrOpenCLDevices.h"
+#endif
+
 #include <algorithm>
 #include <cctype>
 
@@ -42,22 +47,56 @@ ParseRelaxBackend(const std::string & text, const std::string & what)
 }
 
 RelaxFilterType::Pointer
-CreateRelaxFilter(RelaxBackend backend, const std::string & /*deviceRequest*/, std::string & notice,
-                  RelaxBackend * chosen)
+CreateRelaxFilter(RelaxBackend backend, const std::string & deviceRequest, std::string & notice, RelaxBackend * chosen)
 {
   notice.clear();
-  if (backend == RelaxBackend::OpenCL)
-  {
-    throw InputError("backend opencl: this build has no OpenCL support (configure with VR_USE_OPENCL=ON)");
-  }
-  if (backend == RelaxBackend::Auto)
-  {
-    notice = "backend auto: this build has no OpenCL support, relaxing on the CPU";
-  }
   if (chosen)
   {
     *chosen = RelaxBackend::CPU;
   }
+  if (backend == RelaxBackend::CPU)
+  {
+    return RelaxFilterType::New();
+  }
+  const std::string requested = backend == RelaxBackend::OpenCL ? "backend opencl" : "backend auto";
+
+#ifdef VESSELREFORMATION_HAS_OPENCL
+  // The same checks the filter's first Update() would make, done now so that auto can still fall back: is there a
+  // device (VR_OPENCL_DEVICE and deviceRequest as the filter reads them), and does the kernel build on it?
+  std::string why;
+  try
+  {
+    vr::FindOpenCLDevice(deviceRequest, "device request");
+    auto filter = itk::OpenCLBilateralDepthRelaxFilter::New();
+    filter->SetDeviceRequest(deviceRequest);
+    filter->PrepareDevice();
+    if (chosen)
+    {
+      *chosen = RelaxBackend::OpenCL;
+    }
+    return filter.GetPointer();
+  }
+  catch (const InputError & error)
+  {
+    why = error.what();
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    why = error.GetDescription();
+  }
+  if (backend == RelaxBackend::OpenCL)
+  {
+    throw InputError(requested + ": no usable OpenCL device: " + why);
+  }
+  notice = requested + ": OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
+#else
+  (void)deviceRequest;
+  if (backend == RelaxBackend::OpenCL)
+  {
+    throw InputError(requested + ": this build has no OpenCL support (configure with VR_USE_OPENCL=ON)");
+  }
+  notice = requested + ": this build has no OpenCL support, relaxing on the CPU";
+#endif
   return RelaxFilterType::New();
 }
 } // namespace vr

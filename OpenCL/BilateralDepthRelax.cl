@@ -1,0 +1,163 @@
+// One Jacobi iteration of the bilateral depth relaxation (DESIGN 3.5; Kretschmer et al., EuroVis 2014, Eq. 1-2),
+// the equation of BilateralDepthRelaxFilter::RelaxOnHost() in its difference form
+//   D'_p = D_p + w sum R (D_q - D_p) / ((1 - w)|Omega| + w sum R),   R(x) = exp(-a x^2),
+// R = 0 when a x^2 > WEIGHT_UNDERFLOW_EXPONENT, a zero denominator keeps D_p, fixed pixels keep their value.
+//
+// The host prepends these definitions:
+//   VECTOR_WIDTH               lanes per vector: 1, 2, 4, 8 or 16 (the device's preferred float width)
+//   VECTORS_PER_ITEM           vectors a work-item relaxes side by side in a row
+//   ROWS_PER_ITEM              rows a work-item relaxes one below the other
+//   LOCAL_WIDTH, LOCAL_HEIGHT  the work-group size
+//   WEIGHT_UNDERFLOW_EXPONENT  BilateralDepthRelaxFilter::WeightUnderflowExponent
+//
+// Layout: row y of a W-pixel image starts at y * pitch; pixel x lies at y * pitch + VECTOR_WIDTH + x. The pitch
+// holds a vector of padding before the row and at least one pixel after it, and the pixels of a row are padded to
+// whole blocks of VECTORS_PER_ITEM vectors, so every load and store is inside the buffer. Padding holds finite
+// values (the host fills it with 0) and never changes: lanes outside the image are kept like fixed pixels.
+//
+// Each edge weight is computed once and shared by the two pixels of the edge: a work-item walks its block row by
+// row, handing each row's down-edges on as the next row's up-edges, and vector by vector, handing each vector's
+// last right-edge on as the next vector's first left-edge. Image borders are edges of weight 0, so the hot path
+// has no branch.
+
+#define CONCATENATE_(a, b) a##b
+#define CONCATENATE(a, b) CONCATENATE_(a, b)
+
+#if VECTOR_WIDTH == 1
+typedef float RealVector;
+typedef int   IntVector;
+#  define LOAD_REALS(pointer) (*(pointer))
+#  define LOAD_BYTES_AS_INTS(pointer) ((int)*(pointer))
+#  define STORE_REALS(value, pointer) (*(pointer) = (value))
+#  define LANE_INDICES 0
+#  define LAST_LANE(vector) (vector)
+#  define SHIFT_IN_FROM_LEFT(previous, vector) (previous)
+#else
+typedef CONCATENATE(float, VECTOR_WIDTH) RealVector;
+typedef CONCATENATE(int, VECTOR_WIDTH) IntVector;
+typedef CONCATENATE(uint, VECTOR_WIDTH) UIntVector;
+#  define LOAD_REALS(pointer) CONCATENATE(vload, VECTOR_WIDTH)(0, (pointer))
+#  define LOAD_BYTES_AS_INTS(pointer) CONCATENATE(convert_int, VECTOR_WIDTH)(CONCATENATE(vload, VECTOR_WIDTH)(0, (pointer)))
+#  define STORE_REALS(value, pointer) CONCATENATE(vstore, VECTOR_WIDTH)((value), 0, (pointer))
+// Lane i of the result is lane i-1 of vector; lane 0 is the last lane of previous.
+#  define SHIFT_IN_FROM_LEFT(previous, vector) shuffle2((previous), (vector), SHIFT_MASK)
+#  if VECTOR_WIDTH == 2
+#    define LANE_INDICES ((IntVector)(0, 1))
+#    define SHIFT_MASK ((UIntVector)(1, 2))
+#    define LAST_LANE(vector) ((vector).s1)
+#  elif VECTOR_WIDTH == 4
+#    define LANE_INDICES ((IntVector)(0, 1, 2, 3))
+#    define SHIFT_MASK ((UIntVector)(3, 4, 5, 6))
+#    define LAST_LANE(vector) ((vector).s3)
+#  elif VECTOR_WIDTH == 8
+#    define LANE_INDICES ((IntVector)(0, 1, 2, 3, 4, 5, 6, 7))
+#    define SHIFT_MASK ((UIntVector)(7, 8, 9, 10, 11, 12, 13, 14))
+#    define LAST_LANE(vector) ((vector).s7)
+#  elif VECTOR_WIDTH == 16
+#    define LANE_INDICES ((IntVector)(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15))
+#    define SHIFT_MASK ((UIntVector)(15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30))
+#    define LAST_LANE(vector) ((vector).sf)
+#  else
+#    error "VECTOR_WIDTH must be 1, 2, 4, 8 or 16"
+#  endif
+#endif
+
+// R(d) = exp(-a d^2), exactly 0 once a d^2 passes the underflow exponent; `valid` is 0 for edges leaving the image.
+#define EDGE_WEIGHT(difference, valid)                                                                                \
+  select((RealVector)(0.0f), exp(-anisotropy * (difference) * (difference)),                                          \
+         (valid) & (anisotropy * (difference) * (difference) <= (RealVector)(WEIGHT_UNDERFLOW_EXPONENT)))
+
+__kernel __attribute__((reqd_work_group_size(LOCAL_WIDTH, LOCAL_HEIGHT, 1))) void
+RelaxIteration(__global const float * restrict current,
+               __global float * restrict       next,
+               __global const uchar * restrict fixedMask,
+               const int                       width,
+               const int                       height,
+               const int                       pitch,
+               const int                       blocksPerRow,
+               const float                     relaxation,
+               const float                     anisotropy)
+{
+  const int block = get_global_id(0);
+  const int firstRow = get_global_id(1) * ROWS_PER_ITEM;
+  if (block >= blocksPerRow || firstRow >= height)
+  {
+    return;
+  }
+  const int   firstColumn = block * VECTORS_PER_ITEM * VECTOR_WIDTH;
+  const int   lastRow = min(firstRow + ROWS_PER_ITEM, height);
+  const float selfWeight = 1.0f - relaxation;
+
+  // Up-edges, kept as the down-edges of the row above: weight and R (D_row - D_above).
+  RealVector upWeight[VECTORS_PER_ITEM];
+  RealVector upWeightedDifference[VECTORS_PER_ITEM];
+  {
+    const int aboveRow = max(firstRow - 1, 0);
+    const int upValid = firstRow > 0 ? -1 : 0;
+    for (int v = 0; v < VECTORS_PER_ITEM; ++v)
+    {
+      const int        k = VECTOR_WIDTH + firstColumn + v * VECTOR_WIDTH;
+      const RealVector fromAbove = LOAD_REALS(current + firstRow * pitch + k) - LOAD_REALS(current + aboveRow * pitch + k);
+      upWeight[v] = EDGE_WEIGHT(fromAbove, (IntVector)(upValid));
+      upWeightedDifference[v] = upWeight[v] * fromAbove;
+    }
+  }
+
+  for (int y = firstRow; y < lastRow; ++y)
+  {
+    const int   belowRow = min(y + 1, height - 1);
+    const int   downValid = y + 1 < height ? -1 : 0;
+    const float verticalNeighbours = (float)(y > 0) + (float)(y + 1 < height);
+
+    __global const float * row = current + y * pitch + VECTOR_WIDTH;
+    __global const float * below = current + belowRow * pitch + VECTOR_WIDTH;
+
+    // The left-edge of the block's first pixel, as if it were the right-edge of a vector before the block.
+    RealVector previousRightWeight;
+    RealVector previousRightWeightedDifference;
+    {
+      const float toLeft = row[firstColumn - 1] - row[firstColumn];
+      const float weight = (firstColumn > 0 && anisotropy * toLeft * toLeft <= WEIGHT_UNDERFLOW_EXPONENT)
+                             ? exp(-anisotropy * toLeft * toLeft)
+                             : 0.0f;
+      previousRightWeight = (RealVector)(weight);
+      previousRightWeightedDifference = (RealVector)(-weight * toLeft);
+    }
+
+    for (int v = 0; v < VECTORS_PER_ITEM; ++v)
+    {
+      const int        x0 = firstColumn + v * VECTOR_WIDTH;
+      const IntVector  x = (IntVector)(x0) + LANE_INDICES;
+      const RealVector dp = LOAD_REALS(row + x0);
+      const RealVector toRight = LOAD_REALS(row + x0 + 1) - dp;
+      const RealVector toBelow = LOAD_REALS(below + x0) - dp;
+
+      const RealVector rightWeight = EDGE_WEIGHT(toRight, x + 1 < (IntVector)(width));
+      const RealVector rightWeightedDifference = rightWeight * toRight;
+      const RealVector downWeight = EDGE_WEIGHT(toBelow, (IntVector)(downValid));
+      const RealVector downWeightedDifference = downWeight * toBelow;
+      // A left-edge is the right-edge of the pixel before, seen from the other side: same weight, opposite sign.
+      const RealVector leftWeight = SHIFT_IN_FROM_LEFT(previousRightWeight, rightWeight);
+      const RealVector leftWeightedDifference =
+        -SHIFT_IN_FROM_LEFT(previousRightWeightedDifference, rightWeightedDifference);
+
+      const RealVector neighbours = (RealVector)(verticalNeighbours) +
+                                    select((RealVector)(0.0f), (RealVector)(1.0f), x > (IntVector)(0)) +
+                                    select((RealVector)(0.0f), (RealVector)(1.0f), x + 1 < (IntVector)(width));
+      const RealVector weightSum = leftWeight + rightWeight + upWeight[v] + downWeight;
+      const RealVector weightedDifference =
+        leftWeightedDifference + rightWeightedDifference - upWeightedDifference[v] + downWeightedDifference;
+      const RealVector denominator = selfWeight * neighbours + relaxation * weightSum;
+      const RealVector relaxed = dp + relaxation * weightedDifference / denominator;
+
+      const IntVector keep = (LOAD_BYTES_AS_INTS(fixedMask + y * pitch + VECTOR_WIDTH + x0) != (IntVector)(0)) |
+                             (x >= (IntVector)(width)) | !(denominator > (RealVector)(0.0f));
+      STORE_REALS(select(relaxed, dp, keep), next + y * pitch + VECTOR_WIDTH + x0);
+
+      previousRightWeight = rightWeight;
+      previousRightWeightedDifference = rightWeightedDifference;
+      upWeight[v] = downWeight;
+      upWeightedDifference[v] = downWeightedDifference;
+    }
+  }
+}

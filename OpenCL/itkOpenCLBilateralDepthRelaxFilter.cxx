@@ -1,0 +1,376 @@
+#include "itkOpenCLBilateralDepthRelaxFilter.h"
+
+#include "vrBilateralDepthRelaxKernelSource.h"
+#include "vrInputError.h"
+#include "vrOpenCLDevices.h"
+#include "vrOpenCLRuntime.h"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <iomanip>
+#include <locale>
+#include <mutex>
+#include <sstream>
+
+namespace itk
+{
+namespace
+{
+constexpr const char * KernelName = "RelaxIteration";
+constexpr unsigned int ProgressReports = 10;
+
+std::mutex &
+KernelSourceMutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+std::string &
+KernelSourceForTesting()
+{
+  static std::string source;
+  return source;
+}
+
+std::string
+CurrentKernelSource()
+{
+  const std::lock_guard<std::mutex> lock(KernelSourceMutex());
+  return KernelSourceForTesting().empty() ? std::string(vr::opencl_sources::BilateralDepthRelax)
+                                          : KernelSourceForTesting();
+}
+
+/** How the kernel covers the image: each work-item relaxes VectorsPerItem vectors of VectorWidth lanes side by
+ * side, in RowsPerItem rows; work-groups are LocalWidth x LocalHeight work-items. */
+struct KernelShape
+{
+  int         VectorWidth{ 1 };
+  int         VectorsPerItem{ 1 };
+  int         RowsPerItem{ 1 };
+  std::size_t LocalWidth{ 1 };
+  std::size_t LocalHeight{ 1 };
+};
+
+// CPU devices get wide vectors and large blocks per work-item, which share most edge weights through registers;
+// GPUs get one pixel column per work-item, so that neighbouring work-items read neighbouring pixels.
+KernelShape
+ChooseKernelShape(const cl::Device & device)
+{
+  KernelShape   shape;
+  const cl_uint preferred = device.getInfo<CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT>();
+  while (shape.VectorWidth * 2 <= static_cast<int>(std::min<cl_uint>(preferred, 16)))
+  {
+    shape.VectorWidth *= 2;
+  }
+  if ((device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) == 0 &&
+      (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0)
+  {
+    shape.VectorsPerItem = 8;
+    shape.RowsPerItem = 16;
+    shape.LocalWidth = 1;
+    shape.LocalHeight = 4;
+  }
+  else
+  {
+    shape.VectorsPerItem = 1;
+    shape.RowsPerItem = 4;
+    shape.LocalWidth = 32;
+    shape.LocalHeight = 4;
+  }
+  const std::size_t              maximumGroup = device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
+  const std::vector<std::size_t> maximumItems = device.getInfo<CL_DEVICE_MAX_WORK_ITEM_SIZES>();
+  while (shape.LocalWidth * shape.LocalHeight > maximumGroup ||
+         (maximumItems.size() >= 2 && (shape.LocalWidth > maximumItems[0] || shape.LocalHeight > maximumItems[1])))
+  {
+    (shape.LocalWidth >= shape.LocalHeight ? shape.LocalWidth : shape.LocalHeight) /= 2;
+  }
+  shape.LocalWidth = std::max<std::size_t>(shape.LocalWidth, 1);
+  shape.LocalHeight = std::max<std::size_t>(shape.LocalHeight, 1);
+  return shape;
+}
+
+// The #define lines the kernel expects, then #line so that compiler messages count lines of the .cl file.
+std::string
+DefinitionsFor(const KernelShape & shape)
+{
+  std::ostringstream text;
+  text.imbue(std::locale::classic());
+  text << "#define VECTOR_WIDTH " << shape.VectorWidth << '\n'
+       << "#define VECTORS_PER_ITEM " << shape.VectorsPerItem << '\n'
+       << "#define ROWS_PER_ITEM " << shape.RowsPerItem << '\n'
+       << "#define LOCAL_WIDTH " << shape.LocalWidth << '\n'
+       << "#define LOCAL_HEIGHT " << shape.LocalHeight << '\n'
+       << "#define WEIGHT_UNDERFLOW_EXPONENT " << std::setprecision(17)
+       << OpenCLBilateralDepthRelaxFilter::WeightUnderflowExponent << "f\n"
+       << "#line 1\n";
+  return text.str();
+}
+
+std::size_t
+RoundUp(std::size_t value, std::size_t multiple)
+{
+  return (value + multiple - 1) / multiple * multiple;
+}
+} // namespace
+
+struct OpenCLBilateralDepthRelaxFilter::DeviceState
+{
+  vr::OpenCLDeviceInfo Info;
+  /** The source the program was built from (the test hook may change it). */
+  std::string      Source;
+  KernelShape      Shape;
+  cl::Device       Device;
+  cl::Context      Context;
+  cl::CommandQueue Queue;
+  cl::Program      Program;
+  /** Iteration k reads Depth[k % 2] and writes Depth[(k + 1) % 2]: Kernels[k % 2] has those arguments. */
+  std::array<cl::Kernel, 2> Kernels;
+
+  /** Buffers for images of Width x Height pixels, rows Pitch floats apart (see BilateralDepthRelax.cl). */
+  std::size_t               Width{ 0 };
+  std::size_t               Height{ 0 };
+  std::size_t               Pitch{ 0 };
+  std::array<cl::Buffer, 2> Depth;
+  cl::Buffer                Mask;
+};
+
+OpenCLBilateralDepthRelaxFilter::OpenCLBilateralDepthRelaxFilter() = default;
+OpenCLBilateralDepthRelaxFilter::~OpenCLBilateralDepthRelaxFilter() = default;
+
+void
+OpenCLBilateralDepthRelaxFilter::SetKernelSourceForTesting(const std::string & source)
+{
+  const std::lock_guard<std::mutex> lock(KernelSourceMutex());
+  KernelSourceForTesting() = source;
+}
+
+std::string
+OpenCLBilateralDepthRelaxFilter::GetKernelSource()
+{
+  return CurrentKernelSource();
+}
+
+std::string
+OpenCLBilateralDepthRelaxFilter::GetDeviceLabel() const
+{
+  return m_DeviceState ? m_DeviceState->Info.Label() : std::string();
+}
+
+void
+OpenCLBilateralDepthRelaxFilter::PrepareDevice()
+{
+  vr::OpenCLDeviceInfo chosen;
+  try
+  {
+    chosen = vr::FindOpenCLDevice(m_DeviceRequest, "DeviceRequest");
+  }
+  catch (const vr::InputError & error)
+  {
+    itkExceptionMacro(<< error.what());
+  }
+  const std::string source = CurrentKernelSource();
+  if (m_DeviceState && m_DeviceState->Info.PlatformIndex == chosen.PlatformIndex &&
+      m_DeviceState->Info.DeviceIndex == chosen.DeviceIndex && m_DeviceState->Info.DeviceName == chosen.DeviceName &&
+      m_DeviceState->Source == source)
+  {
+    return;
+  }
+
+  m_DeviceState.reset();
+  auto state = std::make_unique<DeviceState>();
+  state->Info = chosen;
+  state->Source = source;
+  try
+  {
+    state->Device = vr::GetOpenCLDevice(chosen);
+    state->Context = cl::Context(state->Device);
+    state->Queue = cl::CommandQueue(state->Context, state->Device);
+    state->Shape = ChooseKernelShape(state->Device);
+    state->Program = cl::Program(state->Context, DefinitionsFor(state->Shape) + source);
+    try
+    {
+      state->Program.build(std::vector<cl::Device>{ state->Device });
+    }
+    catch (const cl::Error & error)
+    {
+      if (error.err() != CL_BUILD_PROGRAM_FAILURE)
+      {
+        throw;
+      }
+      const std::string log = state->Program.getBuildInfo<CL_PROGRAM_BUILD_LOG>(state->Device);
+      itkExceptionMacro(<< "the OpenCL program " << vr::opencl_sources::BilateralDepthRelaxFileName
+                        << " failed to build for " << chosen.Label() << "; the compiler's log:\n"
+                        << log);
+    }
+    for (auto & kernel : state->Kernels)
+    {
+      kernel = cl::Kernel(state->Program, KernelName);
+    }
+  }
+  catch (const cl::Error & error)
+  {
+    itkExceptionMacro(<< "preparing OpenCL device " << chosen.Label() << ": " << vr::DescribeOpenCLError(error));
+  }
+  m_DeviceState = std::move(state);
+}
+
+void
+OpenCLBilateralDepthRelaxFilter::GenerateData()
+{
+  this->AllocateOutputs();
+  this->VerifyDepthIsFinite();
+  this->PrepareDevice();
+  this->RelaxOnDevice();
+}
+
+void
+OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
+{
+  const ImageType *     depth = this->GetInput();
+  const MaskImageType * mask = this->GetFixedMask();
+  ImageType *           output = this->GetOutput();
+  DeviceState &         state = *m_DeviceState;
+  const KernelShape &   shape = state.Shape;
+
+  const auto        size = depth->GetLargestPossibleRegion().GetSize();
+  const std::size_t width = size[0];
+  const std::size_t height = size[1];
+  const std::size_t vectorWidth = shape.VectorWidth;
+  const std::size_t blockWidth = vectorWidth * shape.VectorsPerItem;
+  const std::size_t pitch = vectorWidth + RoundUp(width, blockWidth) + vectorWidth;
+  // The kernel indexes pixels with int.
+  if (pitch * height > static_cast<std::size_t>(INT_MAX))
+  {
+    itkExceptionMacro(<< "the depth image of " << width << " x " << height
+                      << " pixels is too large for the OpenCL kernel (at most " << INT_MAX << " padded pixels)");
+  }
+  const std::size_t blocksPerRow = RoundUp(width, blockWidth) / blockWidth;
+  const std::size_t itemRows = RoundUp(height, shape.RowsPerItem) / shape.RowsPerItem;
+  const cl::NDRange global(RoundUp(blocksPerRow, shape.LocalWidth), RoundUp(itemRows, shape.LocalHeight));
+  const cl::NDRange local(shape.LocalWidth, shape.LocalHeight);
+
+  // The pixels of a row start after a vector of padding; padding stays 0 (finite) for ever.
+  const std::array<std::size_t, 3> depthOrigin{ vectorWidth * sizeof(float), 0, 0 };
+  const std::array<std::size_t, 3> maskOrigin{ vectorWidth, 0, 0 };
+  const std::array<std::size_t, 3> hostOrigin{ 0, 0, 0 };
+  const std::array<std::size_t, 3> depthRegion{ width * sizeof(float), height, 1 };
+  const std::array<std::size_t, 3> maskRegion{ width, height, 1 };
+
+  try
+  {
+    if (state.Width != width || state.Height != height || state.Pitch != pitch)
+    {
+      state.Width = state.Height = state.Pitch = 0;
+      for (auto & buffer : state.Depth)
+      {
+        buffer = cl::Buffer(state.Context, CL_MEM_READ_WRITE, pitch * height * sizeof(float));
+        state.Queue.enqueueFillBuffer(buffer, 0.0f, 0, pitch * height * sizeof(float));
+      }
+      state.Mask = cl::Buffer(state.Context, CL_MEM_READ_ONLY, pitch * height);
+      state.Width = width;
+      state.Height = height;
+      state.Pitch = pitch;
+    }
+
+    state.Queue.enqueueWriteBufferRect(state.Depth[0],
+                                       CL_FALSE,
+                                       depthOrigin,
+                                       hostOrigin,
+                                       depthRegion,
+                                       pitch * sizeof(float),
+                                       0,
+                                       width * sizeof(float),
+                                       0,
+                                       depth->GetBufferPointer());
+    if (mask)
+    {
+      state.Queue.enqueueWriteBufferRect(
+        state.Mask, CL_FALSE, maskOrigin, hostOrigin, maskRegion, pitch, 0, width, 0, mask->GetBufferPointer());
+    }
+    else
+    {
+      state.Queue.enqueueFillBuffer(state.Mask, static_cast<cl_uchar>(0), 0, pitch * height);
+    }
+
+    for (int parity = 0; parity < 2; ++parity)
+    {
+      cl::Kernel & kernel = state.Kernels[parity];
+      kernel.setArg(0, state.Depth[parity]);
+      kernel.setArg(1, state.Depth[1 - parity]);
+      kernel.setArg(2, state.Mask);
+      kernel.setArg(3, static_cast<cl_int>(width));
+      kernel.setArg(4, static_cast<cl_int>(height));
+      kernel.setArg(5, static_cast<cl_int>(pitch));
+      kernel.setArg(6, static_cast<cl_int>(blocksPerRow));
+      kernel.setArg(7, static_cast<cl_float>(this->GetRelaxation()));
+      kernel.setArg(8, static_cast<cl_float>(this->GetAnisotropy()));
+    }
+    // Progress, and a chance to abort, about ProgressReports times per update: the host waits for the queue once
+    // per chunk of iterations, never once per iteration.
+    const unsigned int iterations = this->GetNumberOfIterations();
+    const unsigned int chunk = std::max(1u, (iterations + ProgressReports - 1) / ProgressReports);
+    for (unsigned int iteration = 0; iteration < iterations;)
+    {
+      for (const unsigned int end = std::min(iterations, iteration + chunk); iteration < end; ++iteration)
+      {
+        state.Queue.enqueueNDRangeKernel(state.Kernels[iteration % 2], cl::NullRange, global, local);
+      }
+      state.Queue.finish();
+      this->UpdateProgress(static_cast<float>(iteration) / static_cast<float>(iterations));
+      if (this->GetAbortGenerateData())
+      {
+        ProcessAborted aborted(__FILE__, __LINE__);
+        aborted.SetDescription("OpenCLBilateralDepthRelaxFilter aborted after " + std::to_string(iteration) + " of " +
+                               std::to_string(iterations) + " iterations");
+        throw aborted;
+      }
+    }
+    state.Queue.enqueueReadBufferRect(state.Depth[iterations % 2],
+                                      CL_TRUE,
+                                      depthOrigin,
+                                      hostOrigin,
+                                      depthRegion,
+                                      pitch * sizeof(float),
+                                      0,
+                                      width * sizeof(float),
+                                      0,
+                                      output->GetBufferPointer());
+  }
+  catch (const cl::Error & error)
+  {
+    // The queue may still read the input or write the output: let it drain before the images can go away.
+    try
+    {
+      state.Queue.finish();
+    }
+    catch (const cl::Error &)
+    {
+    }
+    const std::string device = state.Info.Label();
+    m_DeviceState.reset(); // start afresh next time rather than trust a queue that failed
+    itkExceptionMacro(<< "relaxing on OpenCL device " << device << ": " << vr::DescribeOpenCLError(error));
+  }
+}
+
+void
+OpenCLBilateralDepthRelaxFilter::PrintSelf(std::ostream & os, Indent indent) const
+{
+  Superclass::PrintSelf(os, indent);
+  os << indent << "DeviceRequest: \"" << m_DeviceRequest << "\"" << std::endl;
+  if (m_DeviceState)
+  {
+    const KernelShape & shape = m_DeviceState->Shape;
+    os << indent << "Device: " << m_DeviceState->Info.Label() << std::endl;
+    os << indent << "Kernel shape: " << shape.VectorWidth << "-lane vectors, " << shape.VectorsPerItem << " vectors x "
+       << shape.RowsPerItem << " rows per work-item, work-groups of " << shape.LocalWidth << " x " << shape.LocalHeight
+       << std::endl;
+  }
+  else
+  {
+    os << indent << "Device: (not chosen yet)" << std::endl;
+  }
+}
+
+} // namespace itk

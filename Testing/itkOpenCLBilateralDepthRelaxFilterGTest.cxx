@@ -1,0 +1,508 @@
+// The OpenCL variant of BilateralDepthRelaxFilter against the CPU filter and against hand-worked answers
+// (DESIGN 3.5, issue 4). Tests that need a device are skipped, with the reason, when no OpenCL device exists.
+#include "itkBilateralDepthRelaxFilter.h"
+#include "itkCPRDepthImageFilter.h"
+#include "itkCPRViewGeometry.h"
+#include "itkOpenCLBilateralDepthRelaxFilter.h"
+#include "itkRunoffPhantomImageSource.h"
+#include "vrOpenCLDevices.h"
+#include "vrOpenCLTestSupport.h"
+#include "vrTestImages.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <string>
+
+namespace
+{
+using vr::test::DepthImage;
+using vr::test::MaskImage;
+using CPUFilter = itk::BilateralDepthRelaxFilter<DepthImage>;
+using OpenCLFilter = itk::OpenCLBilateralDepthRelaxFilter;
+
+constexpr double Tolerance = 1e-4; // mm, DESIGN 3.5
+
+struct Parameters
+{
+  double       Relaxation;
+  double       Anisotropy;
+  unsigned int Iterations;
+};
+
+template<typename TFilter>
+DepthImage::Pointer
+Relax(typename TFilter::Pointer filter, const DepthImage * depth, const MaskImage * mask, const Parameters & p)
+{
+  filter->SetDepthInput(depth);
+  if (mask)
+  {
+    filter->SetFixedMask(mask);
+  }
+  filter->SetRelaxation(p.Relaxation);
+  filter->SetAnisotropy(p.Anisotropy);
+  filter->SetNumberOfIterations(p.Iterations);
+  filter->Update();
+  DepthImage::Pointer result = filter->GetOutput();
+  result->DisconnectPipeline();
+  return result;
+}
+
+DepthImage::Pointer
+RelaxOnCPU(const DepthImage * depth, const MaskImage * mask, const Parameters & p)
+{
+  return Relax<CPUFilter>(CPUFilter::New(), depth, mask, p);
+}
+
+DepthImage::Pointer
+RelaxOnOpenCL(const DepthImage * depth, const MaskImage * mask, const Parameters & p)
+{
+  return Relax<OpenCLFilter>(OpenCLFilter::New(), depth, mask, p);
+}
+
+double
+MaxAbsoluteDifference(const DepthImage * a, const DepthImage * b)
+{
+  const auto va = vr::test::PixelsOf(a);
+  const auto vb = vr::test::PixelsOf(b);
+  EXPECT_EQ(va.size(), vb.size());
+  double largest = 0.0;
+  for (std::size_t k = 0; k < std::min(va.size(), vb.size()); ++k)
+  {
+    const double difference = std::fabs(static_cast<double>(va[k]) - vb[k]);
+    largest = std::isnan(difference) ? INFINITY : std::max(largest, difference);
+  }
+  return largest;
+}
+
+struct PhantomDepthMap
+{
+  DepthImage::Pointer Depth;
+  MaskImage::Pointer  Mask;
+};
+
+// The run-off phantom's mpCPR depth map at the issue's angle of 30 degrees (no volume needed).
+PhantomDepthMap
+MakePhantomDepthMap(unsigned int width, unsigned int height)
+{
+  auto phantom = itk::RunoffPhantomImageSource::New();
+  auto depthFilter = itk::CPRDepthImageFilter<DepthImage>::New();
+  depthFilter->SetCenterlineTree(phantom->GetCenterlineTree());
+  itk::CPRViewSpecification view;
+  view.AngleInDegrees = 30.0;
+  view.ImageSize = { { width, height } };
+  depthFilter->SetViewSpecification(view);
+  depthFilter->Update();
+  PhantomDepthMap map{ depthFilter->GetDepthOutput(), depthFilter->GetFixedMaskOutput() };
+  map.Depth->DisconnectPipeline();
+  map.Mask->DisconnectPipeline();
+  return map;
+}
+
+// --- Agreement with the CPU filter ----------------------------------------------------------------------------
+
+class PhantomAgreement : public ::testing::TestWithParam<std::tuple<unsigned int, unsigned int, double>>
+{
+};
+
+TEST_P(PhantomAgreement, OpenCLMatchesCPUWithin1e4mmAfter500Iterations)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto [width, height, anisotropy] = GetParam();
+  const PhantomDepthMap map = MakePhantomDepthMap(width, height);
+  const Parameters      parameters{ 1.0, anisotropy, 500 };
+
+  const auto cpu = RelaxOnCPU(map.Depth, map.Mask, parameters);
+  const auto opencl = RelaxOnOpenCL(map.Depth, map.Mask, parameters);
+
+  // Not vacuous: the relaxation moved the depth map by millimetres somewhere.
+  const double moved = MaxAbsoluteDifference(cpu, map.Depth);
+  const double disagreement = MaxAbsoluteDifference(cpu, opencl);
+  std::cout << "relaxation moved depths by up to " << moved << " mm; OpenCL and CPU differ by up to " << disagreement
+            << " mm" << std::endl;
+  EXPECT_GT(moved, 1.0);
+  EXPECT_LE(disagreement, Tolerance);
+}
+
+INSTANTIATE_TEST_SUITE_P(PaperSizes,
+                         PhantomAgreement,
+                         ::testing::Values(std::make_tuple(256u, 768u, 0.5),
+                                           std::make_tuple(256u, 768u, 0.0),
+                                           std::make_tuple(512u, 1024u, 0.5),
+                                           std::make_tuple(512u, 1024u, 0.0)),
+                         [](const auto & info)
+                         {
+                           return std::to_string(std::get<0>(info.param)) + "x" +
+                                  std::to_string(std::get<1>(info.param)) +
+                                  (std::get<2>(info.param) > 0.0 ? "_a0_5" : "_a0");
+                         });
+
+// Random maps stay in the regime of real depth maps, a d^2 <= 12.5 between neighbours: where every weight of a
+// pixel is tiny but not zero (a d^2 of 20-87 on all sides with w = 1), the equation itself is ill-conditioned and
+// one float rounding moves the result by up to 1e-2 mm, in any single-precision implementation.
+TEST(OpenCLBilateralDepthRelax, RandomDepthMapsWithRandomMasksMatchCPU)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const Parameters cases[] = { { 1.0, 0.5, 200 }, { 1.0, 0.0, 200 }, { 0.6, 0.5, 200 }, { 0.25, 2.0, 100 } };
+  unsigned int     seed = 1;
+  for (const auto & parameters : cases)
+  {
+    for (const double fixedFraction : { 0.0, 0.05, 0.5 })
+    {
+      ++seed;
+      const auto depth = vr::test::MakeRandomDepthImage(97, 61, 0.0f, 5.0f, seed);
+      const auto mask = vr::test::MakeRandomMaskImage(97, 61, fixedFraction, seed + 1000);
+      const auto cpu = RelaxOnCPU(depth, mask, parameters);
+      const auto opencl = RelaxOnOpenCL(depth, mask, parameters);
+      EXPECT_LE(MaxAbsoluteDifference(cpu, opencl), Tolerance)
+        << "w = " << parameters.Relaxation << ", a = " << parameters.Anisotropy << ", fixed " << fixedFraction;
+    }
+  }
+}
+
+TEST(OpenCLBilateralDepthRelax, SizesThatAreNoMultipleOfAnyWorkGroupMatchCPU)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const unsigned int sizes[][2] = { { 1, 1 }, { 1, 7 }, { 7, 1 }, { 3, 5 }, { 17, 33 }, { 511, 1023 } };
+  const Parameters   parameters{ 1.0, 0.5, 60 };
+  unsigned int       seed = 100;
+  for (const auto & size : sizes)
+  {
+    ++seed;
+    const auto depth = vr::test::MakeRandomDepthImage(size[0], size[1], -2.0f, 3.0f, seed);
+    const auto mask = vr::test::MakeRandomMaskImage(size[0], size[1], 0.1, seed + 1000);
+    const auto cpu = RelaxOnCPU(depth, mask, parameters);
+    const auto opencl = RelaxOnOpenCL(depth, mask, parameters);
+    EXPECT_LE(MaxAbsoluteDifference(cpu, opencl), Tolerance) << size[0] << " x " << size[1];
+  }
+}
+
+// --- Answers worked out by hand -------------------------------------------------------------------------------
+
+TEST(OpenCLBilateralDepthRelax, OneIterationOnThreePixelsMatchesHandCalculation)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeDepthImage(3, 1, { 0.0f, 1.0f, 3.0f });
+
+  // a = 0, w = 1: each pixel becomes the mean of its neighbours: (1, (0 + 3) / 2, 1).
+  const auto linear = vr::test::PixelsOf(RelaxOnOpenCL(depth, nullptr, { 1.0, 0.0, 1 }).GetPointer());
+  EXPECT_NEAR(linear[0], 1.0, 1e-6);
+  EXPECT_NEAR(linear[1], 1.5, 1e-6);
+  EXPECT_NEAR(linear[2], 1.0, 1e-6);
+
+  // a = ln 2, w = 1: R(1) = 1/2, R(2) = 1/16. The middle pixel: 1 + (1/2 (0 - 1) + 1/16 (3 - 1)) / (1/2 + 1/16)
+  // = 1 - 2/3. The ends have one neighbour each, so they take its value whatever its weight.
+  const auto bilateral = vr::test::PixelsOf(RelaxOnOpenCL(depth, nullptr, { 1.0, std::log(2.0), 1 }).GetPointer());
+  EXPECT_NEAR(bilateral[0], 1.0, 1e-6);
+  EXPECT_NEAR(bilateral[1], 1.0 / 3.0, 1e-6);
+  EXPECT_NEAR(bilateral[2], 1.0, 1e-6);
+
+  // w = 1/2, a = 0, middle pixel: ((1 - w) 2 D_p + w (0 + 3)) / ((1 - w) 2 + w 2) = (1 + 1.5) / 2.
+  const auto half = vr::test::PixelsOf(RelaxOnOpenCL(depth, nullptr, { 0.5, 0.0, 1 }).GetPointer());
+  EXPECT_NEAR(half[1], 1.25, 1e-6);
+}
+
+TEST(OpenCLBilateralDepthRelax, ZeroRelaxationLeavesTheImageUnchanged)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeRandomDepthImage(45, 29, -100.0f, 100.0f, 7);
+  const auto relaxed = RelaxOnOpenCL(depth, nullptr, { 0.0, 0.5, 25 });
+  EXPECT_EQ(vr::test::PixelsOf(relaxed.GetPointer()), vr::test::PixelsOf(depth.GetPointer()));
+}
+
+TEST(OpenCLBilateralDepthRelax, FixedPixelsNeverChange)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto  depth = vr::test::MakeRandomDepthImage(64, 40, 0.0f, 5.0f, 11);
+  const auto  mask = vr::test::MakeRandomMaskImage(64, 40, 0.2, 12);
+  const auto  before = vr::test::PixelsOf(depth.GetPointer());
+  const auto  fixed = vr::test::PixelsOf(mask.GetPointer());
+  const auto  after = vr::test::PixelsOf(RelaxOnOpenCL(depth, mask, { 1.0, 0.5, 100 }).GetPointer());
+  std::size_t fixedCount = 0;
+  std::size_t freeChanged = 0;
+  for (std::size_t k = 0; k < before.size(); ++k)
+  {
+    if (fixed[k])
+    {
+      ++fixedCount;
+      EXPECT_EQ(after[k], before[k]) << "fixed pixel " << k;
+    }
+    else
+    {
+      freeChanged += after[k] != before[k];
+    }
+  }
+  EXPECT_GT(fixedCount, 0u);
+  EXPECT_GT(freeChanged, before.size() / 2); // the free pixels did move
+}
+
+// A checkerboard of 0 and 1000 mm: with a = 0.5 every weight is exp(-500000), below float's range, and w = 1 leaves
+// nothing in the denominator. Every pixel must keep its value: no 0/0, no NaN.
+TEST(OpenCLBilateralDepthRelax, AllWeightsUnderflowingKeepsEveryValueAndGivesNoNaN)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  std::vector<float> values(13 * 9);
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    values[k] = ((k % 13) + (k / 13)) % 2 ? 1000.0f : 0.0f;
+  }
+  const auto depth = vr::test::MakeDepthImage(13, 9, values);
+  const auto after = vr::test::PixelsOf(RelaxOnOpenCL(depth, nullptr, { 1.0, 0.5, 10 }).GetPointer());
+  for (std::size_t k = 0; k < values.size(); ++k)
+  {
+    ASSERT_FALSE(std::isnan(after[k])) << "pixel " << k;
+    EXPECT_EQ(after[k], values[k]) << "pixel " << k;
+  }
+}
+
+TEST(OpenCLBilateralDepthRelax, ZeroIterationsReturnsTheInput)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeRandomDepthImage(20, 30, -5.0f, 5.0f, 3);
+  const auto after = RelaxOnOpenCL(depth, nullptr, { 1.0, 0.5, 0 });
+  EXPECT_EQ(vr::test::PixelsOf(after.GetPointer()), vr::test::PixelsOf(depth.GetPointer()));
+}
+
+TEST(OpenCLBilateralDepthRelax, ReportsProgressWhileIteratingAndCanBeAborted)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeRandomDepthImage(40, 30, 0.0f, 5.0f, 21);
+  auto       filter = OpenCLFilter::New();
+  filter->SetDepthInput(depth);
+  filter->SetNumberOfIterations(100);
+  OpenCLFilter *     observed = filter.GetPointer();
+  std::vector<float> progress;
+  bool               abortEarly = false;
+  filter->AddObserver(itk::ProgressEvent(),
+                      [&](const itk::EventObject &)
+                      {
+                        progress.push_back(observed->GetProgress());
+                        if (abortEarly && observed->GetProgress() >= 0.3f)
+                        {
+                          observed->AbortGenerateDataOn();
+                        }
+                      });
+
+  filter->Update();
+  ASSERT_FALSE(progress.empty());
+  EXPECT_FLOAT_EQ(progress.back(), 1.0f);
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_GE(std::count_if(progress.begin(), progress.end(), [](float p) { return p > 0.0f && p < 1.0f; }), 5);
+
+  progress.clear();
+  abortEarly = true;
+  filter->Modified();
+  EXPECT_THROW(filter->Update(), itk::ProcessAborted);
+  ASSERT_FALSE(progress.empty());
+  EXPECT_LT(progress.back(), 1.0f);
+}
+
+// --- The output contract of the base class --------------------------------------------------------------------
+
+TEST(OpenCLBilateralDepthRelax, OutputCarriesTheViewAndTheGridOfTheInput)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const PhantomDepthMap map = MakePhantomDepthMap(64, 96);
+  ASSERT_TRUE(itk::CPRViewGeometry::DictionaryHasView(map.Depth->GetMetaDataDictionary()));
+  const auto relaxed = RelaxOnOpenCL(map.Depth, map.Mask, { 1.0, 0.5, 5 });
+  ASSERT_TRUE(itk::CPRViewGeometry::DictionaryHasView(relaxed->GetMetaDataDictionary()));
+  EXPECT_EQ(itk::CPRViewGeometry::ReadFromDictionary(relaxed->GetMetaDataDictionary()),
+            itk::CPRViewGeometry::ReadFromDictionary(map.Depth->GetMetaDataDictionary()));
+  EXPECT_EQ(relaxed->GetSpacing(), map.Depth->GetSpacing());
+  EXPECT_EQ(relaxed->GetOrigin(), map.Depth->GetOrigin());
+  EXPECT_EQ(relaxed->GetLargestPossibleRegion(), map.Depth->GetLargestPossibleRegion());
+}
+
+TEST(OpenCLBilateralDepthRelax, BadParametersAndInputsAreRejectedLikeOnTheCPU)
+{
+  const auto depth = vr::test::MakeRandomDepthImage(8, 6, 0.0f, 1.0f, 5);
+
+  auto badRelaxation = OpenCLFilter::New();
+  badRelaxation->SetDepthInput(depth);
+  badRelaxation->SetRelaxation(1.5);
+  try
+  {
+    badRelaxation->Update();
+    FAIL() << "w = 1.5 was accepted";
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    EXPECT_NE(std::string(error.GetDescription()).find("Relaxation w = 1.5"), std::string::npos)
+      << error.GetDescription();
+  }
+
+  auto badMask = OpenCLFilter::New();
+  badMask->SetDepthInput(depth);
+  badMask->SetFixedMask(vr::test::MakeRandomMaskImage(7, 6, 0.5, 1));
+  EXPECT_THROW(badMask->Update(), itk::ExceptionObject);
+
+  // The non-finite check runs before any device is needed.
+  auto values = vr::test::PixelsOf(depth.GetPointer());
+  values[8 * 2 + 3] = std::nanf("");
+  auto notFinite = OpenCLFilter::New();
+  notFinite->SetDepthInput(vr::test::MakeDepthImage(8, 6, values));
+  try
+  {
+    notFinite->Update();
+    FAIL() << "a NaN depth was accepted";
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    EXPECT_NE(std::string(error.GetDescription()).find("[3, 2]"), std::string::npos) << error.GetDescription();
+  }
+}
+
+// --- Failures: program build and device choice ---------------------------------------------------------------
+
+TEST(OpenCLBilateralDepthRelax, AFailedProgramBuildThrowsWithTheCompilersLog)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeRandomDepthImage(8, 6, 0.0f, 1.0f, 5);
+  {
+    // The undeclared name is on line 3 of the injected source: the #define lines put before it must not shift
+    // the compiler's line numbers (clang-based compilers, PoCL, NVIDIA, AMD and Intel alike, print file:line:col).
+    const vr::test::ScopedKernelSource broken("// a broken kernel\n"
+                                              "__kernel void RelaxIteration(__global float * depth)\n"
+                                              "{ depth[0] = undeclared_name_in_kernel; }\n");
+    auto                               filter = OpenCLFilter::New();
+    filter->SetDepthInput(depth);
+    try
+    {
+      filter->Update();
+      FAIL() << "the broken kernel built";
+    }
+    catch (const itk::ExceptionObject & error)
+    {
+      const std::string message = error.GetDescription();
+      EXPECT_NE(message.find("failed to build"), std::string::npos) << message;
+      EXPECT_NE(message.find("undeclared_name_in_kernel"), std::string::npos) << message;
+      EXPECT_NE(message.find(":3:"), std::string::npos) << message;
+    }
+  }
+  // With the real kernel back, a filter builds and runs again.
+  EXPECT_NO_THROW(RelaxOnOpenCL(depth, nullptr, { 1.0, 0.5, 2 }));
+}
+
+// The build embeds the .cl file byte for byte (a raw string literal starting on its first line), so the compiler's
+// line numbers are those of the file. Needs no device.
+TEST(OpenCLBilateralDepthRelax, TheEmbeddedKernelIsTheClFileByteForByte)
+{
+  std::ifstream file(VR_OPENCL_KERNEL_FILE, std::ios::binary);
+  ASSERT_TRUE(file) << VR_OPENCL_KERNEL_FILE;
+  const std::string onDisk((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(OpenCLFilter::GetKernelSource(), onDisk);
+  {
+    const vr::test::ScopedKernelSource replaced("__kernel void RelaxIteration() {}\n");
+    EXPECT_EQ(OpenCLFilter::GetKernelSource(), "__kernel void RelaxIteration() {}\n");
+  }
+  EXPECT_EQ(OpenCLFilter::GetKernelSource(), onDisk);
+}
+
+TEST(OpenCLBilateralDepthRelax, ARequestForAMissingDeviceNamesTheDevicesThatExist)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto devices = vr::ListOpenCLDevices();
+  const auto depth = vr::test::MakeRandomDepthImage(8, 6, 0.0f, 1.0f, 5);
+  for (const std::string request : { "no-such-opencl-device", "99:0" })
+  {
+    auto filter = OpenCLFilter::New();
+    filter->SetDepthInput(depth);
+    filter->SetDeviceRequest(request);
+    try
+    {
+      filter->Update();
+      FAIL() << "device \"" << request << "\" was accepted";
+    }
+    catch (const itk::ExceptionObject & error)
+    {
+      const std::string message = error.GetDescription();
+      EXPECT_NE(message.find("\"" + request + "\""), std::string::npos) << message;
+      for (const auto & device : devices)
+      {
+        EXPECT_NE(message.find(device.Label()), std::string::npos) << message;
+      }
+    }
+  }
+}
+
+TEST(OpenCLBilateralDepthRelax, TheEnvironmentVariablePicksTheDeviceUnlessTheParameterDoes)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto                 depth = vr::test::MakeRandomDepthImage(8, 6, 0.0f, 1.0f, 5);
+  const vr::OpenCLDeviceInfo first = vr::ChooseOpenCLDevice(vr::ListOpenCLDevices(), "", "");
+  const std::string          byIndex = std::to_string(first.PlatformIndex) + ":" + std::to_string(first.DeviceIndex);
+
+  {
+    const vr::test::ScopedEnvironment environment(vr::OpenCLDeviceEnvironmentVariable, "no-such-opencl-device");
+    auto                              filter = OpenCLFilter::New();
+    filter->SetDepthInput(depth);
+    try
+    {
+      filter->Update();
+      FAIL() << "VR_OPENCL_DEVICE naming no device was accepted";
+    }
+    catch (const itk::ExceptionObject & error)
+    {
+      EXPECT_NE(std::string(error.GetDescription()).find("VR_OPENCL_DEVICE"), std::string::npos)
+        << error.GetDescription();
+    }
+
+    filter->SetDeviceRequest(byIndex); // the parameter wins over the environment
+    EXPECT_NO_THROW(filter->Update());
+    EXPECT_EQ(filter->GetDeviceLabel(), first.Label());
+  }
+  {
+    const vr::test::ScopedEnvironment environment(vr::OpenCLDeviceEnvironmentVariable, byIndex.c_str());
+    auto                              filter = OpenCLFilter::New();
+    filter->SetDepthInput(depth);
+    EXPECT_NO_THROW(filter->Update());
+    EXPECT_EQ(filter->GetDeviceLabel(), first.Label());
+  }
+}
+
+TEST(OpenCLBilateralDepthRelax, ReusedFilterFollowsNewParametersAndSizes)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  auto filter = OpenCLFilter::New();
+  for (const auto & [width, height, anisotropy] : { std::make_tuple(31u, 17u, 0.5),
+                                                    std::make_tuple(31u, 17u, 0.0),
+                                                    std::make_tuple(64u, 5u, 1.0),
+                                                    std::make_tuple(31u, 17u, 0.5) })
+  {
+    const auto       depth = vr::test::MakeRandomDepthImage(width, height, 0.0f, 4.0f, width + height);
+    const auto       mask = vr::test::MakeRandomMaskImage(width, height, 0.1, width * height);
+    const Parameters parameters{ 1.0, anisotropy, 40 };
+    filter->SetDepthInput(depth);
+    filter->SetFixedMask(mask);
+    filter->SetAnisotropy(anisotropy);
+    filter->SetRelaxation(1.0);
+    filter->SetNumberOfIterations(40);
+    filter->Update();
+    EXPECT_LE(MaxAbsoluteDifference(filter->GetOutput(), RelaxOnCPU(depth, mask, parameters)), Tolerance);
+  }
+}
+
+TEST(OpenCLBilateralDepthRelax, PrintSelfNamesTheDeviceAndEveryParameter)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  auto filter = OpenCLFilter::New();
+  filter->SetDeviceRequest(std::string());
+  filter->PrepareDevice();
+  std::ostringstream text;
+  filter->Print(text);
+  for (const char * expected : { "Relaxation (w)",
+                                 "Anisotropy (a, mm^-2)",
+                                 "NumberOfIterations (N)",
+                                 "DeviceRequest",
+                                 "Device: ",
+                                 "Kernel shape" })
+  {
+    EXPECT_NE(text.str().find(expected), std::string::npos) << expected;
+  }
+  EXPECT_NE(text.str().find(filter->GetDeviceLabel()), std::string::npos);
+}
+} // namespace
