@@ -1,0 +1,361 @@
+#include "vrReformationParameters.h"
+
+#include "vrInputError.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <limits>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
+namespace vr
+{
+namespace
+{
+std::string
+Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+std::string
+Trim(const std::string & text)
+{
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos)
+  {
+    return std::string();
+  }
+  const auto last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
+
+std::vector<std::string>
+SplitCommas(const std::string & text)
+{
+  std::vector<std::string> parts;
+  std::string              part;
+  std::istringstream       stream(text);
+  while (std::getline(stream, part, ','))
+  {
+    parts.push_back(Trim(part));
+  }
+  if (!text.empty() && text.back() == ',')
+  {
+    parts.emplace_back();
+  }
+  return parts;
+}
+
+/** The whole of \a text as a finite double, else false. */
+bool
+ToDouble(const std::string & text, double & value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char * end = nullptr;
+  value = std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size() && std::isfinite(value);
+}
+
+/** The whole of \a text as an integer, else false. */
+bool
+ToInteger(const std::string & text, long long & value)
+{
+  if (text.empty())
+  {
+    return false;
+  }
+  char * end = nullptr;
+  errno = 0;
+  value = std::strtoll(text.c_str(), &end, 10);
+  return end == text.c_str() + text.size() && errno == 0;
+}
+
+std::string
+Quoted(const std::string & text)
+{
+  return "\"" + text + "\"";
+}
+
+template<typename TValue>
+std::string
+Join(const TValue & values, unsigned int count)
+{
+  std::ostringstream stream;
+  for (unsigned int k = 0; k < count; ++k)
+  {
+    stream << (k ? "," : "") << values[k];
+  }
+  return stream.str();
+}
+} // namespace
+
+void
+ReformationParameters::Validate() const
+{
+  std::ostringstream problem;
+  if (!AutomaticUp && !(std::isfinite(Up[0]) && std::isfinite(Up[1]) && std::isfinite(Up[2]) && Up.GetNorm() > 1e-12))
+  {
+    problem << "up axis (--up) = " << Join(Up, 3) << ": must be a finite, non-zero LPS vector, S or auto";
+  }
+  else if (!std::isfinite(AngleInDegrees))
+  {
+    problem << "angle (--angle) = " << AngleInDegrees << " degrees: must be a finite number";
+  }
+  else if (HasCenter && !(std::isfinite(Center[0]) && std::isfinite(Center[1]) && std::isfinite(Center[2])))
+  {
+    problem << "view centre = " << Join(Center, 3) << " mm: must be finite";
+  }
+  else if ((ImageSize[0] == 0) != (ImageSize[1] == 0))
+  {
+    problem << "size (--size) = " << Join(ImageSize, 2) << ": W and H must both be >= 1 pixel (or both unset)";
+  }
+  else if (!(std::isfinite(PixelSpacing[0]) && std::isfinite(PixelSpacing[1]) && PixelSpacing[0] >= 0.0 &&
+             PixelSpacing[1] >= 0.0) ||
+           ((PixelSpacing[0] == 0.0) != (PixelSpacing[1] == 0.0)))
+  {
+    problem << "spacing (--spacing) = " << Join(PixelSpacing, 2) << " mm: both must be finite and > 0 (or both unset)";
+  }
+  else if (!(std::isfinite(Relaxation) && Relaxation >= 0.0 && Relaxation <= 1.0))
+  {
+    problem << "relaxation w (--relaxation) = " << Relaxation << ": must be in [0, 1]";
+  }
+  else if (!(std::isfinite(Anisotropy) && Anisotropy >= 0.0))
+  {
+    problem << "anisotropy a (--anisotropy) = " << Anisotropy << " mm^-2: must be finite and >= 0";
+  }
+  else if (Iterations < 0 || Iterations > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
+  {
+    problem << "iterations N (--iterations) = " << Iterations << ": must be a whole number >= 0";
+  }
+  else if (!(std::isfinite(SlabThickness) && SlabThickness >= 0.0))
+  {
+    problem << "slab thickness (--slabThickness) = " << SlabThickness << " mm: must be finite and >= 0";
+  }
+  else if (!(std::isfinite(Window) && Window >= 0.0))
+  {
+    problem << "window (--window) = " << Window << ": must be finite and >= 0 (0 = the CPR's full range)";
+  }
+  else if (!std::isfinite(Level))
+  {
+    problem << "level (--level) = " << Level << ": must be finite";
+  }
+  if (!problem.str().empty())
+  {
+    throw InputError(problem.str());
+  }
+}
+
+itk::CPRViewSpecification
+ReformationParameters::ToViewSpecification() const
+{
+  itk::CPRViewSpecification specification;
+  specification.AutomaticUp = AutomaticUp;
+  specification.Up = Up;
+  specification.AngleInDegrees = AngleInDegrees;
+  specification.HasCenter = HasCenter;
+  specification.Center = Center;
+  specification.ImageSize = ImageSize;
+  specification.PixelSpacing = PixelSpacing;
+  return specification;
+}
+
+UpAxisChoice
+ParseUpAxis(const std::string & text, const std::string & what)
+{
+  const std::string key = Lower(Trim(text));
+  UpAxisChoice      choice;
+  if (key == "auto")
+  {
+    choice.Automatic = true;
+    return choice;
+  }
+  // Patient directions in LPS: L = +x, P = +y, S = +z.
+  const struct
+  {
+    const char * Name;
+    double       X, Y, Z;
+  } named[] = { { "s", 0, 0, 1 },  { "i", 0, 0, -1 }, { "p", 0, 1, 0 },
+                { "a", 0, -1, 0 }, { "l", 1, 0, 0 },  { "r", -1, 0, 0 } };
+  for (const auto & direction : named)
+  {
+    if (key == direction.Name)
+    {
+      choice.Vector = itk::MakeVector3(direction.X, direction.Y, direction.Z);
+      return choice;
+    }
+  }
+  const auto parts = SplitCommas(key);
+  double     values[3];
+  bool       valid = parts.size() == 3;
+  for (std::size_t k = 0; valid && k < 3; ++k)
+  {
+    valid = ToDouble(parts[k], values[k]);
+  }
+  if (!valid || std::sqrt(values[0] * values[0] + values[1] * values[1] + values[2] * values[2]) < 1e-12)
+  {
+    throw InputError(what + " " + Quoted(text) +
+                     ": expected S, I, A, P, L, R, auto, or a non-zero LPS vector x,y,z such as 0,1,0");
+  }
+  choice.Vector = itk::MakeVector3(values[0], values[1], values[2]);
+  return choice;
+}
+
+itk::Size<2>
+ParseImageSize(const std::string & text, const std::string & what)
+{
+  const auto parts = SplitCommas(text);
+  long long  values[2];
+  bool       valid = parts.size() == 2;
+  for (std::size_t k = 0; valid && k < 2; ++k)
+  {
+    valid = ToInteger(parts[k], values[k]);
+  }
+  if (!valid)
+  {
+    throw InputError(what + " " + Quoted(text) + ": expected W,H in whole pixels, e.g. 512,1024");
+  }
+  if (values[0] < 1 || values[1] < 1)
+  {
+    throw InputError(what + " " + text + ": W and H must both be >= 1 pixel");
+  }
+  itk::Size<2> size;
+  size[0] = static_cast<itk::SizeValueType>(values[0]);
+  size[1] = static_cast<itk::SizeValueType>(values[1]);
+  return size;
+}
+
+itk::Vector<double, 2>
+ParsePixelSpacing(const std::string & text, const std::string & what)
+{
+  const auto parts = SplitCommas(text);
+  double     values[2];
+  bool       valid = parts.size() == 1 || parts.size() == 2;
+  for (std::size_t k = 0; valid && k < parts.size(); ++k)
+  {
+    valid = ToDouble(parts[k], values[k]);
+  }
+  if (!valid)
+  {
+    throw InputError(what + " " + Quoted(text) + ": expected a spacing in mm (s, or sx,sy), e.g. 0.5");
+  }
+  if (parts.size() == 1)
+  {
+    values[1] = values[0];
+  }
+  if (!(values[0] > 0.0 && values[1] > 0.0))
+  {
+    throw InputError(what + " " + text + ": the spacing must be > 0 mm");
+  }
+  return itk::MakeVector2(values[0], values[1]);
+}
+
+itk::CPRDepthMode
+ParseDepthMode(const std::string & text, const std::string & what)
+{
+  const std::string key = Lower(Trim(text));
+  if (key == "scanline")
+  {
+    return itk::CPRDepthMode::Scanline;
+  }
+  if (key == "nearest")
+  {
+    return itk::CPRDepthMode::Nearest;
+  }
+  throw InputError(what + " " + Quoted(text) + ": use scanline or nearest");
+}
+
+itk::CPRInterpolationMode
+ParseInterpolation(const std::string & text, const std::string & what)
+{
+  const std::string key = Lower(Trim(text));
+  if (key == "linear")
+  {
+    return itk::CPRInterpolationMode::Linear;
+  }
+  if (key == "nearest")
+  {
+    return itk::CPRInterpolationMode::Nearest;
+  }
+  if (key == "cubic")
+  {
+    return itk::CPRInterpolationMode::Cubic;
+  }
+  throw InputError(what + " " + Quoted(text) + ": use linear, nearest or cubic");
+}
+
+itk::CPRSlabMode
+ParseSlabMode(const std::string & text, const std::string & what)
+{
+  const std::string key = Lower(Trim(text));
+  if (key == "mip")
+  {
+    return itk::CPRSlabMode::MIP;
+  }
+  if (key == "minip")
+  {
+    return itk::CPRSlabMode::MinIP;
+  }
+  if (key == "mean")
+  {
+    return itk::CPRSlabMode::Mean;
+  }
+  throw InputError(what + " " + Quoted(text) + ": use mip, minip or mean");
+}
+
+bool
+ParseOnOff(const std::string & text, const std::string & what)
+{
+  const std::string key = Lower(Trim(text));
+  if (key == "on" || key == "true" || key == "yes" || key == "1")
+  {
+    return true;
+  }
+  if (key == "off" || key == "false" || key == "no" || key == "0")
+  {
+    return false;
+  }
+  throw InputError(what + " " + Quoted(text) + ": use on or off");
+}
+
+const char *
+ToString(itk::CPRDepthMode mode)
+{
+  return mode == itk::CPRDepthMode::Nearest ? "nearest" : "scanline";
+}
+
+const char *
+ToString(itk::CPRInterpolationMode mode)
+{
+  switch (mode)
+  {
+    case itk::CPRInterpolationMode::Nearest:
+      return "nearest";
+    case itk::CPRInterpolationMode::Cubic:
+      return "cubic";
+    default:
+      return "linear";
+  }
+}
+
+const char *
+ToString(itk::CPRSlabMode mode)
+{
+  switch (mode)
+  {
+    case itk::CPRSlabMode::MinIP:
+      return "minip";
+    case itk::CPRSlabMode::Mean:
+      return "mean";
+    default:
+      return "mip";
+  }
+}
+} // namespace vr

@@ -1,0 +1,122 @@
+#ifndef vrReformationParameters_h
+#define vrReformationParameters_h
+
+#include "itkCPRDepthAssignment.h"
+#include "itkCPRResampleImageFilter.h"
+#include "itkCPRViewGeometry.h"
+#include "vrRelaxBackend.h"
+
+#include <string>
+
+namespace vr
+{
+/** \class ReformationParameters
+ * \brief Every setting of a vessel reformation in one object (3D Slicer's parameter node): the view, the depth
+ * mode, the relaxation, the backend, the lumen fixing, the sampling and the display window.
+ *
+ * Geometry is in LPS millimetres, like the command line's --up and the views stored in the outputs. Zero sizes
+ * and spacings mean "fit the centerline tree" (DESIGN 3.2). Validate() names the parameter, its command-line
+ * flag and the bad value. The module logic compares the parameters of successive runs to recompute only what a
+ * change invalidates (DESIGN 3.7).
+ *
+ * \sa VesselReformationLogic
+ */
+struct ReformationParameters
+{
+  using VectorType = itk::Vector<double, 3>;
+  using PointType = itk::Point<double, 3>;
+
+  /** Take the volume axis along which the tree extends most as the rotation axis (--up auto). */
+  bool AutomaticUp{ false };
+  /** The rotation axis in LPS when AutomaticUp is off; default superior (--up S). */
+  VectorType Up{ itk::MakeVector3(0.0, 0.0, 1.0) };
+  /** Rotation angle theta about up, in degrees (--angle). */
+  double AngleInDegrees{ 0.0 };
+  /** View centre C in LPS mm; without one, the centre of the tree's bounding box. */
+  bool      HasCenter{ false };
+  PointType Center{};
+  /** Image size W x H in pixels (--size); 0 x 0 fits the tree. */
+  itk::Size<2> ImageSize{ { 0, 0 } };
+  /** Pixel spacing sx, sy in mm (--spacing); 0 x 0 takes the default (the volume's smallest spacing, or what
+   * fits the tree into ImageSize). */
+  itk::Vector<double, 2> PixelSpacing{ itk::MakeVector2(0.0, 0.0) };
+
+  /** Scanline (mpCPR) or Nearest depth assignment (--mode). */
+  itk::CPRDepthMode Mode{ itk::CPRDepthMode::Scanline };
+  /** Fix the lumen (pixels within the owner's radius) as well as the centerline pixels (--fixLumen on|off). */
+  bool FixLumen{ true };
+
+  /** Relaxation w in [0, 1] (--relaxation). */
+  double Relaxation{ 1.0 };
+  /** Anisotropy a >= 0, in mm^-2 (--anisotropy). */
+  double Anisotropy{ 0.5 };
+  /** Jacobi iterations N >= 0 (--iterations); signed so that a negative request is reported, not wrapped. */
+  long long Iterations{ 500 };
+  /** Where the relaxation runs (--backend) and which OpenCL device is asked for (--openclDevice, "" = any). */
+  RelaxBackend Backend{ RelaxBackend::Auto };
+  std::string  OpenCLDevice;
+
+  /** How the volume is sampled on the cut surface (--interpolation). */
+  itk::CPRInterpolationMode Interpolation{ itk::CPRInterpolationMode::Linear };
+  /** Slab thickness T >= 0 along the view direction, in mm (--slabThickness); 0 samples the surface alone. */
+  double SlabThickness{ 0.0 };
+  /** How a slab's samples combine (--slabMode). */
+  itk::CPRSlabMode SlabMode{ itk::CPRSlabMode::MIP };
+
+  /** Display window width (>= 0; 0 = the CPR's full range) and level, in the volume's intensity unit (--window,
+   * --level). Changing them recomputes nothing. */
+  double Window{ 0.0 };
+  double Level{ 0.0 };
+
+  /** Checks every parameter; throws vr::InputError naming the first invalid one, its flag and its value. */
+  void
+  Validate() const;
+
+  /** \return the view part as itk::CPRDepthImageFilter takes it (default margin). */
+  itk::CPRViewSpecification
+  ToViewSpecification() const;
+};
+
+/** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto". */
+struct UpAxisChoice
+{
+  bool                   Automatic{ false };
+  itk::Vector<double, 3> Vector{ itk::MakeVector3(0.0, 0.0, 1.0) };
+};
+
+/** Parsers for the text forms of the parameters (command line, presets).
+ * \param text the value as written.
+ * \param what how the caller names it in messages, e.g. "--up".
+ * \return the value; each throws vr::InputError naming \a what and \a text when the text is not a valid value. */
+UpAxisChoice
+ParseUpAxis(const std::string & text, const std::string & what);
+/** "W,H" in pixels, both >= 1. */
+itk::Size<2>
+ParseImageSize(const std::string & text, const std::string & what);
+/** "s" (both axes) or "sx,sy" in mm, finite and > 0. */
+itk::Vector<double, 2>
+ParsePixelSpacing(const std::string & text, const std::string & what);
+/** "scanline" or "nearest". */
+itk::CPRDepthMode
+ParseDepthMode(const std::string & text, const std::string & what);
+/** "linear", "nearest" or "cubic". */
+itk::CPRInterpolationMode
+ParseInterpolation(const std::string & text, const std::string & what);
+/** "mip", "minip" or "mean". */
+itk::CPRSlabMode
+ParseSlabMode(const std::string & text, const std::string & what);
+/** "on"/"off" (also "true"/"false", "yes"/"no", "1"/"0"). */
+bool
+ParseOnOff(const std::string & text, const std::string & what);
+
+/** \param mode a mode.
+ * \return its text form: "scanline", "linear", "mip", ... */
+const char *
+ToString(itk::CPRDepthMode mode);
+const char *
+ToString(itk::CPRInterpolationMode mode);
+const char *
+ToString(itk::CPRSlabMode mode);
+} // namespace vr
+
+#endif

@@ -1,0 +1,81 @@
+// The BilateralDepthRelax command-line module: the relaxation stage alone, depth map [+ mask] -> relaxed depth.
+
+#include "vrCLIModuleRunner.h"
+#include "vrImageIO.h"
+#include "vrInputError.h"
+#include "vrModuleExport.h"
+#include "vrStagedOutputs.h"
+#include "vrVesselReformationLogic.h"
+
+#include <iostream>
+#include <sstream>
+
+extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
+
+namespace
+{
+void
+RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & progress)
+{
+  vr::ReformationParameters parameters;
+  parameters.Relaxation = arguments.Double("relaxation");
+  parameters.Anisotropy = arguments.Double("anisotropy");
+  parameters.Iterations = arguments.Integer("iterations");
+  parameters.Backend = vr::ParseRelaxBackend(arguments.String("backend"), "--backend");
+  parameters.OpenCLDevice = arguments.String("openclDevice");
+  parameters.Validate();
+
+  vr::StagedOutputs staged;
+  const std::size_t output = staged.Add(arguments.String("outputDepth"), arguments.Spelling("outputDepth"));
+
+  const std::string           depthPath = arguments.String("inputDepth");
+  vr::DepthImageType::Pointer depth = vr::ReadDepthImage(depthPath);
+  vr::MaskImageType::Pointer  mask;
+  if (arguments.Given("mask"))
+  {
+    const std::string maskPath = arguments.String("mask");
+    mask = vr::ReadMaskImage(maskPath);
+    const auto depthSize = depth->GetLargestPossibleRegion().GetSize();
+    const auto maskSize = mask->GetLargestPossibleRegion().GetSize();
+    if (depthSize != maskSize)
+    {
+      std::ostringstream message;
+      message << "--mask " << maskPath << ": " << maskSize[0] << " x " << maskSize[1] << " pixels, but the depth map "
+              << depthPath << " has " << depthSize[0] << " x " << depthSize[1];
+      throw vr::InputError(message.str());
+    }
+  }
+
+  std::vector<std::string> warnings;
+  const auto               relaxed = vr::VesselReformationLogic::RelaxDepthImage(
+    depth,
+    mask,
+    parameters,
+    [&progress](double fraction, const std::string & stage)
+    {
+      if (progress.AbortRequested())
+      {
+        throw vr::InputError("cancelled by the caller");
+      }
+      progress.Update(fraction, stage);
+    },
+    warnings);
+  for (const auto & warning : warnings)
+  {
+    progress.Print(std::cerr, "warning: " + warning);
+  }
+  staged.Write(output, [&relaxed](const std::string & path) { vr::WriteImage2D(relaxed.GetPointer(), path); });
+  staged.CommitAll();
+}
+} // namespace
+
+extern "C" VR_MODULE_EXPORT int
+ModuleEntryPoint(int argc, char * argv[])
+{
+  return vr::RunCLIModule(argc,
+                          argv,
+                          XMLModuleDescription,
+                          "BilateralDepthRelax",
+                          "Bilateral relaxation of a CPR depth map",
+                          RunBilateralDepthRelax);
+}

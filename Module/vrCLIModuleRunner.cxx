@@ -1,0 +1,70 @@
+#include "vrCLIModuleRunner.h"
+
+#include "vrInputError.h"
+
+#include "itkMacro.h"
+
+#include <iostream>
+#include <new>
+#include <unistd.h>
+
+namespace vr
+{
+int
+RunCLIModule(int                   argc,
+             char *                argv[],
+             const char *          xml,
+             const std::string &   name,
+             const std::string &   comment,
+             const CLIModuleBody & body)
+{
+  int status = 1;
+  try
+  {
+    const CLIModuleDescription description = CLIModuleDescription::FromXML(xml);
+    const CLIArguments         arguments = CLIArguments::Parse(description, argc, argv);
+    if (arguments.XMLRequested)
+    {
+      std::cout << xml;
+      status = 0;
+    }
+    else if (arguments.HelpRequested)
+    {
+      std::cout << CLIArguments::Usage(description, name);
+      status = 0;
+    }
+    else
+    {
+      auto *      information = static_cast<vrModuleProcessInformation *>(arguments.ProcessInformation);
+      CLIProgress progress(
+        name, comment, information, std::cout, information == nullptr && ::isatty(STDOUT_FILENO) == 1);
+      progress.Start();
+      body(arguments, progress);
+      progress.End();
+      status = 0;
+    }
+  }
+  catch (const InputError & error)
+  {
+    std::cerr << name << ": error: " << error.what() << std::endl;
+  }
+  catch (const std::bad_alloc &)
+  {
+    std::cerr << name << ": error: out of memory" << std::endl;
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    std::cerr << name << ": error: " << error.GetDescription() << std::endl;
+  }
+  catch (const std::exception & error)
+  {
+    std::cerr << name << ": error: " << error.what() << std::endl;
+  }
+  catch (...)
+  {
+    std::cerr << name << ": error: unexpected failure" << std::endl;
+  }
+  std::cout.flush();
+  return status;
+}
+} // namespace vr

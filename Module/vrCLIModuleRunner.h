@@ -1,0 +1,37 @@
+#ifndef vrCLIModuleRunner_h
+#define vrCLIModuleRunner_h
+
+#include "vrCLIArguments.h"
+#include "vrCLIProgress.h"
+
+#include <functional>
+#include <string>
+
+namespace vr
+{
+/** The work of a command-line module: reads its arguments, runs, writes its outputs; throws on failure. */
+using CLIModuleBody = std::function<void(const CLIArguments & arguments, CLIProgress & progress)>;
+
+/** Runs a command-line module the same way from its executable and from its shared library's ModuleEntryPoint:
+ * --xml prints \a xml, --help the usage, otherwise the arguments are checked against the XML, progress is
+ * reported (see CLIProgress) and \a body runs.
+ *
+ * Every failure (vr::InputError from bad input, and anything unexpected) is caught and printed on stderr as
+ * "<name>: error: <message>"; nothing escapes, so a host process loading the library survives.
+ *
+ * \param argc, argv the command line (argv[0] the program or, in-process, the module).
+ * \param xml the module's Slicer Execution Model description (its XMLModuleDescription).
+ * \param name the module's name, for messages and filter-name.
+ * \param comment what it does, for filter-comment.
+ * \param body the module's work.
+ * \return 0 on success, 1 on any error. */
+int
+RunCLIModule(int                   argc,
+             char *                argv[],
+             const char *          xml,
+             const std::string &   name,
+             const std::string &   comment,
+             const CLIModuleBody & body);
+} // namespace vr
+
+#endif

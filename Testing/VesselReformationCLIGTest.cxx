@@ -1,0 +1,1141 @@
+// The command-line modules as 3D Slicer and a shell use them: the built executables and shared libraries are run
+// (their paths come from CMake), their XML is parsed, their outputs read back, and every bad input of issue 3 is
+// tried.
+
+#include "vrCLIProgress.h"
+#include "vrImageIO.h"
+#include "vrModuleDescription.h"
+#include "vrReformationParameters.h"
+
+#include "itkMetaDataObject.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkNew.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char ** environ;
+
+namespace
+{
+namespace fs = std::filesystem;
+
+const std::string ReformationExecutable = VR_REFORMATION_EXE;
+const std::string ReformationLibrary = VR_REFORMATION_LIB;
+const std::string RelaxExecutable = VR_RELAX_EXE;
+const std::string RelaxLibrary = VR_RELAX_LIB;
+const fs::path    DataFolder = fs::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
+
+/** The SlicerExecutionModel ModuleProcessInformation layout, written here from Slicer's header independently of
+ * the module's own copy, so that a layout mismatch fails. */
+struct SlicerProcessInformation
+{
+  unsigned char Abort;
+  float         Progress;
+  float         StageProgress;
+  char          ProgressMessage[1024];
+  void (*ProgressCallbackFunction)(void *);
+  void * ProgressCallbackClientData;
+  double ElapsedTime;
+};
+
+struct RunResult
+{
+  int         ExitCode{ -1 };
+  bool        Crashed{ false };
+  std::string Out;
+  std::string Err;
+};
+
+std::string
+ReadText(const fs::path & path)
+{
+  std::ifstream      file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void
+WriteText(const fs::path & path, const std::string & text)
+{
+  std::ofstream file(path, std::ios::binary);
+  file << text;
+}
+
+/** A fresh folder for one test, under the build tree. */
+fs::path
+TestFolder()
+{
+  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path folder = fs::path(VR_TEST_OUTPUT_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+/** Runs \a arguments[0] with the rest as its arguments; stdout and stderr are captured through files in a folder of
+ * their own, so that tests can check which files appear beside the outputs. */
+RunResult
+RunProgram(const std::vector<std::string> & arguments)
+{
+  static int     counter = 0;
+  const fs::path capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
+  fs::create_directories(capture);
+  const fs::path out = capture / ("out-" + std::to_string(::getpid()) + "-" + std::to_string(counter) + ".txt");
+  const fs::path err = capture / ("err-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".txt");
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<char *> argv;
+  for (const auto & argument : arguments)
+  {
+    argv.push_back(const_cast<char *>(argument.c_str()));
+  }
+  argv.push_back(nullptr);
+  pid_t     pid = 0;
+  RunResult result;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0)
+  {
+    ADD_FAILURE() << "could not start " << arguments[0];
+    return result;
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  result.Crashed = WIFSIGNALED(status);
+  result.ExitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.Out = ReadText(out);
+  result.Err = ReadText(err);
+  fs::remove(out);
+  fs::remove(err);
+  return result;
+}
+
+template<typename TSymbol>
+TSymbol
+LoadSymbol(const std::string & library, const char * name)
+{
+  void * handle = dlopen(library.c_str(), RTLD_NOW | RTLD_LOCAL);
+  EXPECT_NE(handle, nullptr) << dlerror();
+  if (handle == nullptr)
+  {
+    return nullptr;
+  }
+  return reinterpret_cast<TSymbol>(dlsym(handle, name));
+}
+
+using EntryPoint = int (*)(int, char **);
+
+/** Calls a shared library's ModuleEntryPoint in this process, as 3D Slicer does, capturing stdout and stderr. */
+RunResult
+RunInProcess(const std::string & library, const std::vector<std::string> & arguments)
+{
+  RunResult  result;
+  EntryPoint entry = LoadSymbol<EntryPoint>(library, "ModuleEntryPoint");
+  if (entry == nullptr)
+  {
+    ADD_FAILURE() << library << " has no ModuleEntryPoint";
+    return result;
+  }
+  const fs::path capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
+  fs::create_directories(capture);
+  const fs::path           out = capture / ("in-process-out-" + std::to_string(::getpid()) + ".txt");
+  const fs::path           err = capture / ("in-process-err-" + std::to_string(::getpid()) + ".txt");
+  std::vector<std::string> copies = arguments;
+  std::vector<char *>      argv;
+  for (auto & argument : copies)
+  {
+    argv.push_back(argument.data());
+  }
+  argv.push_back(nullptr);
+
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const int savedOut = dup(STDOUT_FILENO);
+  const int savedErr = dup(STDERR_FILENO);
+  const int outFile = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int errFile = open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  dup2(outFile, STDOUT_FILENO);
+  dup2(errFile, STDERR_FILENO);
+  result.ExitCode = entry(static_cast<int>(copies.size()), argv.data());
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  dup2(savedOut, STDOUT_FILENO);
+  dup2(savedErr, STDERR_FILENO);
+  close(outFile);
+  close(errFile);
+  close(savedOut);
+  close(savedErr);
+  result.Out = ReadText(out);
+  result.Err = ReadText(err);
+  return result;
+}
+
+bool
+Contains(const std::string & text, const std::string & part)
+{
+  return text.find(part) != std::string::npos;
+}
+
+/** The files of a folder, by name. */
+std::set<std::string>
+FilesIn(const fs::path & folder)
+{
+  std::set<std::string> names;
+  for (const auto & entry : fs::directory_iterator(folder))
+  {
+    names.insert(entry.path().filename().string());
+  }
+  return names;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The XML description.
+
+struct ParsedXML
+{
+  vtkNew<vtkXMLDataParser> Parser;
+  vtkXMLDataElement *      Root{ nullptr };
+};
+
+/** Parses with VTK's expat-based parser, which rejects XML that is not well-formed. */
+std::unique_ptr<ParsedXML>
+ParseXML(const std::string & xml)
+{
+  auto               parsed = std::make_unique<ParsedXML>();
+  std::istringstream stream(xml);
+  parsed->Parser->SetStream(&stream);
+  parsed->Parser->SetIgnoreCharacterData(0);
+  if (!parsed->Parser->Parse())
+  {
+    return nullptr;
+  }
+  parsed->Root = parsed->Parser->GetRootElement();
+  return parsed;
+}
+
+std::string
+Text(vtkXMLDataElement * element)
+{
+  const char * data = element ? element->GetCharacterData() : nullptr;
+  std::string  text = data ? data : "";
+  const auto   first = text.find_first_not_of(" \t\r\n");
+  return first == std::string::npos ? std::string() : text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+}
+
+struct XMLParameter
+{
+  std::string              Tag;
+  std::string              Name;
+  std::string              LongFlag;
+  std::string              Index;
+  std::string              Default;
+  bool                     HasDefault{ false };
+  std::string              Channel;
+  std::vector<std::string> Elements;
+  std::vector<std::string> ChildOrder;
+};
+
+std::vector<XMLParameter>
+ParametersOf(vtkXMLDataElement * root)
+{
+  std::vector<XMLParameter> parameters;
+  for (int g = 0; g < root->GetNumberOfNestedElements(); ++g)
+  {
+    vtkXMLDataElement * group = root->GetNestedElement(g);
+    if (std::string(group->GetName()) != "parameters")
+    {
+      continue;
+    }
+    for (int p = 0; p < group->GetNumberOfNestedElements(); ++p)
+    {
+      vtkXMLDataElement * element = group->GetNestedElement(p);
+      const std::string   tag = element->GetName();
+      if (tag == "label" || tag == "description")
+      {
+        continue;
+      }
+      XMLParameter parameter;
+      parameter.Tag = tag;
+      for (int c = 0; c < element->GetNumberOfNestedElements(); ++c)
+      {
+        vtkXMLDataElement * child = element->GetNestedElement(c);
+        const std::string   name = child->GetName();
+        parameter.ChildOrder.push_back(name);
+        if (name == "name")
+        {
+          parameter.Name = Text(child);
+        }
+        else if (name == "longflag")
+        {
+          parameter.LongFlag = Text(child);
+        }
+        else if (name == "index")
+        {
+          parameter.Index = Text(child);
+        }
+        else if (name == "default")
+        {
+          parameter.Default = Text(child);
+          parameter.HasDefault = true;
+        }
+        else if (name == "channel")
+        {
+          parameter.Channel = Text(child);
+        }
+        else if (name == "element")
+        {
+          parameter.Elements.push_back(Text(child));
+        }
+      }
+      parameters.push_back(parameter);
+    }
+  }
+  return parameters;
+}
+
+std::string
+XMLOf(const std::string & executable)
+{
+  const RunResult result = RunProgram({ executable, "--xml" });
+  EXPECT_EQ(result.ExitCode, 0) << result.Err;
+  return result.Out;
+}
+
+class ModuleXMLTest : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
+{
+  const std::string xml = XMLOf(GetParam());
+  ASSERT_EQ(xml.compare(0, 5, "<?xml"), 0) << "3D Slicer only accepts a description that starts with <?xml";
+  const auto parsed = ParseXML(xml);
+  ASSERT_NE(parsed, nullptr) << "not well-formed:\n" << xml;
+  vtkXMLDataElement * root = parsed->Root;
+  EXPECT_STREQ(root->GetName(), "executable");
+
+  const std::vector<std::string> header = { "category",          "title",   "description", "version",
+                                            "documentation-url", "license", "contributor", "acknowledgements" };
+  ASSERT_GT(root->GetNumberOfNestedElements(), static_cast<int>(header.size()));
+  for (std::size_t k = 0; k < header.size(); ++k)
+  {
+    EXPECT_EQ(root->GetNestedElement(static_cast<int>(k))->GetName(), header[k]) << "element " << k;
+  }
+  for (int k = static_cast<int>(header.size()); k < root->GetNumberOfNestedElements(); ++k)
+  {
+    EXPECT_STREQ(root->GetNestedElement(k)->GetName(), "parameters") << "element " << k;
+  }
+  EXPECT_EQ(Text(root->FindNestedElementWithName("category")), "Vascular");
+  const std::string acknowledgements = Text(root->FindNestedElementWithName("acknowledgements"));
+  for (const char * part : { "Kretschmer",
+                             "Preim",
+                             "Stamminger",
+                             "Bilateral Depth Filtering for Enhanced Vessel "
+                             "Reformation",
+                             "EuroVis",
+                             "2014",
+                             "short paper" })
+  {
+    EXPECT_TRUE(Contains(acknowledgements, part)) << acknowledgements << " lacks " << part;
+  }
+  EXPECT_FALSE(Text(root->FindNestedElementWithName("description")).empty());
+  // One source: the description platforms include says the same.
+  EXPECT_EQ(Text(root->FindNestedElementWithName("category")), vr::ModuleDescription::Category);
+  EXPECT_EQ(Text(root->FindNestedElementWithName("version")), vr::ModuleDescription::Version);
+  EXPECT_EQ(Text(root->FindNestedElementWithName("contributor")), vr::ModuleDescription::Contributors);
+  EXPECT_EQ(acknowledgements, vr::ModuleDescription::Acknowledgements);
+  EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
+
+  // Inside a parameter: name, longflag or index, label, description, default, (elements,) channel, constraints.
+  const std::map<std::string, int> rank = { { "name", 0 },    { "longflag", 1 },    { "index", 1 },
+                                            { "label", 2 },   { "description", 3 }, { "default", 4 },
+                                            { "element", 5 }, { "channel", 6 },     { "constraints", 7 } };
+  std::set<std::string>            names;
+  for (const auto & parameter : ParametersOf(root))
+  {
+    EXPECT_TRUE(names.insert(parameter.Name).second) << "two parameters named " << parameter.Name;
+    EXPECT_NE(parameter.LongFlag.empty(), parameter.Index.empty()) << parameter.Name << ": longflag or index";
+    int previous = -1;
+    for (const auto & child : parameter.ChildOrder)
+    {
+      ASSERT_TRUE(rank.count(child)) << parameter.Name << " has an unexpected <" << child << ">";
+      EXPECT_GE(rank.at(child), previous) << parameter.Name << ": <" << child << "> out of order";
+      previous = rank.at(child);
+    }
+    const bool isFile = parameter.Tag == "image" || parameter.Tag == "file" || parameter.Tag == "geometry";
+    EXPECT_EQ(isFile, !parameter.Channel.empty()) << parameter.Name << ": files and only files have a channel";
+    if (parameter.Tag == "string-enumeration")
+    {
+      EXPECT_FALSE(parameter.Elements.empty()) << parameter.Name;
+      EXPECT_NE(std::find(parameter.Elements.begin(), parameter.Elements.end(), parameter.Default),
+                parameter.Elements.end())
+        << parameter.Name << ": the default is not one of the elements";
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(BothModules,
+                         ModuleXMLTest,
+                         ::testing::Values(ReformationExecutable, RelaxExecutable),
+                         [](const ::testing::TestParamInfo<std::string> & info)
+                         { return fs::path(info.param).filename().string(); });
+
+/** The long flags of an XML description. */
+std::set<std::string>
+FlagsOfXML(const std::string & xml)
+{
+  const auto            parsed = ParseXML(xml);
+  std::set<std::string> flags;
+  for (const auto & parameter : ParametersOf(parsed->Root))
+  {
+    if (!parameter.LongFlag.empty())
+    {
+      flags.insert(parameter.LongFlag);
+    }
+  }
+  return flags;
+}
+
+/** A value of the right kind for a flag of this tag. */
+std::string
+SampleValue(const XMLParameter & parameter)
+{
+  if (!parameter.Elements.empty())
+  {
+    return parameter.Elements.back();
+  }
+  if (parameter.Tag == "integer" || parameter.Tag == "float")
+  {
+    return "1";
+  }
+  if (parameter.Tag == "integer-vector" || parameter.Tag == "float-vector")
+  {
+    return "8,8";
+  }
+  return "some-file.nrrd";
+}
+
+void
+ExpectFlagsAreExactlyTheXMLs(const std::string & executable, const std::set<std::string> & expectedFlags)
+{
+  const std::string xml = XMLOf(executable);
+  const auto        xmlFlags = FlagsOfXML(xml);
+  EXPECT_EQ(xmlFlags, expectedFlags);
+
+  // The usage lists exactly the XML's flags and the three every Slicer module takes.
+  const RunResult help = RunProgram({ executable, "--help" });
+  ASSERT_EQ(help.ExitCode, 0) << help.Err;
+  std::set<std::string> helpFlags;
+  const std::regex      flagAtLineStart("(^|\\n)  --([A-Za-z]+)");
+  for (auto it = std::sregex_iterator(help.Out.begin(), help.Out.end(), flagAtLineStart); it != std::sregex_iterator();
+       ++it)
+  {
+    helpFlags.insert((*it)[2]);
+  }
+  std::set<std::string> withReserved = xmlFlags;
+  withReserved.insert({ "xml", "help", "processinformationaddress" });
+  EXPECT_EQ(helpFlags, withReserved) << help.Out;
+
+  // The parser accepts each XML flag (it then misses the positional arguments), and nothing else.
+  const auto parsed = ParseXML(xml);
+  for (const auto & parameter : ParametersOf(parsed->Root))
+  {
+    if (parameter.LongFlag.empty())
+    {
+      continue;
+    }
+    const RunResult result = RunProgram({ executable, "--" + parameter.LongFlag, SampleValue(parameter) });
+    EXPECT_NE(result.ExitCode, 0);
+    EXPECT_FALSE(Contains(result.Err, "unknown flag")) << parameter.LongFlag << ": " << result.Err;
+    EXPECT_TRUE(Contains(result.Err, "missing the first argument")) << parameter.LongFlag << ": " << result.Err;
+  }
+  for (const std::string flag : { "--bogus", "--Angle", "--output", "--fixlumen", "--outputcpr", "--mask2" })
+  {
+    if (xmlFlags.count(flag.substr(2)))
+    {
+      continue;
+    }
+    const RunResult result = RunProgram({ executable, flag, "1" });
+    EXPECT_EQ(result.ExitCode, 1) << flag;
+    EXPECT_TRUE(Contains(result.Err, "unknown flag " + flag)) << flag << ": " << result.Err;
+  }
+}
+
+TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
+{
+  ExpectFlagsAreExactlyTheXMLs(ReformationExecutable,
+                               { "angle",
+                                 "up",
+                                 "mode",
+                                 "size",
+                                 "spacing",
+                                 "relaxation",
+                                 "anisotropy",
+                                 "iterations",
+                                 "fixLumen",
+                                 "backend",
+                                 "openclDevice",
+                                 "interpolation",
+                                 "slabThickness",
+                                 "slabMode",
+                                 "centerlineSpace",
+                                 "outputDepth",
+                                 "outputRelaxedDepth",
+                                 "outputMask",
+                                 "outputLabels",
+                                 "outputUnfilteredCPR",
+                                 "outputSurface",
+                                 "outputPNG",
+                                 "window",
+                                 "level" });
+}
+
+TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)
+{
+  ExpectFlagsAreExactlyTheXMLs(RelaxExecutable,
+                               { "mask", "relaxation", "anisotropy", "iterations", "backend", "openclDevice" });
+}
+
+TEST(ModuleDescription, TitlesAreTheModulesAndHelpIsTheDescriptions)
+{
+  const auto reformation = ParseXML(XMLOf(ReformationExecutable));
+  const auto relax = ParseXML(XMLOf(RelaxExecutable));
+  EXPECT_EQ(Text(reformation->Root->FindNestedElementWithName("title")), "Vessel Reformation");
+  EXPECT_EQ(Text(reformation->Root->FindNestedElementWithName("title")), vr::ModuleDescription::Title);
+  EXPECT_EQ(Text(reformation->Root->FindNestedElementWithName("description")), vr::ModuleDescription::Help);
+  EXPECT_EQ(std::string(vr::ModuleDescription::Category), "Vascular");
+  // 3D Slicer keys modules by title: the relax module needs its own.
+  EXPECT_NE(Text(relax->Root->FindNestedElementWithName("title")), vr::ModuleDescription::Title);
+}
+
+TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
+{
+  const auto                          parsed = ParseXML(XMLOf(ReformationExecutable));
+  std::map<std::string, XMLParameter> byName;
+  for (const auto & parameter : ParametersOf(parsed->Root))
+  {
+    byName[parameter.Name] = parameter;
+  }
+  EXPECT_EQ(byName["inputVolume"].Index, "0");
+  EXPECT_EQ(byName["inputCenterlines"].Index, "1");
+  EXPECT_EQ(byName["outputCPR"].Index, "2");
+  EXPECT_EQ(byName["outputCPR"].Channel, "output");
+  // DESIGN: w = 1, a = 0.5 mm^-2, 500 iterations, scanline, linear; and the parameter object agrees.
+  const vr::ReformationParameters defaults;
+  EXPECT_EQ(std::stod(byName["relaxation"].Default), 1.0);
+  EXPECT_EQ(std::stod(byName["anisotropy"].Default), 0.5);
+  EXPECT_EQ(byName["iterations"].Default, "500");
+  EXPECT_EQ(byName["mode"].Default, "scanline");
+  EXPECT_EQ(byName["interpolation"].Default, "linear");
+  EXPECT_EQ(byName["fixLumen"].Default, "on");
+  EXPECT_EQ(byName["up"].Default, "S");
+  EXPECT_EQ(defaults.Relaxation, 1.0);
+  EXPECT_EQ(defaults.Anisotropy, 0.5);
+  EXPECT_EQ(defaults.Iterations, 500);
+  EXPECT_EQ(defaults.Mode, itk::CPRDepthMode::Scanline);
+  EXPECT_EQ(defaults.Interpolation, itk::CPRInterpolationMode::Linear);
+  EXPECT_TRUE(defaults.FixLumen);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The shared libraries.
+
+/** A small depth map with a CPR-like step and a fixed mask, written through the module's own writer. */
+void
+WriteSmallDepthAndMask(const fs::path & depthPath, const fs::path & maskPath)
+{
+  auto                                 depth = vr::DepthImageType::New();
+  auto                                 mask = vr::MaskImageType::New();
+  const vr::DepthImageType::RegionType region({ { 0, 0 } }, { { 24, 16 } });
+  depth->SetRegions(region);
+  depth->Allocate();
+  mask->SetRegions(region);
+  mask->Allocate();
+  for (unsigned int k = 0; k < 24 * 16; ++k)
+  {
+    const unsigned int column = k % 24;
+    depth->GetBufferPointer()[k] = column < 12 ? 2.0f : 5.0f + 0.1f * static_cast<float>(k / 24);
+    mask->GetBufferPointer()[k] = column == 3 || column == 20 ? 1 : 0;
+  }
+  vr::WriteImage2D(depth.GetPointer(), depthPath.string());
+  vr::WriteImage2D(mask.GetPointer(), maskPath.string());
+}
+
+TEST(SharedLibraries, ExposeBothSymbolsAndTheExecutablesXML)
+{
+  for (const auto & [library, executable] :
+       { std::make_pair(ReformationLibrary, ReformationExecutable), std::make_pair(RelaxLibrary, RelaxExecutable) })
+  {
+    const char * xml = LoadSymbol<const char *>(library, "XMLModuleDescription");
+    ASSERT_NE(xml, nullptr) << library;
+    EXPECT_NE(LoadSymbol<EntryPoint>(library, "ModuleEntryPoint"), nullptr) << library;
+    EXPECT_EQ(std::string(xml), XMLOf(executable)) << library;
+  }
+}
+
+TEST(SharedLibraries, RelaxEntryPointWritesWhatTheExecutableWrites)
+{
+  const fs::path folder = TestFolder();
+  WriteSmallDepthAndMask(folder / "depth.nrrd", folder / "mask.nrrd");
+  const std::vector<std::string> flags = {
+    "--mask", (folder / "mask.nrrd").string(), "--iterations", "40", "--anisotropy", "0.25", "--backend", "cpu"
+  };
+  std::vector<std::string> byExecutable = { RelaxExecutable };
+  byExecutable.insert(byExecutable.end(), flags.begin(), flags.end());
+  byExecutable.push_back((folder / "depth.nrrd").string());
+  byExecutable.push_back((folder / "by-executable.nrrd").string());
+  std::vector<std::string> byLibrary = { "BilateralDepthRelax" };
+  byLibrary.insert(byLibrary.end(), flags.begin(), flags.end());
+  byLibrary.push_back((folder / "depth.nrrd").string());
+  byLibrary.push_back((folder / "by-library.nrrd").string());
+
+  const RunResult executable = RunProgram(byExecutable);
+  const RunResult library = RunInProcess(RelaxLibrary, byLibrary);
+  ASSERT_EQ(executable.ExitCode, 0) << executable.Err;
+  ASSERT_EQ(library.ExitCode, 0) << library.Err;
+  EXPECT_EQ(ReadText(folder / "by-executable.nrrd"), ReadText(folder / "by-library.nrrd"));
+  EXPECT_TRUE(Contains(library.Out, "<filter-end>")) << library.Out;
+}
+
+TEST(SharedLibraries, ReformationEntryPointWritesWhatTheExecutableWrites)
+{
+  const fs::path folder = TestFolder();
+  const auto     arguments = [&](const std::string & program, const std::string & prefix)
+  {
+    return std::vector<std::string>{ program,
+                                     "--up",
+                                     "auto",
+                                     "--iterations",
+                                     "50",
+                                     "--backend",
+                                     "cpu",
+                                     "--outputRelaxedDepth",
+                                     (folder / (prefix + "-relaxed.nrrd")).string(),
+                                     "--outputSurface",
+                                     (folder / (prefix + "-surface.vtp")).string(),
+                                     (DataFolder / "aorta.mha").string(),
+                                     (DataFolder / "aorta-centerline.vtp").string(),
+                                     (folder / (prefix + "-cpr.nrrd")).string() };
+  };
+  const RunResult executable = RunProgram(arguments(ReformationExecutable, "exe"));
+  const RunResult library = RunInProcess(ReformationLibrary, arguments("VesselReformation", "lib"));
+  ASSERT_EQ(executable.ExitCode, 0) << executable.Err;
+  ASSERT_EQ(library.ExitCode, 0) << library.Err;
+  for (const char * suffix : { "-cpr.nrrd", "-relaxed.nrrd", "-surface.vtp" })
+  {
+    const std::string fromExecutable = ReadText(folder / (std::string("exe") + suffix));
+    EXPECT_FALSE(fromExecutable.empty()) << suffix;
+    EXPECT_EQ(fromExecutable, ReadText(folder / (std::string("lib") + suffix))) << suffix;
+  }
+}
+
+TEST(SharedLibraries, ReportProgressThroughSlicersStructureAndHonourAbort)
+{
+  const fs::path folder = TestFolder();
+  WriteSmallDepthAndMask(folder / "depth.nrrd", folder / "mask.nrrd");
+
+  SlicerProcessInformation information{};
+  int                      calls = 0;
+  information.ProgressCallbackClientData = &calls;
+  information.ProgressCallbackFunction = [](void * data) { ++*static_cast<int *>(data); };
+  char address[64];
+  std::snprintf(address, sizeof(address), "%p", static_cast<void *>(&information));
+
+  const RunResult run = RunInProcess(RelaxLibrary,
+                                     { "BilateralDepthRelax",
+                                       "--processinformationaddress",
+                                       address,
+                                       "--iterations",
+                                       "100",
+                                       "--backend",
+                                       "cpu",
+                                       (folder / "depth.nrrd").string(),
+                                       (folder / "out.nrrd").string() });
+  ASSERT_EQ(run.ExitCode, 0) << run.Err;
+  EXPECT_EQ(information.Progress, 1.0f);
+  EXPECT_GT(calls, 10);
+  EXPECT_GE(information.ElapsedTime, 0.0);
+  EXPECT_FALSE(Contains(run.Out, "<filter-progress>")) << "in-process progress goes to the structure, not stdout";
+  EXPECT_TRUE(fs::exists(folder / "out.nrrd"));
+
+  information.Abort = 1;
+  const RunResult aborted = RunInProcess(RelaxLibrary,
+                                         { "BilateralDepthRelax",
+                                           "--processinformationaddress",
+                                           address,
+                                           "--iterations",
+                                           "100",
+                                           "--backend",
+                                           "cpu",
+                                           (folder / "depth.nrrd").string(),
+                                           (folder / "aborted.nrrd").string() });
+  EXPECT_EQ(aborted.ExitCode, 1);
+  EXPECT_TRUE(Contains(aborted.Err, "cancelled")) << aborted.Err;
+  EXPECT_FALSE(fs::exists(folder / "aborted.nrrd"));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// What the modules compute.
+
+TEST(BilateralDepthRelaxModule, RelaxesByEquationOneAndHoldsTheMask)
+{
+  const fs::path folder = TestFolder();
+  // [0, 10, 0] with w = 1, a = 0, one iteration: each pixel becomes the mean of its neighbours, [10, 0, 10].
+  auto depth = vr::DepthImageType::New();
+  depth->SetRegions(vr::DepthImageType::RegionType({ { 0, 0 } }, { { 3, 1 } }));
+  depth->Allocate();
+  depth->GetBufferPointer()[0] = 0.0f;
+  depth->GetBufferPointer()[1] = 10.0f;
+  depth->GetBufferPointer()[2] = 0.0f;
+  itk::EncapsulateMetaData<std::string>(depth->GetMetaDataDictionary(), "CPR_Note", "kept");
+  vr::WriteImage2D(depth.GetPointer(), (folder / "depth.nrrd").string());
+  const RunResult free = RunProgram({ RelaxExecutable,
+                                      "--relaxation",
+                                      "1",
+                                      "--anisotropy",
+                                      "0",
+                                      "--iterations",
+                                      "1",
+                                      "--backend",
+                                      "cpu",
+                                      (folder / "depth.nrrd").string(),
+                                      (folder / "free.nrrd").string() });
+  ASSERT_EQ(free.ExitCode, 0) << free.Err;
+  auto relaxed = vr::ReadDepthImage((folder / "free.nrrd").string());
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[0], 10.0f);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[1], 0.0f);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[2], 10.0f);
+  std::string note;
+  EXPECT_TRUE(itk::ExposeMetaData<std::string>(relaxed->GetMetaDataDictionary(), "CPR_Note", note));
+  EXPECT_EQ(note, "kept");
+
+  // With the ends fixed: [0, 0, 0].
+  auto mask = vr::MaskImageType::New();
+  mask->SetRegions(depth->GetLargestPossibleRegion());
+  mask->Allocate();
+  mask->GetBufferPointer()[0] = 1;
+  mask->GetBufferPointer()[1] = 0;
+  mask->GetBufferPointer()[2] = 1;
+  vr::WriteImage2D(mask.GetPointer(), (folder / "mask.nrrd").string());
+  const RunResult held = RunProgram({ RelaxExecutable,
+                                      "--mask",
+                                      (folder / "mask.nrrd").string(),
+                                      "--anisotropy",
+                                      "0",
+                                      "--iterations",
+                                      "1",
+                                      "--backend",
+                                      "cpu",
+                                      (folder / "depth.nrrd").string(),
+                                      (folder / "held.nrrd").string() });
+  ASSERT_EQ(held.ExitCode, 0) << held.Err;
+  relaxed = vr::ReadDepthImage((folder / "held.nrrd").string());
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[0], 0.0f);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[1], 0.0f);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[2], 0.0f);
+}
+
+/** Numbers in a "CPR_*" metadata entry. */
+std::vector<double>
+MetadataNumbers(const vr::DepthImageType * image, const std::string & key)
+{
+  std::string text;
+  itk::ExposeMetaData<std::string>(image->GetMetaDataDictionary(), key, text);
+  std::istringstream  stream(text);
+  std::vector<double> values;
+  double              value = 0.0;
+  while (stream >> value)
+  {
+    values.push_back(value);
+  }
+  return values;
+}
+
+TEST(VesselReformationModule, RealAortaCenterlinePixelsShowLumenAndFixedPixelsIgnoreRelaxation)
+{
+  const fs::path    folder = TestFolder();
+  const std::string volume = (DataFolder / "aorta.mha").string();
+  const std::string centerlines = (DataFolder / "aorta-centerline.vtp").string();
+  constexpr float   lumen = 1850.0f;
+  constexpr float   background = 230.0f;
+
+  // Centerline pixels alone are fixed with --fixLumen off: each must show lumen.
+  const RunResult centerlineRun = RunProgram({ ReformationExecutable,
+                                               "--up",
+                                               "auto",
+                                               "--fixLumen",
+                                               "off",
+                                               "--backend",
+                                               "cpu",
+                                               "--outputMask",
+                                               (folder / "centerline-mask.nrrd").string(),
+                                               volume,
+                                               centerlines,
+                                               (folder / "centerline-cpr.nrrd").string() });
+  ASSERT_EQ(centerlineRun.ExitCode, 0) << centerlineRun.Err;
+  EXPECT_FALSE(Contains(centerlineRun.Err, "outside the volume")) << centerlineRun.Err;
+  auto        cpr = vr::ReadDepthImage((folder / "centerline-cpr.nrrd").string());
+  auto        mask = vr::ReadMaskImage((folder / "centerline-mask.nrrd").string());
+  const auto  count = cpr->GetLargestPossibleRegion().GetNumberOfPixels();
+  std::size_t centerlinePixels = 0;
+  float       darkest = lumen;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (mask->GetBufferPointer()[k])
+    {
+      ++centerlinePixels;
+      darkest = std::min(darkest, cpr->GetBufferPointer()[k]);
+    }
+  }
+  EXPECT_GT(centerlinePixels, 100u);
+  EXPECT_GT(darkest, 0.5f * (lumen + background)) << "a centerline pixel shows background";
+
+  // --up auto found the scan's y axis, along which the vessels run.
+  const auto up = MetadataNumbers(cpr, "CPR_Up");
+  ASSERT_EQ(up.size(), 3u);
+  EXPECT_GT(std::abs(up[1]), 0.999) << up[0] << " " << up[1] << " " << up[2];
+
+  // With lumen fixing (the default) and without relaxation, the fixed pixels are the same.
+  const RunResult relaxedRun = RunProgram({ ReformationExecutable,
+                                            "--up",
+                                            "auto",
+                                            "--backend",
+                                            "cpu",
+                                            "--outputMask",
+                                            (folder / "mask.nrrd").string(),
+                                            volume,
+                                            centerlines,
+                                            (folder / "relaxed-cpr.nrrd").string() });
+  const RunResult unrelaxedRun = RunProgram({ ReformationExecutable,
+                                              "--up",
+                                              "auto",
+                                              "--backend",
+                                              "cpu",
+                                              "--relaxation",
+                                              "0",
+                                              volume,
+                                              centerlines,
+                                              (folder / "unrelaxed-cpr.nrrd").string() });
+  ASSERT_EQ(relaxedRun.ExitCode, 0) << relaxedRun.Err;
+  ASSERT_EQ(unrelaxedRun.ExitCode, 0) << unrelaxedRun.Err;
+  auto        relaxed = vr::ReadDepthImage((folder / "relaxed-cpr.nrrd").string());
+  auto        unrelaxed = vr::ReadDepthImage((folder / "unrelaxed-cpr.nrrd").string());
+  auto        fixedMask = vr::ReadMaskImage((folder / "mask.nrrd").string());
+  std::size_t fixed = 0;
+  std::size_t changed = 0;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (fixedMask->GetBufferPointer()[k])
+    {
+      ++fixed;
+      EXPECT_EQ(relaxed->GetBufferPointer()[k], unrelaxed->GetBufferPointer()[k]) << "fixed pixel " << k;
+    }
+    else if (relaxed->GetBufferPointer()[k] != unrelaxed->GetBufferPointer()[k])
+    {
+      ++changed;
+    }
+  }
+  std::cout << "aorta: " << cpr->GetLargestPossibleRegion().GetSize() << " pixels, " << centerlinePixels
+            << " centerline pixels, darkest " << darkest << "; " << fixed << " fixed pixels with lumen fixing, "
+            << changed << " others changed by relaxation" << std::endl;
+  EXPECT_GT(fixed, centerlinePixels) << "lumen fixing should fix more than the centerline";
+  EXPECT_GT(changed, 0u) << "the relaxation changed no pixel";
+}
+
+TEST(VesselReformationModule, ReportsProgressInSlicersFormat)
+{
+  const fs::path  folder = TestFolder();
+  const RunResult run = RunProgram({ ReformationExecutable,
+                                     "--up",
+                                     "auto",
+                                     "--iterations",
+                                     "20",
+                                     "--backend",
+                                     "cpu",
+                                     (DataFolder / "aorta.mha").string(),
+                                     (DataFolder / "aorta-centerline.vtp").string(),
+                                     (folder / "cpr.nrrd").string() });
+  ASSERT_EQ(run.ExitCode, 0) << run.Err;
+  const auto start = run.Out.find("<filter-start>");
+  const auto end = run.Out.find("<filter-end>");
+  ASSERT_NE(start, std::string::npos) << run.Out;
+  ASSERT_NE(end, std::string::npos) << run.Out;
+  EXPECT_TRUE(Contains(run.Out, "<filter-name>VesselReformation</filter-name>"));
+  std::vector<double> fractions;
+  const std::regex    line("<filter-progress>([0-9.eE+-]+)</filter-progress>");
+  for (auto it = std::sregex_iterator(run.Out.begin(), run.Out.end(), line); it != std::sregex_iterator(); ++it)
+  {
+    EXPECT_GT(static_cast<std::size_t>(it->position()), start);
+    EXPECT_LT(static_cast<std::size_t>(it->position()), end);
+    fractions.push_back(std::stod((*it)[1]));
+  }
+  ASSERT_GE(fractions.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_EQ(fractions.back(), 1.0);
+}
+
+TEST(CLIProgress, DrawsABarOnATerminal)
+{
+  std::ostringstream out;
+  vr::CLIProgress    progress("VesselReformation", "comment", nullptr, out, /*terminal=*/true);
+  progress.Start();
+  progress.Update(0.42, "relax");
+  std::ostringstream warnings;
+  progress.Print(warnings, "warning: something");
+  progress.Update(0.5, "relax");
+  progress.End();
+  EXPECT_EQ(warnings.str(), "warning: something\n");
+  // The bar was ended before the warning went out, and redrawn after it.
+  EXPECT_TRUE(Contains(out.str(), "relax     \n\r")) << out.str();
+  EXPECT_FALSE(Contains(out.str(), "<filter")) << out.str();
+  EXPECT_TRUE(Contains(out.str(), " 42% relax")) << out.str();
+  EXPECT_TRUE(Contains(out.str(), "100%")) << out.str();
+  EXPECT_EQ(out.str().back(), '\n');
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Bad input: a message naming the file, field or flag, exit 1, no crash, no output, an existing output intact.
+
+class BadInputTest : public ::testing::Test
+{
+protected:
+  void
+  SetUp() override
+  {
+    m_Folder = TestFolder();
+    WriteText(m_Folder / "cpr.nrrd", "an earlier result that must survive");
+  }
+
+  /** Runs VesselReformation with \a arguments then <outputCPR> (and a depth output), and checks the failure. */
+  void
+  ExpectRejected(std::vector<std::string> arguments, const std::vector<std::string> & mentions)
+  {
+    arguments.insert(arguments.begin(), ReformationExecutable);
+    arguments.insert(arguments.end() - 2, { "--outputDepth", (m_Folder / "depth.nrrd").string() });
+    arguments.push_back((m_Folder / "cpr.nrrd").string());
+    const auto      before = FilesIn(m_Folder);
+    const RunResult result = RunProgram(arguments);
+    EXPECT_FALSE(result.Crashed);
+    EXPECT_EQ(result.ExitCode, 1) << result.Err;
+    for (const auto & mention : mentions)
+    {
+      EXPECT_TRUE(Contains(result.Err, mention)) << "the message lacks \"" << mention << "\":\n" << result.Err;
+    }
+    EXPECT_TRUE(Contains(result.Err, "VesselReformation: error: ")) << result.Err;
+    EXPECT_EQ(FilesIn(m_Folder), before) << "a file appeared or vanished";
+    EXPECT_EQ(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
+  }
+
+  std::string
+  Volume() const
+  {
+    return (DataFolder / "aorta.mha").string();
+  }
+  std::string
+  Centerlines() const
+  {
+    return (DataFolder / "aorta-centerline.vtp").string();
+  }
+  std::string
+  Write(const std::string & name, const std::string & text) const
+  {
+    WriteText(m_Folder / name, text);
+    return (m_Folder / name).string();
+  }
+
+  fs::path m_Folder;
+};
+
+TEST_F(BadInputTest, MissingVolumeFile)
+{
+  const std::string missing = (m_Folder / "no-such-volume.mha").string();
+  ExpectRejected({ missing, Centerlines() }, { missing });
+}
+
+TEST_F(BadInputTest, MissingCenterlineFile)
+{
+  const std::string missing = (m_Folder / "no-such-centerlines.vtp").string();
+  ExpectRejected({ Volume(), missing }, { missing });
+}
+
+TEST_F(BadInputTest, NRRDWithACorruptHeader)
+{
+  const std::string nrrd =
+    Write("corrupt.nrrd", "NRRD0004\ntype: flaot\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n01234567");
+  ExpectRejected({ nrrd, Centerlines() }, { "corrupt.nrrd", "header" });
+}
+
+TEST_F(BadInputTest, TruncatedVTP)
+{
+  const std::string whole = ReadText(DataFolder / "aorta-centerline.vtp");
+  const std::string vtp = Write("truncated.vtp", whole.substr(0, whole.size() / 3));
+  ExpectRejected({ Volume(), vtp }, { "truncated.vtp" });
+}
+
+TEST_F(BadInputTest, MarkupsThatAreNotJSON)
+{
+  ExpectRejected({ Volume(), Write("broken.mrk.json", "{ \"markups\": [ { \"type\": \"Curve\", ") },
+                 { "broken.mrk.json", "JSON" });
+}
+
+TEST_F(BadInputTest, MarkupsWithoutACurve)
+{
+  const std::string json = R"({"markups":[{"type":"Fiducial","coordinateSystem":"LPS",
+    "controlPoints":[{"position":[1.0,2.0,3.0]}]}]})";
+  ExpectRejected({ Volume(), Write("points.mrk.json", json) }, { "points.mrk.json", "Curve" });
+}
+
+TEST_F(BadInputTest, MarkupsPositionThatIsNotThreeNumbers)
+{
+  const std::string json = R"({"markups":[{"type":"Curve","coordinateSystem":"LPS",
+    "controlPoints":[{"position":[1.0,2.0,3.0]},{"position":[1.0,2.0]}]}]})";
+  ExpectRejected({ Volume(), Write("short.mrk.json", json) }, { "short.mrk.json", "position" });
+}
+
+TEST_F(BadInputTest, CSVWithAMissingColumn)
+{
+  ExpectRejected({ Volume(), Write("two-columns.csv", "branch,x,y\n1,0,0\n1,0,1\n") }, { "two-columns.csv", "z" });
+}
+
+TEST_F(BadInputTest, CSVWithANonNumericValue)
+{
+  ExpectRejected({ Volume(), Write("letters.csv", "branch,x,y,z\n1,0,0,0\n1,0,abc,1\n") }, { "letters.csv", "abc" });
+}
+
+TEST_F(BadInputTest, EmptyCenterlineFiles)
+{
+  ExpectRejected({ Volume(), Write("empty.csv", "") }, { "empty.csv" });
+  ExpectRejected({ Volume(), Write("empty.vtp", "") }, { "empty.vtp" });
+  ExpectRejected({ Volume(), Write("header-only.csv", "branch,x,y,z\n") }, { "header-only.csv" });
+}
+
+TEST_F(BadInputTest, UnknownFlag)
+{
+  ExpectRejected({ "--bogus", "3", Volume(), Centerlines() }, { "unknown flag --bogus" });
+}
+
+TEST_F(BadInputTest, RelaxationOutsideItsRange)
+{
+  ExpectRejected({ "--relaxation", "2", Volume(), Centerlines() }, { "--relaxation", "2" });
+}
+
+TEST_F(BadInputTest, NegativeIterations)
+{
+  ExpectRejected({ "--iterations", "-5", Volume(), Centerlines() }, { "--iterations", "-5" });
+}
+
+TEST_F(BadInputTest, ZeroWidth)
+{
+  ExpectRejected({ "--size", "0,10", Volume(), Centerlines() }, { "--size", "0,10" });
+}
+
+TEST_F(BadInputTest, SizeThatDoesNotFitInMemory)
+{
+  ExpectRejected({ "--size", "100000000,100000000", Volume(), Centerlines() },
+                 { "--size", "100000000,100000000", "memory" });
+}
+
+TEST_F(BadInputTest, OutputFolderThatDoesNotExist)
+{
+  const std::string nowhere = (m_Folder / "no-such-folder" / "x.nrrd").string();
+  ExpectRejected({ "--outputMask", nowhere, Volume(), Centerlines() }, { "--outputMask", "no-such-folder" });
+}
+
+TEST_F(BadInputTest, AWriteThatFailsAfterTheOthersLeavesNoOutputAtAll)
+{
+  // The CPR and the mask are written first; the surface writer then refuses the extension. Nothing may land.
+  ExpectRejected({ "--iterations",
+                   "10",
+                   "--outputMask",
+                   (m_Folder / "mask.nrrd").string(),
+                   "--outputSurface",
+                   (m_Folder / "surface.xyz").string(),
+                   Volume(),
+                   Centerlines() },
+                 { "surface.xyz" });
+}
+
+TEST_F(BadInputTest, CenterlinesOutsideTheVolumeWarnAndTheRunContinues)
+{
+  // The .vtp is RAS; read as LPS, every point lands outside the volume.
+  const RunResult result = RunProgram({ ReformationExecutable,
+                                        "--centerlineSpace",
+                                        "LPS",
+                                        "--iterations",
+                                        "10",
+                                        "--backend",
+                                        "cpu",
+                                        Volume(),
+                                        Centerlines(),
+                                        (m_Folder / "cpr.nrrd").string() });
+  EXPECT_EQ(result.ExitCode, 0) << result.Err;
+  EXPECT_TRUE(Contains(result.Err, "warning: ")) << result.Err;
+  EXPECT_TRUE(Contains(result.Err, "outside the volume")) << result.Err;
+  EXPECT_TRUE(Contains(result.Err, "--centerlineSpace")) << result.Err;
+  EXPECT_TRUE(Contains(result.Err, "aorta-centerline.vtp")) << result.Err;
+  EXPECT_NE(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive") << "the run did not write";
+}
+
+TEST_F(BadInputTest, RelaxModuleRejectsAMissingDepthAMaskOfAnotherSizeAndBadParameters)
+{
+  WriteSmallDepthAndMask(m_Folder / "depth.nrrd", m_Folder / "mask.nrrd");
+  auto small = vr::MaskImageType::New();
+  small->SetRegions(vr::MaskImageType::RegionType({ { 0, 0 } }, { { 5, 5 } }));
+  small->Allocate(true);
+  vr::WriteImage2D(small.GetPointer(), (m_Folder / "small-mask.nrrd").string());
+  WriteText(m_Folder / "relaxed.nrrd", "an earlier result that must survive");
+  const std::string output = (m_Folder / "relaxed.nrrd").string();
+  const std::string depth = (m_Folder / "depth.nrrd").string();
+  const auto        before = FilesIn(m_Folder);
+  const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> cases = {
+    { { (m_Folder / "missing.nrrd").string(), output }, { "missing.nrrd" } },
+    { { "--mask", (m_Folder / "small-mask.nrrd").string(), depth, output }, { "--mask", "small-mask.nrrd", "5 x 5" } },
+    { { "--relaxation", "2", depth, output }, { "--relaxation", "2" } },
+    { { "--iterations", "-5", depth, output }, { "--iterations", "-5" } },
+    { { "--anisotropy", "nan", depth, output }, { "--anisotropy", "nan" } },
+    { { "--backend", "gpu", depth, output }, { "--backend", "gpu" } },
+    { { "--bogus", depth, output }, { "unknown flag --bogus" } },
+    { { depth }, { "missing the second argument <outputDepth>" } },
+  };
+  for (const auto & [arguments, mentions] : cases)
+  {
+    std::vector<std::string> command = { RelaxExecutable };
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const RunResult result = RunProgram(command);
+    EXPECT_FALSE(result.Crashed);
+    EXPECT_EQ(result.ExitCode, 1) << arguments.front();
+    for (const auto & mention : mentions)
+    {
+      EXPECT_TRUE(Contains(result.Err, mention)) << "the message lacks \"" << mention << "\":\n" << result.Err;
+    }
+    EXPECT_EQ(FilesIn(m_Folder), before);
+    EXPECT_EQ(ReadText(m_Folder / "relaxed.nrrd"), "an earlier result that must survive");
+  }
+}
+} // namespace
