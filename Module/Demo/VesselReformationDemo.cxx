@@ -3,13 +3,12 @@
 //
 //   VesselReformationDemo [--output DIR] [--angle DEG] [--size W,H] [--iterations N] [--backend B]
 
-#include "itkBilateralDepthRelaxFilter.h"
-#include "itkCPRDepthImageFilter.h"
-#include "itkCPRResampleImageFilter.h"
 #include "itkRunoffPhantomImageSource.h"
 #include "vrFigure.h"
+#include "vrImageIO.h"
 #include "vrInputError.h"
-#include "vrRelaxBackend.h"
+#include "vrNodeConversion.h"
+#include "vrVesselReformationLogic.h"
 
 #include <CLI/CLI.hpp>
 
@@ -21,7 +20,6 @@
 namespace
 {
 using DepthImage = itk::Image<float, 2>;
-using VolumeImage = itk::Image<float, 3>;
 using Clock = std::chrono::steady_clock;
 
 // A CTA window that shows contrast-filled lumen, soft tissue and bone at once.
@@ -34,50 +32,12 @@ Milliseconds(Clock::time_point start)
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+/** A relaxed depth map and the CPR sampled on it. */
 struct Result
 {
   DepthImage::Pointer Depth;
   DepthImage::Pointer CPR;
-  double              RelaxMilliseconds{ 0.0 };
 };
-
-DepthImage::Pointer
-Resample(const VolumeImage * volume, const DepthImage * depth)
-{
-  auto resample = itk::CPRResampleImageFilter<VolumeImage, DepthImage, DepthImage>::New();
-  resample->SetVolume(volume);
-  resample->SetDepth(depth);
-  resample->SetDefaultValue(-1000.0f); // air around the patient
-  resample->Update();
-  DepthImage::Pointer cpr = resample->GetOutput();
-  cpr->DisconnectPipeline();
-  return cpr;
-}
-
-Result
-Relax(itk::CPRDepthImageFilter<DepthImage> * depth, const VolumeImage * volume, double w, double a,
-      unsigned int iterations, vr::RelaxBackend backend)
-{
-  std::string notice;
-  auto        relax = vr::CreateRelaxFilter(backend, "", notice);
-  if (!notice.empty())
-  {
-    std::cout << "  note: " << notice << std::endl;
-  }
-  relax->SetInput(depth->GetDepthOutput());
-  relax->SetFixedMask(depth->GetFixedMaskOutput());
-  relax->SetRelaxation(w);
-  relax->SetAnisotropy(a);
-  relax->SetNumberOfIterations(iterations);
-  const auto start = Clock::now();
-  relax->Update();
-  Result result;
-  result.RelaxMilliseconds = Milliseconds(start);
-  result.Depth = relax->GetOutput();
-  result.Depth->DisconnectPipeline();
-  result.CPR = Resample(volume, result.Depth);
-  return result;
-}
 
 std::string
 Parameters(double w, double a)
@@ -86,17 +46,33 @@ Parameters(double w, double a)
   stream << "w = " << w << ", a = " << a << " mm^-2";
   return stream.str();
 }
+
+void
+PrintStages(const vr::ReformationOutputs & outputs, const vr::StageCounts & before, const vr::StageCounts & after)
+{
+  auto line = [](const char * stage, double seconds, unsigned int runs) {
+    std::cout << "    " << std::left << std::setw(11) << stage << std::right
+              << (runs ? std::to_string(static_cast<long>(std::lround(seconds * 1000.0))) + " ms" : "not rerun")
+              << std::endl;
+  };
+  line("conversion", outputs.Times.Conversion, after.Conversion - before.Conversion);
+  line("depth", outputs.Times.Depth, after.Depth - before.Depth);
+  line("relax", outputs.Times.Relax, after.Relax - before.Relax);
+  line("resample", outputs.Times.Resample, after.Resample - before.Resample);
+  line("surface", outputs.Times.Surface, after.Surface - before.Surface);
+}
 } // namespace
 
 int
 main(int argc, char * argv[])
 {
   CLI::App    app{ "VesselReformation demo: a synthetic leg run-off CTA, reformatted with and without bilateral "
-                "depth filtering (Kretschmer et al., EuroVis 2014). Writes PNG pictures." };
+                "depth filtering (Kretschmer et al., EuroVis 2014) through the module logic. Writes PNG pictures, "
+                "NRRD images and the cut surface." };
   std::string output = "vessel-reformation-demo";
   double      angle = 30.0;
   std::vector<unsigned int> size = { 512, 1024 };
-  unsigned int              iterations = 500;
+  long long                 iterations = 500;
   double                    spacing = 1.5;
   std::string               backendName = "auto";
   app.add_option("--output", output, "folder for the pictures")->capture_default_str();
@@ -109,12 +85,15 @@ main(int argc, char * argv[])
 
   try
   {
-    const vr::RelaxBackend backend = vr::ParseRelaxBackend(backendName, "--backend");
-    if (size[0] == 0 || size[1] == 0)
-    {
-      throw vr::InputError("--size " + std::to_string(size[0]) + "," + std::to_string(size[1]) +
-                           ": both must be >= 1");
-    }
+    vr::ReformationParameters parameters;
+    parameters.AngleInDegrees = angle;
+    parameters.ImageSize[0] = size[0];
+    parameters.ImageSize[1] = size[1];
+    parameters.Iterations = iterations;
+    parameters.Backend = vr::ParseRelaxBackend(backendName, "--backend");
+    parameters.Relaxation = 1.0;
+    parameters.Anisotropy = 0.0;
+    parameters.Validate();
     std::filesystem::create_directories(output);
     std::cout << "VesselReformation demo: synthetic run-off CTA, view " << angle << " degrees about superior, "
               << size[0] << " x " << size[1] << " pixels" << std::endl;
@@ -125,29 +104,31 @@ main(int argc, char * argv[])
     phantom->Update();
     const auto volumeSize = phantom->GetOutput()->GetLargestPossibleRegion().GetSize();
     std::cout << "  phantom " << volumeSize[0] << " x " << volumeSize[1] << " x " << volumeSize[2] << " voxels at "
-              << spacing << " mm: " << std::fixed << std::setprecision(0) << Milliseconds(start) << " ms"
-              << std::endl;
+              << spacing << " mm, " << phantom->GetCenterlineTree().GetNumberOfBranches() << " arteries: "
+              << std::lround(Milliseconds(start)) << " ms" << std::endl;
 
-    start = Clock::now();
-    auto depth = itk::CPRDepthImageFilter<DepthImage>::New();
-    depth->SetCenterlineTree(phantom->GetCenterlineTree());
-    itk::CPRViewSpecification view;
-    view.AngleInDegrees = angle;
-    view.ImageSize[0] = size[0];
-    view.ImageSize[1] = size[1];
-    depth->SetViewSpecification(view);
-    depth->SetReferenceVolume(phantom->GetOutput());
-    depth->Update();
-    std::cout << "  mpCPR depth map: " << Milliseconds(start) << " ms" << std::endl;
+    // The platform's view of the data: a volume node and a centerline node in RAS, as a 3D Slicer scene holds them.
+    vr::VesselReformationLogic logic;
+    logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom->GetOutput(), "RunoffPhantom"));
+    logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom->GetCenterlineTree(), "RunoffCenterlines"));
+    logic.SetWarningCallback([](const std::string & message) { std::cout << "  warning: " << message << std::endl; });
 
-    const VolumeImage * volume = phantom->GetOutput();
-    const Result unfiltered{ depth->GetDepthOutput(), Resample(volume, depth->GetDepthOutput()), 0.0 };
-    const Result isotropic = Relax(depth, volume, 1.0, 0.0, iterations, backend);
-    std::cout << "  isotropic relaxation (" << Parameters(1.0, 0.0) << ", " << iterations
-              << " iterations): " << isotropic.RelaxMilliseconds << " ms" << std::endl;
-    const Result bilateral = Relax(depth, volume, 1.0, 0.5, iterations, backend);
-    std::cout << "  bilateral relaxation (" << Parameters(1.0, 0.5) << ", " << iterations
-              << " iterations): " << bilateral.RelaxMilliseconds << " ms" << std::endl;
+    auto run = [&](double a) {
+      parameters.Anisotropy = a;
+      logic.SetParameters(parameters);
+      const auto  before = logic.GetStageExecutionCounts();
+      const auto &outputs = logic.Update();
+      std::cout << "  " << (a == 0.0 ? "isotropic" : "bilateral") << " relaxation (" << Parameters(1.0, a) << ", "
+                << iterations << " iterations, " << outputs.RelaxBackendUsed << "):" << std::endl;
+      PrintStages(outputs, before, logic.GetStageExecutionCounts());
+      return Result{ vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth),
+                     vr::ConvertVolumeNodeToDepthImage(outputs.CPR) };
+    };
+    const Result isotropic = run(0.0);
+    const Result bilateral = run(0.5); // a new a reruns relax and resample only (DESIGN 3.7)
+    const auto & outputs = logic.GetOutputs();
+    const Result unfiltered{ vr::ConvertVolumeNodeToDepthImage(outputs.Depth),
+                             vr::ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR) };
 
     // One colour range for every depth map, so they compare.
     const auto * values = unfiltered.Depth->GetBufferPointer();
@@ -166,6 +147,11 @@ main(int argc, char * argv[])
     vr::WriteRGBPNG(bilateralCPR, path("cpr-filtered.png"));
     vr::WriteRGBPNG(unfilteredDepth, path("depth-unfiltered.png"));
     vr::WriteRGBPNG(bilateralDepth, path("depth-filtered.png"));
+    vr::WriteImage2D(unfiltered.Depth, path("depth.nrrd"));
+    vr::WriteImage2D(bilateral.Depth, path("depth-relaxed.nrrd"));
+    vr::WriteImage2D(bilateral.CPR, path("cpr.nrrd"));
+    vr::WriteImage2D(unfiltered.CPR, path("cpr-unfiltered.nrrd"));
+    vr::WriteSurface(outputs.Surface, path("cut-surface.vtp"));
 
     const std::string unfilteredTitle = "unfiltered (w = 0)";
     const std::string isotropicTitle = "isotropic (" + Parameters(1.0, 0.0) + ")";
@@ -204,6 +190,10 @@ main(int argc, char * argv[])
               << "  depth-unfiltered.png, depth-filtered.png the depth maps (viridis: near dark, far yellow)"
               << std::endl
               << "  figure2-comparison.png                   unfiltered | isotropic | bilateral (the paper's Fig. 2)"
+              << std::endl
+              << "  depth.nrrd, depth-relaxed.nrrd, cpr.nrrd, cpr-unfiltered.nrrd  the images, view in their metadata"
+              << std::endl
+              << "  cut-surface.vtp                          the relaxed cut surface in 3D (RAS), coloured by HU"
               << std::endl;
     return EXIT_SUCCESS;
   }
