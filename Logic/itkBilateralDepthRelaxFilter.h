@@ -108,7 +108,9 @@ protected:
   void
   VerifyDepthIsFinite() const;
 
-  /** The CPU relaxation: N Jacobi sweeps over rows split among the work units. */
+  /** The CPU relaxation: N Jacobi sweeps over rows split among the work units (one thread each). Float images
+   * within BilateralDepthRelaxKernel::MaximumDepthMagnitude run the vectorised kernel; anything else the generic
+   * loop. */
   void
   RelaxOnHost();
 
@@ -116,6 +118,13 @@ protected:
   PrintSelf(std::ostream & os, Indent indent) const override;
 
 private:
+  /** Float depth maps: BilateralDepthRelaxKernel with GetNumberOfWorkUnits() threads. */
+  void
+  RelaxOnHostFast();
+  /** Any pixel type: a row-parallel loop evaluating Eq. 1 in double through ITK's threader. */
+  void
+  RelaxOnHostGeneric();
+
   double       m_Relaxation{ 1.0 };
   double       m_Anisotropy{ 0.5 };
   unsigned int m_NumberOfIterations{ 500 };

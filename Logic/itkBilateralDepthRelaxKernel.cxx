@@ -1,0 +1,762 @@
+#include "itkBilateralDepthRelaxKernel.h"
+
+#include "itkThreadTeamBarrier.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <future>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#if defined(VR_RELAX_RUNTIME_DISPATCH) && defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#  define VR_RELAX_DISPATCH_AT_RUN_TIME
+#  define VR_RELAX_HAS_AVX512_INTRINSICS
+#  define VR_AVX512_TARGET __attribute__((target("arch=x86-64-v4")))
+#  define VR_AVX2_TARGET __attribute__((target("arch=x86-64-v3")))
+#  include <immintrin.h>
+#elif defined(__AVX512F__)
+#  define VR_RELAX_HAS_AVX512_INTRINSICS
+#  define VR_AVX512_TARGET
+#  include <immintrin.h>
+#endif
+#define VR_ALWAYS_INLINE inline __attribute__((always_inline))
+
+namespace itk
+{
+namespace
+{
+/** Rows are padded to a multiple of the widest vector, so every instruction set sees the same grid. */
+constexpr std::size_t RowAlignment = 16;
+
+/** 2^f for |f| <= 1/2: degree-5 minimax polynomial, relative error 7.5e-8 (2.3e-7 after float rounding). */
+template <typename TFloat>
+VR_ALWAYS_INLINE TFloat
+TwoToTheFraction(TFloat f)
+{
+  TFloat p = f * 1.327647198e-3f + 9.675541334e-3f;
+  p = p * f + 5.550713274e-2f;
+  p = p * f + 2.402211972e-1f;
+  p = p * f + 6.931469671e-1f;
+  return p * f + 1.000000072f;
+}
+
+/** 2^u for u = -a log2(e) x^2, that is R = exp(-a x^2), and 0 for u < -126, that is a x^2 > -ln(FLT_MIN) (the
+ * filter's underflow rule; -log2(FLT_MIN) is exactly 126). u = n + f with n an integer and |f| <= 1/2 (f exact);
+ * 2^f by a degree-5 minimax polynomial (relative error 7.5e-8, 2.3e-7 after float rounding); 2^n built in the
+ * exponent bits, a normal float since n >= -126 on the kept range. */
+template <typename TFloat, typename TBits>
+VR_ALWAYS_INLINE TFloat
+PowerOfTwoFromBits(TFloat u)
+{
+  // Adding 1.5 * 2^23 rounds to an integer, which then sits in the low mantissa bits.
+  constexpr float RoundingShifter = 12582912.0f;
+  const TFloat    shifted = u + RoundingShifter;
+  const TFloat    f = u - (shifted - RoundingShifter);
+  const TBits     twoToTheNBits = ((TBits)shifted << 23) + 0x3F800000u;
+  const TFloat    weight = TwoToTheFraction(f) * (TFloat)twoToTheNBits;
+  return u >= -126.0f ? weight : TFloat{};
+}
+
+/** The vector types of one instruction set: N float lanes fill one register (SSE2 4, AVX2 8, AVX-512 16).
+ * Depths are N doubles (two registers). The InMemory types are unaligned views that may alias anything. */
+template <std::size_t N>
+struct VectorsOf;
+
+template <>
+struct VectorsOf<4>
+{
+  static constexpr std::size_t Lanes = 4;
+  using Float = float __attribute__((vector_size(16)));
+  using Double = double __attribute__((vector_size(32)));
+  using Bits = std::uint32_t __attribute__((vector_size(16)));
+  using FloatInMemory = float __attribute__((vector_size(16), aligned(4), may_alias));
+  using DoubleInMemory = double __attribute__((vector_size(32), aligned(8), may_alias));
+  using DoubleHalfInMemory = double __attribute__((vector_size(16), aligned(8), may_alias));
+  static VR_ALWAYS_INLINE Float
+  PowerOfTwo(Float u)
+  {
+    return PowerOfTwoFromBits<Float, Bits>(u);
+  }
+  static VR_ALWAYS_INLINE Float
+  ShiftInFromLeft(Float previous, Float current)
+  {
+    return __builtin_shufflevector(previous, current, 3, 4, 5, 6);
+  }
+  static VR_ALWAYS_INLINE void
+  Store(double * to, Double lanes)
+  {
+    *reinterpret_cast<DoubleHalfInMemory *>(to) = __builtin_shufflevector(lanes, lanes, 0, 1);
+    *reinterpret_cast<DoubleHalfInMemory *>(to + 2) = __builtin_shufflevector(lanes, lanes, 2, 3);
+  }
+};
+
+template <>
+struct VectorsOf<8>
+{
+  static constexpr std::size_t Lanes = 8;
+  using Float = float __attribute__((vector_size(32)));
+  using Double = double __attribute__((vector_size(64)));
+  using Bits = std::uint32_t __attribute__((vector_size(32)));
+  using FloatInMemory = float __attribute__((vector_size(32), aligned(4), may_alias));
+  using DoubleInMemory = double __attribute__((vector_size(64), aligned(8), may_alias));
+  using DoubleHalfInMemory = double __attribute__((vector_size(32), aligned(8), may_alias));
+  static VR_ALWAYS_INLINE Float
+  PowerOfTwo(Float u)
+  {
+    return PowerOfTwoFromBits<Float, Bits>(u);
+  }
+  static VR_ALWAYS_INLINE Float
+  ShiftInFromLeft(Float previous, Float current)
+  {
+    return __builtin_shufflevector(previous, current, 7, 8, 9, 10, 11, 12, 13, 14);
+  }
+  static VR_ALWAYS_INLINE void
+  Store(double * to, Double lanes)
+  {
+    *reinterpret_cast<DoubleHalfInMemory *>(to) = __builtin_shufflevector(lanes, lanes, 0, 1, 2, 3);
+    *reinterpret_cast<DoubleHalfInMemory *>(to + 4) = __builtin_shufflevector(lanes, lanes, 4, 5, 6, 7);
+  }
+};
+
+template <>
+struct VectorsOf<16>
+{
+  static constexpr std::size_t Lanes = 16;
+  using Float = float __attribute__((vector_size(64)));
+  using Double = double __attribute__((vector_size(128)));
+  using Bits = std::uint32_t __attribute__((vector_size(64)));
+  using FloatInMemory = float __attribute__((vector_size(64), aligned(4), may_alias));
+  using DoubleInMemory = double __attribute__((vector_size(128), aligned(8), may_alias));
+  using DoubleHalfInMemory = double __attribute__((vector_size(64), aligned(8), may_alias));
+  static VR_ALWAYS_INLINE Float
+  PowerOfTwo(Float u)
+  {
+    return PowerOfTwoFromBits<Float, Bits>(u);
+  }
+  static VR_ALWAYS_INLINE Float
+  ShiftInFromLeft(Float previous, Float current)
+  {
+    return __builtin_shufflevector(
+      previous, current, 15, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30);
+  }
+  static VR_ALWAYS_INLINE void
+  Store(double * to, Double lanes)
+  {
+    // In halves: GCC 12 stores a whole two-register vector through the stack.
+    *reinterpret_cast<DoubleHalfInMemory *>(to) = __builtin_shufflevector(lanes, lanes, 0, 1, 2, 3, 4, 5, 6, 7);
+    *reinterpret_cast<DoubleHalfInMemory *>(to + 8) =
+      __builtin_shufflevector(lanes, lanes, 8, 9, 10, 11, 12, 13, 14, 15);
+  }
+};
+
+template <typename V>
+VR_ALWAYS_INLINE typename V::Float
+LoadFloats(const float * from)
+{
+  return *reinterpret_cast<const typename V::FloatInMemory *>(from);
+}
+
+template <typename V>
+VR_ALWAYS_INLINE typename V::Double
+LoadDoubles(const double * from)
+{
+  return *reinterpret_cast<const typename V::DoubleInMemory *>(from);
+}
+
+template <typename V>
+VR_ALWAYS_INLINE void
+StoreFloats(float * to, typename V::Float lanes)
+{
+  *reinterpret_cast<typename V::FloatInMemory *>(to) = lanes;
+}
+
+/** Isotropic (a = 0) edges all weigh 1: no exponential needed. */
+template <typename V>
+struct IsotropicWeight
+{
+  VR_ALWAYS_INLINE typename V::Float
+  operator()(typename V::Float) const
+  {
+    return typename V::Float{} + 1.0f;
+  }
+};
+
+/** R(x) = exp(-a x^2) with the underflow rule, for differences of depths scaled by sqrt(a log2(e)): 2^-(x^2). */
+template <typename V>
+struct RangeWeight
+{
+  VR_ALWAYS_INLINE typename V::Float
+  operator()(typename V::Float scaledDifference) const
+  {
+    return V::PowerOfTwo(typename V::Float{} - scaledDifference * scaledDifference);
+  }
+};
+
+/** The grid the team works on: rows padded to whole vectors, plus what stays constant over the iterations.
+ * Depths are kept in double between iterations: a float depth of 70 mm cannot take a step below 4e-6 mm, and
+ * over hundreds of iterations such lost steps add up to more than 1e-4 mm. Differences, weights and steps are
+ * small and computed in float. */
+struct RelaxGrid
+{
+  std::size_t Width;
+  std::size_t Height;
+  /** Values per padded row: a multiple of RowAlignment, >= Width. */
+  std::size_t Stride;
+  /** a = 0: every weight is 1. Otherwise depths are held multiplied by sqrt(a log2(e)) (see DepthScale()), so
+   * that R = 2^-(x^2) for a difference x of held values. */
+  bool Isotropic;
+  /** Per padded pixel ((1 - w) / w) |Omega|; infinite for fixed pixels and padding, which so never move. */
+  const float * SelfWeight;
+};
+
+/** One thread's buffers: the vertical edges above and below the row being relaxed (Weight R and Flux
+ * R (D_below - D_above) of each column), and a row that takes the discarded output of the band's first edge row. */
+struct RowScratch
+{
+  float *  UpWeight;
+  float *  UpFlux;
+  float *  DownWeight;
+  float *  DownFlux;
+  double * DiscardedRow;
+};
+
+/** The rows of one Jacobi step of row y, held in locals so that the compiler need not reload them after stores. */
+struct RowPointers
+{
+  const double * Row;
+  const double * Below;
+  const float *  SelfWeight;
+  const float *  UpWeight;
+  const float *  UpFlux;
+  float *        DownWeight;
+  float *        DownFlux;
+  double *       Out;
+};
+
+template <typename V>
+VR_ALWAYS_INLINE typename V::Float
+DifferenceInFloat(const double * to, typename V::Double from)
+{
+  return __builtin_convertvector(LoadDoubles<V>(to) - from, typename V::Float);
+}
+
+/** Relaxes one vector of row y: both new edges of each pixel (right and down) are computed here once and
+ * handed on, the right one to the next vector (as its left edge), the down one to the next row (as its up edge). */
+template <typename V, bool HasRowBelow, bool IsLastVector, typename TWeight>
+VR_ALWAYS_INLINE void
+RelaxVector(const TWeight &      weight,
+            const RowPointers &  rows,
+            typename V::Float    lastVectorRightEdges,
+            std::size_t          x,
+            typename V::Float &  leftWeight,
+            typename V::Float &  leftFlux)
+{
+  using Float = typename V::Float;
+  const typename V::Double here = LoadDoubles<V>(rows.Row + x);
+  const Float              right = DifferenceInFloat<V>(rows.Row + x + 1, here);
+  Float                    rightWeight = weight(right);
+  if (IsLastVector)
+  {
+    rightWeight *= lastVectorRightEdges;
+  }
+  const Float rightFlux = rightWeight * right;
+  Float       downWeight{};
+  Float       downFlux{};
+  if (HasRowBelow)
+  {
+    const Float down = DifferenceInFloat<V>(rows.Below + x, here);
+    downWeight = weight(down);
+    downFlux = downWeight * down;
+    StoreFloats<V>(rows.DownWeight + x, downWeight);
+    StoreFloats<V>(rows.DownFlux + x, downFlux);
+  }
+  const Float previousWeight = V::ShiftInFromLeft(leftWeight, rightWeight);
+  const Float previousFlux = V::ShiftInFromLeft(leftFlux, rightFlux);
+  leftWeight = rightWeight;
+  leftFlux = rightFlux;
+
+  const Float weightSum = (previousWeight + rightWeight) + (LoadFloats<V>(rows.UpWeight + x) + downWeight);
+  const Float fluxSum = (rightFlux - previousFlux) + (downFlux - LoadFloats<V>(rows.UpFlux + x));
+  const Float denominator = LoadFloats<V>(rows.SelfWeight + x) + weightSum;
+  const Float step = denominator > 0.0f ? fluxSum / denominator : Float{};
+  V::Store(rows.Out + x, here + __builtin_convertvector(step, typename V::Double));
+}
+
+/** The first column of the vector that holds a row's last column. */
+template <typename V>
+VR_ALWAYS_INLINE std::size_t
+LastVectorOfRow(const RelaxGrid & grid)
+{
+  return (grid.Width - 1) / V::Lanes * V::Lanes;
+}
+
+/** One Jacobi step of row y into \a out; leaves the edges below the row in scratch.Down*. */
+template <typename V, bool HasRowBelow, typename TWeight>
+VR_ALWAYS_INLINE void
+RelaxRow(const RelaxGrid &   grid,
+         const TWeight &     weight,
+         typename V::Float   lastVectorRightEdges,
+         const double *      current,
+         std::size_t         y,
+         double *            out,
+         const RowScratch &  scratch)
+{
+  const std::size_t stride = grid.Stride;
+  const RowPointers rows{ current + y * stride, current + (y + 1) * stride, grid.SelfWeight + y * stride,
+                          scratch.UpWeight,     scratch.UpFlux,             scratch.DownWeight,
+                          scratch.DownFlux,     out };
+  typename V::Float leftWeight{};
+  typename V::Float leftFlux{};
+  // Vectors right of the one holding the last column hold only padding, which never moves and feeds nobody.
+  const std::size_t lastVector = LastVectorOfRow<V>(grid);
+  for (std::size_t x = 0; x < lastVector; x += V::Lanes)
+  {
+    RelaxVector<V, HasRowBelow, false>(weight, rows, lastVectorRightEdges, x, leftWeight, leftFlux);
+  }
+  RelaxVector<V, HasRowBelow, true>(weight, rows, lastVectorRightEdges, lastVector, leftWeight, leftFlux);
+}
+
+/** One Jacobi iteration of rows [rowBegin, rowEnd): reads \a current (all rows), writes those rows of \a next.
+ * The edges above the band come from relaxing the row above into a discarded row with the very same code, so
+ * a band boundary changes no bit. */
+template <typename V, typename TWeight>
+VR_ALWAYS_INLINE void
+SweepRows(const RelaxGrid & grid,
+          const double *    current,
+          double *          next,
+          std::size_t       rowBegin,
+          std::size_t       rowEnd,
+          RowScratch &      scratch)
+{
+  const TWeight     weight{};
+  typename V::Float lastVectorRightEdges;
+  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
+  {
+    // Only columns left of the last one have a right neighbour.
+    lastVectorRightEdges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
+  }
+  std::fill_n(scratch.UpWeight, grid.Stride, 0.0f);
+  std::fill_n(scratch.UpFlux, grid.Stride, 0.0f);
+  if (rowBegin > 0)
+  {
+    RelaxRow<V, true>(grid, weight, lastVectorRightEdges, current, rowBegin - 1, scratch.DiscardedRow, scratch);
+    std::swap(scratch.UpWeight, scratch.DownWeight);
+    std::swap(scratch.UpFlux, scratch.DownFlux);
+  }
+  for (std::size_t y = rowBegin; y < rowEnd; ++y)
+  {
+    if (y + 1 < grid.Height)
+    {
+      RelaxRow<V, true>(grid, weight, lastVectorRightEdges, current, y, next + y * grid.Stride, scratch);
+    }
+    else
+    {
+      RelaxRow<V, false>(grid, weight, lastVectorRightEdges, current, y, next + y * grid.Stride, scratch);
+    }
+    std::swap(scratch.UpWeight, scratch.DownWeight);
+    std::swap(scratch.UpFlux, scratch.DownFlux);
+  }
+}
+
+template <typename V>
+VR_ALWAYS_INLINE void
+SweepRowsWith(const RelaxGrid & grid,
+              const double *    current,
+              double *          next,
+              std::size_t       rowBegin,
+              std::size_t       rowEnd,
+              RowScratch &      scratch)
+{
+  if (grid.Isotropic)
+  {
+    SweepRows<V, IsotropicWeight<V>>(grid, current, next, rowBegin, rowEnd, scratch);
+  }
+  else
+  {
+    SweepRows<V, RangeWeight<V>>(grid, current, next, rowBegin, rowEnd, scratch);
+  }
+}
+
+using SweepFunction = void (*)(const RelaxGrid &, const double *, double *, std::size_t, std::size_t, RowScratch &);
+
+/** The row sweep for one instruction set, and its name. */
+struct RowSweep
+{
+  SweepFunction Sweep;
+  const char *  InstructionSet;
+};
+
+#if defined(VR_RELAX_DISPATCH_AT_RUN_TIME)
+VR_AVX512_TARGET void
+SweepRowsAVX512(const RelaxGrid & grid, const double * current, double * next, std::size_t rowBegin,
+                std::size_t rowEnd, RowScratch & scratch)
+{
+  SweepRowsWith<VectorsOf<16>>(grid, current, next, rowBegin, rowEnd, scratch);
+}
+
+VR_AVX2_TARGET void
+SweepRowsAVX2(const RelaxGrid & grid, const double * current, double * next, std::size_t rowBegin,
+              std::size_t rowEnd, RowScratch & scratch)
+{
+  SweepRowsWith<VectorsOf<8>>(grid, current, next, rowBegin, rowEnd, scratch);
+}
+
+void
+SweepRowsBaseline(const RelaxGrid & grid, const double * current, double * next, std::size_t rowBegin,
+                  std::size_t rowEnd, RowScratch & scratch)
+{
+  SweepRowsWith<VectorsOf<4>>(grid, current, next, rowBegin, rowEnd, scratch);
+}
+
+/** The instruction sets this processor runs (CPUID), widest first. */
+std::vector<RowSweep>
+FindRowSweeps()
+{
+  std::vector<RowSweep> sweeps;
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("x86-64-v4"))
+  {
+    sweeps.push_back({ SweepRowsAVX512, "AVX-512" });
+  }
+  if (__builtin_cpu_supports("x86-64-v3"))
+  {
+    sweeps.push_back({ SweepRowsAVX2, "AVX2+FMA" });
+  }
+  sweeps.push_back({ SweepRowsBaseline, "x86-64" });
+  return sweeps;
+}
+#else
+/** Without runtime dispatch the compiler's target flags (e.g. -march=native) decide the vector width. */
+#  if defined(__AVX512F__)
+using CompiledVectors = VectorsOf<16>;
+constexpr const char * CompiledInstructionSet = "AVX-512 (compile time)";
+#  elif defined(__AVX2__)
+using CompiledVectors = VectorsOf<8>;
+constexpr const char * CompiledInstructionSet = "AVX2 (compile time)";
+#  else
+using CompiledVectors = VectorsOf<4>;
+constexpr const char * CompiledInstructionSet = "128-bit vectors (compile time)";
+#  endif
+
+void
+SweepRowsCompiled(const RelaxGrid & grid, const double * current, double * next, std::size_t rowBegin,
+                  std::size_t rowEnd, RowScratch & scratch)
+{
+  SweepRowsWith<CompiledVectors>(grid, current, next, rowBegin, rowEnd, scratch);
+}
+
+std::vector<RowSweep>
+FindRowSweeps()
+{
+  return { { SweepRowsCompiled, CompiledInstructionSet } };
+}
+#endif
+
+const std::vector<RowSweep> &
+RowSweeps()
+{
+  static const std::vector<RowSweep> sweeps = FindRowSweeps();
+  return sweeps;
+}
+
+/** Index into RowSweeps() of the one Relax() uses: the widest unless SetInstructionSet() said otherwise. */
+std::atomic<std::size_t> ChosenRowSweep{ 0 };
+
+const RowSweep &
+TheRowSweep()
+{
+  return RowSweeps()[ChosenRowSweep.load(std::memory_order_relaxed)];
+}
+
+/** sqrt(a log2(e)) for a > 0, 1 for a = 0: the factor the kernel holds depths multiplied by. */
+double
+DepthScale(double anisotropy)
+{
+  return anisotropy > 0.0 ? std::sqrt(anisotropy / std::log(2.0)) : 1.0;
+}
+
+/** Values aligned to a cache line, zero-filled. */
+template <typename TValue>
+class AlignedBuffer
+{
+public:
+  explicit AlignedBuffer(std::size_t count)
+    : m_Data(Allocate(count))
+  {}
+  TValue *
+  Get() const
+  {
+    return m_Data.get();
+  }
+
+private:
+  static constexpr std::align_val_t Alignment{ 64 };
+  static TValue *
+  Allocate(std::size_t count)
+  {
+    if (count > std::numeric_limits<std::size_t>::max() / sizeof(TValue) - RowAlignment)
+    {
+      throw std::bad_alloc();
+    }
+    const std::size_t rounded = (count + RowAlignment - 1) / RowAlignment * RowAlignment;
+    auto *            data = static_cast<TValue *>(::operator new[](rounded * sizeof(TValue), Alignment));
+    std::fill_n(data, rounded, TValue{});
+    return data;
+  }
+  struct Deleter
+  {
+    void
+    operator()(TValue * data) const
+    {
+      ::operator delete[](data, Alignment);
+    }
+  };
+  std::unique_ptr<TValue[], Deleter> m_Data;
+};
+
+/** A thread's row buffers, in two allocations. */
+class ThreadScratch
+{
+public:
+  explicit ThreadScratch(std::size_t stride)
+    : m_Edges(4 * stride)
+    , m_DiscardedRow(stride)
+  {
+    m_Rows.UpWeight = m_Edges.Get();
+    m_Rows.UpFlux = m_Edges.Get() + stride;
+    m_Rows.DownWeight = m_Edges.Get() + 2 * stride;
+    m_Rows.DownFlux = m_Edges.Get() + 3 * stride;
+    m_Rows.DiscardedRow = m_DiscardedRow.Get();
+  }
+  RowScratch &
+  Rows()
+  {
+    return m_Rows;
+  }
+
+private:
+  AlignedBuffer<float>  m_Edges;
+  AlignedBuffer<double> m_DiscardedRow;
+  RowScratch            m_Rows{};
+};
+} // namespace
+
+void
+BilateralDepthRelaxKernel::Relax(const float *            depth,
+                                 const unsigned char *    fixed,
+                                 float *                  relaxed,
+                                 std::size_t              width,
+                                 std::size_t              height,
+                                 double                   relaxation,
+                                 double                   anisotropy,
+                                 unsigned int             iterations,
+                                 unsigned int             threads,
+                                 const ProgressCallback & progress)
+{
+  const std::size_t count = width * height;
+  if (count == 0)
+  {
+    return;
+  }
+  if (iterations == 0 || relaxation == 0.0)
+  {
+    // w = 0 gives every pixel all the weight: nothing moves.
+    std::memmove(relaxed, depth, count * sizeof(float));
+    if (progress && iterations > 0)
+    {
+      progress(iterations);
+    }
+    return;
+  }
+
+  RelaxGrid grid{};
+  grid.Width = width;
+  grid.Height = height;
+  grid.Stride = (width + RowAlignment - 1) / RowAlignment * RowAlignment;
+  grid.Isotropic = anisotropy == 0.0;
+  const double scale = DepthScale(anisotropy);
+  const std::size_t paddedCount = height * grid.Stride;
+
+  // The right neighbour of the last vector of the last row reads one vector past the image.
+  AlignedBuffer<double> first(paddedCount + RowAlignment);
+  AlignedBuffer<double> second(paddedCount + RowAlignment);
+  // Eq. 1 divided by w: the pixel's own weight becomes ((1 - w) / w) |Omega|.
+  AlignedBuffer<float> selfWeight(paddedCount);
+  const double         selfPerNeighbour = (1.0 - relaxation) / relaxation;
+  const float          immovable = std::numeric_limits<float>::infinity();
+  for (std::size_t y = 0; y < height; ++y)
+  {
+    double * row = first.Get() + y * grid.Stride;
+    std::transform(depth + y * width, depth + (y + 1) * width, row, [scale](float value) { return scale * value; });
+    std::fill(row + width, row + grid.Stride, row[width - 1]);
+    float *           self = selfWeight.Get() + y * grid.Stride;
+    const std::size_t verticalNeighbours = (y > 0) + (y + 1 < height);
+    for (std::size_t x = 0; x < width; ++x)
+    {
+      const std::size_t neighbours = verticalNeighbours + (x > 0) + (x + 1 < width);
+      self[x] = (fixed && fixed[y * width + x]) ? immovable
+                                                 : static_cast<float>(selfPerNeighbour * static_cast<double>(neighbours));
+    }
+    std::fill(self + width, self + grid.Stride, immovable);
+  }
+  std::copy_n(first.Get(), paddedCount + RowAlignment, second.Get());
+  grid.SelfWeight = selfWeight.Get();
+
+  const unsigned int team = static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, height)));
+  std::vector<ThreadScratch> scratch;
+  scratch.reserve(team);
+  for (unsigned int member = 0; member < team; ++member)
+  {
+    scratch.emplace_back(grid.Stride);
+  }
+
+  // Each member sweeps a fixed band of rows; after the barrier every member sees the whole new image. Member 0
+  // is the calling thread and reports progress; a progress callback that throws stops every member after the
+  // same barrier. The iteration after whose barrier the team stops is set by member 0 while others may still
+  // be leaving the previous barrier, so each member compares it with the iteration it has just finished.
+  ThreadTeamBarrier         barrier(team);
+  std::atomic<unsigned int> stopAfterIteration{ iterations };
+  std::exception_ptr        failure;
+  auto                      work = [&](unsigned int member) {
+    const std::size_t rowBegin = height * member / team;
+    const std::size_t rowEnd = height * (member + 1) / team;
+    const SweepFunction sweep = TheRowSweep().Sweep;
+    double *            current = first.Get();
+    double *            next = second.Get();
+    for (unsigned int iteration = 0; iteration < iterations; ++iteration)
+    {
+      sweep(grid, current, next, rowBegin, rowEnd, scratch[member].Rows());
+      if (member == 0 && progress && iteration > 0)
+      {
+        try
+        {
+          progress(iteration);
+        }
+        catch (...)
+        {
+          failure = std::current_exception();
+          stopAfterIteration.store(iteration, std::memory_order_relaxed);
+        }
+      }
+      barrier.Wait();
+      if (stopAfterIteration.load(std::memory_order_relaxed) <= iteration)
+      {
+        return;
+      }
+      std::swap(current, next);
+    }
+  };
+
+  // Helpers wait for the word to start, so that a helper the system refuses to create leaves nobody waiting.
+  std::promise<bool>       start;
+  std::shared_future<bool> started = start.get_future().share();
+  std::vector<std::thread> helpers;
+  helpers.reserve(team - 1);
+  try
+  {
+    for (unsigned int member = 1; member < team; ++member)
+    {
+      helpers.emplace_back([&work, started, member] {
+        if (started.get())
+        {
+          work(member);
+        }
+      });
+    }
+  }
+  catch (const std::system_error &)
+  {
+    start.set_value(false);
+    for (auto & helper : helpers)
+    {
+      helper.join();
+    }
+    // The result does not depend on the team size: do it all on this thread.
+    Relax(depth, fixed, relaxed, width, height, relaxation, anisotropy, iterations, 1, progress);
+    return;
+  }
+  start.set_value(true);
+  work(0);
+  for (auto & helper : helpers)
+  {
+    helper.join();
+  }
+  if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
+  if (progress)
+  {
+    progress(iterations);
+  }
+
+  const double * result = (iterations % 2 == 0) ? first.Get() : second.Get();
+  for (std::size_t y = 0; y < height; ++y)
+  {
+    // Exact for fixed pixels: (x scale) / scale is within 1e-16 of the float x, which rounding gives back.
+    std::transform(result + y * grid.Stride, result + y * grid.Stride + width, relaxed + y * width,
+                   [scale](double value) { return static_cast<float>(value / scale); });
+  }
+}
+
+bool
+BilateralDepthRelaxKernel::IsWithinRange(const float * depth, std::size_t count, double anisotropy)
+{
+  const double limit = MaximumDepthMagnitude / std::max(1.0, DepthScale(anisotropy));
+  return std::all_of(depth, depth + count, [limit](float value) { return std::abs(value) <= limit; });
+}
+
+std::string
+BilateralDepthRelaxKernel::GetInstructionSet()
+{
+  return TheRowSweep().InstructionSet;
+}
+
+std::vector<std::string>
+BilateralDepthRelaxKernel::GetSupportedInstructionSets()
+{
+  std::vector<std::string> names;
+  for (const auto & sweep : RowSweeps())
+  {
+    names.emplace_back(sweep.InstructionSet);
+  }
+  return names;
+}
+
+void
+BilateralDepthRelaxKernel::SetInstructionSet(const std::string & name)
+{
+  const auto & sweeps = RowSweeps();
+  if (name.empty())
+  {
+    ChosenRowSweep.store(0);
+    return;
+  }
+  for (std::size_t k = 0; k < sweeps.size(); ++k)
+  {
+    if (name == sweeps[k].InstructionSet)
+    {
+      ChosenRowSweep.store(k);
+      return;
+    }
+  }
+  std::string supported;
+  for (const auto & sweep : sweeps)
+  {
+    supported += std::string(supported.empty() ? "" : ", ") + sweep.InstructionSet;
+  }
+  throw std::invalid_argument("BilateralDepthRelaxKernel: instruction set \"" + name +
+                              "\" is not supported here; supported: " + supported);
+}
+
+} // namespace itk
