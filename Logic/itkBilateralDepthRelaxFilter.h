@@ -118,7 +118,8 @@ protected:
   PrintSelf(std::ostream & os, Indent indent) const override;
 
 private:
-  /** Float depth maps: BilateralDepthRelaxKernel with GetNumberOfWorkUnits() threads. */
+  /** Float depth maps: BilateralDepthRelaxKernel with min(GetNumberOfWorkUnits(), the multi-threader's maximum
+   * number of threads) threads. */
   void
   RelaxOnHostFast();
   /** Any pixel type: a row-parallel loop evaluating Eq. 1 in double through ITK's threader. */

@@ -155,6 +155,10 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
     }
   }
 
+  // ITK's pool threader hands out several work units per thread; the kernel's team needs real threads, one per
+  // core ITK uses, or its barrier would wait on threads that share a core.
+  const unsigned int threads =
+    std::max(1u, std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads()));
   const unsigned int iterations = m_NumberOfIterations;
   BilateralDepthRelaxKernel::Relax(depth->GetBufferPointer(),
                                    fixed,
@@ -164,7 +168,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
                                    m_Relaxation,
                                    m_Anisotropy,
                                    iterations,
-                                   std::max(1u, this->GetNumberOfWorkUnits()),
+                                   threads,
                                    [this, iterations](unsigned int done) {
                                      this->UpdateProgress(static_cast<float>(done) / iterations);
                                    });

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -60,6 +61,10 @@ RelaxWithFilter(const DepthMap & map, double w, double a, unsigned int iteration
   filter->SetRelaxation(w);
   filter->SetAnisotropy(a);
   filter->SetNumberOfIterations(iterations);
+  // The team is min(work units, the threader's threads): raise both so that the thread count is as asked even
+  // on a machine with fewer cores.
+  itk::MultiThreaderBase * threader = filter->GetMultiThreader();
+  threader->SetMaximumNumberOfThreads(std::max(threads, threader->GetMaximumNumberOfThreads()));
   filter->SetNumberOfWorkUnits(threads);
   filter->Update();
   DepthImage::Pointer result = filter->GetOutput();

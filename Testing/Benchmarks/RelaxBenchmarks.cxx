@@ -10,6 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 namespace
 {
 using vr::benchmarks::DepthImage;
@@ -35,8 +37,10 @@ RelaxCPU(benchmark::State & state)
     filter->Update();
     benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
   }
-  state.SetLabel(itk::BilateralDepthRelaxKernel::GetInstructionSet() + ", " +
-                 std::to_string(filter->GetNumberOfWorkUnits()) + " threads");
+  // The filter's team: one thread per work unit, at most as many as the threader's threads.
+  const unsigned int threads =
+    std::min(filter->GetNumberOfWorkUnits(), filter->GetMultiThreader()->GetMaximumNumberOfThreads());
+  state.SetLabel(itk::BilateralDepthRelaxKernel::GetInstructionSet() + ", " + std::to_string(threads) + " threads");
 }
 
 /** The same relax with a narrower instruction set than the processor's widest: how a build runs elsewhere. */
