@@ -15,8 +15,8 @@ namespace itk
  * Runs N Jacobi iterations of Eq. 1 of Kretschmer, Preim, Stamminger (EuroVis 2014), written in difference form,
  * for every pixel p that is not fixed:
  *
- * \f[ D'_p = D_p + \frac{\sum_{q \in \Omega(p)} R(D_q - D_p)\,(D_q - D_p)}{\frac{1-w}{w}|\Omega| + \sum_q R(D_q - D_p)},
- *     \qquad R(x) = e^{-a x^2}, \f]
+ * \f[ D'_p = D_p + \frac{\sum_{q \in \Omega(p)} R(D_q - D_p)\,(D_q - D_p)}
+ *                    {\frac{1-w}{w}|\Omega| + \sum_{q \in \Omega(p)} R(D_q - D_p)}, \qquad R(x) = e^{-a x^2}, \f]
  *
  * which is Eq. 1 divided through by w (w = 0 changes nothing and is not iterated). R is 0 when a x^2 exceeds
  * -ln(FLT_MIN) (BilateralDepthRelaxFilter::WeightUnderflowExponent); a zero denominator keeps D_p; fixed pixels
@@ -27,8 +27,9 @@ namespace itk
  * computes both new edges of each pixel and its update, with no branch per pixel (image borders are edges of
  * weight 0, fixed pixels have an infinite self weight); rows are padded to whole vectors; a team of threads,
  * created once per call, sweeps fixed bands of rows and meets at a barrier after each iteration; nothing is
- * allocated inside the iteration loop. Depths are held in double between iterations (a float cannot take the
- * small late steps of a 70 mm depth), everything else is float.
+ * allocated inside the iteration loop. Depths are held as pairs of floats, high + low, between iterations (a
+ * single float cannot take the small late steps of a 70 mm depth); differences, weights and steps are floats.
+ * Depths are held multiplied by sqrt(a log2 e), so that R = 2^-(x^2) for a difference x of held values.
  *
  * On x86-64 the row sweep is compiled for AVX-512, AVX2+FMA and baseline x86-64, and the widest the processor
  * supports is chosen at run time (CPUID; CMake option VR_RELAX_RUNTIME_DISPATCH, on by default). With the option
@@ -46,20 +47,20 @@ public:
    * (for instance to abort), which stops the team after the current iteration and is rethrown by Relax(). */
   using ProgressCallback = std::function<void(unsigned int completedIterations)>;
 
-  /** Relaxes \a depth (row-major \a width x \a height, finite values, in mm) into \a relaxed (same layout; may
-   * be the same buffer as \a depth; see IsWithinRange()). \a fixed (row-major, non-zero = fixed) may be null. \a relaxation is w in
-   * [0, 1], \a anisotropy a >= 0 in mm^-2; both are expected to be checked by the caller. \a threads (>= 1) is
-   * the size of the team; it never exceeds the number of rows. */
+  /** Relaxes \a depth (row-major \a width x \a height, finite values, in mm; see IsWithinRange()) into
+   * \a relaxed (same layout; may be the same buffer as \a depth). \a fixed (row-major, non-zero = fixed) may be
+   * null. \a relaxation is w in [0, 1], \a anisotropy a >= 0 in mm^-2; the caller checks both. \a threads
+   * (>= 1) is the size of the team; it never exceeds the number of rows. */
   static void
-  Relax(const float *           depth,
-        const unsigned char *   fixed,
-        float *                 relaxed,
-        std::size_t             width,
-        std::size_t             height,
-        double                  relaxation,
-        double                  anisotropy,
-        unsigned int            iterations,
-        unsigned int            threads,
+  Relax(const float *            depth,
+        const unsigned char *    fixed,
+        float *                  relaxed,
+        std::size_t              width,
+        std::size_t              height,
+        double                   relaxation,
+        double                   anisotropy,
+        unsigned int             iterations,
+        unsigned int             threads,
         const ProgressCallback & progress = ProgressCallback());
 
   /** Depths, multiplied by sqrt(a log2 e) when that exceeds 1, of larger magnitude (mm) could overflow a float

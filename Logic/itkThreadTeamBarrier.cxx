@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #if defined(__x86_64__) || defined(__i386__)
-#  include <immintrin.h>
+#include <immintrin.h>
 #endif
 
 namespace itk

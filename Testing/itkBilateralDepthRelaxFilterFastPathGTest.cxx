@@ -83,8 +83,8 @@ struct Comparison
 Comparison
 CompareWithPlain(const DepthMap & map, const DepthImage * relaxed, double w, double a, unsigned int iterations)
 {
-  const auto size = map.Depth->GetLargestPossibleRegion().GetSize();
-  const auto input = vr::test::PixelsOf(map.Depth.GetPointer());
+  const auto                       size = map.Depth->GetLargestPossibleRegion().GetSize();
+  const auto                       input = vr::test::PixelsOf(map.Depth.GetPointer());
   const std::vector<unsigned char> fixed =
     map.Fixed ? vr::test::PixelsOf(map.Fixed.GetPointer()) : std::vector<unsigned char>();
   const std::vector<double> reference =
@@ -246,7 +246,8 @@ TEST(BilateralDepthRelaxFilterFastPath, AcceptsMasksOfOtherPixelTypes)
   shortMask->Allocate();
   for (std::size_t k = 0; k < map.Fixed->GetBufferedRegion().GetNumberOfPixels(); ++k)
   {
-    shortMask->GetBufferPointer()[k] = map.Fixed->GetBufferPointer()[k] ? static_cast<unsigned short>(256 * (k + 1)) : 0;
+    shortMask->GetBufferPointer()[k] =
+      map.Fixed->GetBufferPointer()[k] ? static_cast<unsigned short>(256 * (k + 1)) : 0;
   }
   // Multiples of 256: a plain cast to a byte would lose these.
   auto filter = itk::BilateralDepthRelaxFilter<DepthImage, ShortMask>::New();
@@ -284,7 +285,11 @@ TEST(BilateralDepthRelaxFilterFastPath, GenericPathForDoubleAgreesWithPlainRefer
   filter->Update();
   const std::vector<double> reference = vr::test::PlainBilateralDepthRelax(vr::test::PixelsOf(map.Depth.GetPointer()),
                                                                            vr::test::PixelsOf(map.Fixed.GetPointer()),
-                                                                           width, height, 0.9, 0.3, 80);
+                                                                           width,
+                                                                           height,
+                                                                           0.9,
+                                                                           0.3,
+                                                                           80);
   for (std::size_t k = 0; k < reference.size(); ++k)
   {
     EXPECT_NEAR(filter->GetOutput()->GetBufferPointer()[k], reference[k], 1e-9) << "pixel " << k;

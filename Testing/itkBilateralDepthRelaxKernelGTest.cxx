@@ -28,8 +28,8 @@ Relax(const std::vector<float> &         depth,
       unsigned int                       threads = 1)
 {
   std::vector<float> relaxed(depth.size(), -1.0f);
-  Kernel::Relax(depth.data(), fixed.empty() ? nullptr : fixed.data(), relaxed.data(), width, height, w, a, iterations,
-                threads);
+  Kernel::Relax(
+    depth.data(), fixed.empty() ? nullptr : fixed.data(), relaxed.data(), width, height, w, a, iterations, threads);
   return relaxed;
 }
 } // namespace
@@ -69,8 +69,8 @@ TEST(BilateralDepthRelaxKernel, ReportsEveryIterationInOrder)
 {
   std::vector<float>        depth(40 * 30, 1.0f);
   std::vector<unsigned int> reported;
-  Kernel::Relax(depth.data(), nullptr, depth.data(), 40, 30, 1.0, 0.5, 25, 2,
-                [&](unsigned int done) { reported.push_back(done); });
+  Kernel::Relax(
+    depth.data(), nullptr, depth.data(), 40, 30, 1.0, 0.5, 25, 2, [&](unsigned int done) { reported.push_back(done); });
   ASSERT_EQ(reported.size(), 25u);
   for (unsigned int k = 0; k < 25; ++k)
   {
@@ -86,8 +86,17 @@ TEST(BilateralDepthRelaxKernel, ThrowingProgressStopsTheTeam)
   for (const unsigned int threads : { 1u, 2u, 4u })
   {
     unsigned int calls = 0;
-    EXPECT_THROW(Kernel::Relax(depth.data(), nullptr, relaxed.data(), 64, 64, 1.0, 0.5, 1000, threads,
-                               [&](unsigned int done) {
+    EXPECT_THROW(Kernel::Relax(depth.data(),
+                               nullptr,
+                               relaxed.data(),
+                               64,
+                               64,
+                               1.0,
+                               0.5,
+                               1000,
+                               threads,
+                               [&](unsigned int done)
+                               {
                                  ++calls;
                                  if (done == 3)
                                  {
@@ -150,7 +159,7 @@ TEST(BilateralDepthRelaxKernel, EveryInstructionSetAgreesWithPlainReference)
     double       W, A;
     unsigned int Iterations;
   };
-  const Case cases[] = { { 1, 1, 1.0, 0.5, 10 },   { 5, 1, 1.0, 0.5, 40 },   { 1, 9, 0.6, 2.0, 40 },
+  const Case cases[] = { { 1, 1, 1.0, 0.5, 10 },    { 5, 1, 1.0, 0.5, 40 },    { 1, 9, 0.6, 2.0, 40 },
                          { 17, 13, 1.0, 0.5, 150 }, { 40, 33, 0.8, 0.0, 150 }, { 77, 45, 1.0, 1.0, 200 } };
   for (const std::string & instructionSet : Kernel::GetSupportedInstructionSets())
   {

@@ -34,7 +34,8 @@ Update(DepthFilter * filter, const itk::CPRViewSpecification & specification, it
   filter->SetViewSpecification(specification);
   filter->SetMode(mode);
   filter->Update();
-  return { vr::test::PixelsOf(filter->GetDepthOutput()), vr::test::PixelsOf(filter->GetFixedMaskOutput()),
+  return { vr::test::PixelsOf(filter->GetDepthOutput()),
+           vr::test::PixelsOf(filter->GetFixedMaskOutput()),
            vr::test::PixelsOf(filter->GetOwnerLabelOutput()) };
 }
 
@@ -53,8 +54,9 @@ TEST(CPRDepthImageFilterReuse, RotatedAndResizedFilterGivesTheMapsOfAFreshOne)
   auto                      kept = DepthFilter::New();
   kept->SetCenterlineTree(tree);
   // Larger, then smaller, then larger again: the buffers shrink and grow in between.
-  const itk::CPRViewSpecification views[] = { ViewAt(30.0, 256, 768), ViewAt(75.0, 128, 200), ViewAt(-40.0, 300, 900),
-                                              ViewAt(30.0, 256, 768) };
+  const itk::CPRViewSpecification views[] = {
+    ViewAt(30.0, 256, 768), ViewAt(75.0, 128, 200), ViewAt(-40.0, 300, 900), ViewAt(30.0, 256, 768)
+  };
   for (const auto mode : { itk::CPRDepthMode::Scanline, itk::CPRDepthMode::Nearest })
   {
     for (const auto & view : views)

@@ -24,11 +24,11 @@ using ResampleFilter = itk::CPRResampleImageFilter<VolumeImage, DepthImage>;
 /** The CPR image as DESIGN 3.6 defines it, one pixel and one slab sample at a time through ITK's interpolator;
  * outside the volume, its minimum. */
 std::vector<float>
-ReferenceCPR(const VolumeImage *           volume,
-             const DepthImage *            depth,
-             const itk::CPRViewGeometry &  view,
-             const std::vector<double> &   slabOffsets,
-             itk::CPRSlabMode              slabMode)
+ReferenceCPR(const VolumeImage *          volume,
+             const DepthImage *           depth,
+             const itk::CPRViewGeometry & view,
+             const std::vector<double> &  slabOffsets,
+             itk::CPRSlabMode             slabMode)
 {
   auto interpolator = itk::LinearInterpolateImageFunction<VolumeImage, double>::New();
   interpolator->SetInputImage(volume);
@@ -162,8 +162,8 @@ SlabOffsets(double thickness, double smallestSpacing)
   {
     return { 0.0 };
   }
-  const double      step = 0.5 * smallestSpacing;
-  const std::size_t intervals = static_cast<std::size_t>(std::ceil(thickness / step - 1e-9));
+  const double        step = 0.5 * smallestSpacing;
+  const std::size_t   intervals = static_cast<std::size_t>(std::ceil(thickness / step - 1e-9));
   std::vector<double> offsets(intervals + 1);
   for (std::size_t k = 0; k <= intervals; ++k)
   {
@@ -177,9 +177,12 @@ SlabOffsets(double thickness, double smallestSpacing)
 TEST(CPRResampleImageFilterFastPath, LinearSamplingEqualsITKInterpolatorBitForBit)
 {
   const auto                 volume = MakeObliqueRandomVolume();
-  const itk::CPRViewGeometry view(itk::MakeVector3(0.1, 0.2, 1.0), 33.0, PointInsideObliqueVolume(volume),
-                                  { { 27, 23 } }, itk::MakeVector2(0.9, 0.8));
-  const auto depth = vr::test::MakeRandomDepthImage(27, 23, -4.0f, 4.0f, 3);
+  const itk::CPRViewGeometry view(itk::MakeVector3(0.1, 0.2, 1.0),
+                                  33.0,
+                                  PointInsideObliqueVolume(volume),
+                                  { { 27, 23 } },
+                                  itk::MakeVector2(0.9, 0.8));
+  const auto                 depth = vr::test::MakeRandomDepthImage(27, 23, -4.0f, 4.0f, 3);
   view.ConfigureImage(depth.GetPointer());
 
   struct Slab
@@ -187,8 +190,10 @@ TEST(CPRResampleImageFilterFastPath, LinearSamplingEqualsITKInterpolatorBitForBi
     double           Thickness;
     itk::CPRSlabMode Mode;
   };
-  for (const Slab slab : { Slab{ 0.0, itk::CPRSlabMode::MIP }, Slab{ 3.0, itk::CPRSlabMode::MIP },
-                           Slab{ 2.0, itk::CPRSlabMode::MinIP }, Slab{ 4.0, itk::CPRSlabMode::Mean } })
+  for (const Slab slab : { Slab{ 0.0, itk::CPRSlabMode::MIP },
+                           Slab{ 3.0, itk::CPRSlabMode::MIP },
+                           Slab{ 2.0, itk::CPRSlabMode::MinIP },
+                           Slab{ 4.0, itk::CPRSlabMode::Mean } })
   {
     SCOPED_TRACE("slab " + std::to_string(slab.Thickness) + " mm");
     auto filter = ResampleFilter::New();
@@ -244,8 +249,8 @@ TEST(CPRResampleImageFilterFastPath, PhantomAtSeveralAnglesEqualsITKInterpolator
 TEST(CPRResampleImageFilterFastPath, KeptMinimumFollowsAChangedVolume)
 {
   const auto                 volume = MakeObliqueRandomVolume();
-  const itk::CPRViewGeometry view(itk::MakeVector3(0.0, 0.0, 1.0), 0.0, PointInsideObliqueVolume(volume), { { 5, 5 } },
-                                  itk::MakeVector2(1.0, 1.0));
+  const itk::CPRViewGeometry view(
+    itk::MakeVector3(0.0, 0.0, 1.0), 0.0, PointInsideObliqueVolume(volume), { { 5, 5 } }, itk::MakeVector2(1.0, 1.0));
   // Every sample 1 m away along v: all outside.
   auto depth = vr::test::MakeDepthImage(5, 5, std::vector<float>(25, 1000.0f));
   view.ConfigureImage(depth.GetPointer());

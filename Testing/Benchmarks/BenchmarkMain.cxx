@@ -38,8 +38,7 @@ main(int argc, char ** argv)
   }
   benchmark::AddCustomContext("cpu_model", ProcessorModel());
   benchmark::AddCustomContext("relax_instruction_set", itk::BilateralDepthRelaxKernel::GetInstructionSet());
-  benchmark::AddCustomContext("itk_threads",
-                              std::to_string(itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads()));
+  benchmark::AddCustomContext("itk_threads", std::to_string(itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads()));
   benchmark::AddCustomContext("build_type", VR_BENCHMARK_BUILD_TYPE);
   benchmark::AddCustomContext("cxx_flags", VR_BENCHMARK_CXX_FLAGS);
   benchmark::RunSpecifiedBenchmarks();

@@ -56,7 +56,8 @@ Depth(benchmark::State & state)
   std::size_t iteration = 0;
   for (auto _ : state)
   {
-    depth->SetViewSpecification(vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
+    depth->SetViewSpecification(
+      vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
     depth->Update();
     benchmark::DoNotOptimize(depth->GetDepthOutput()->GetBufferPointer());
   }
@@ -87,7 +88,8 @@ DepthResample(benchmark::State & state)
   std::size_t iteration = 0;
   for (auto _ : state)
   {
-    depth->SetViewSpecification(vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
+    depth->SetViewSpecification(
+      vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
     resample->Update();
     benchmark::DoNotOptimize(resample->GetOutput()->GetBufferPointer());
   }
@@ -108,13 +110,15 @@ PipelineCPU(benchmark::State & state)
   std::size_t iteration = 0;
   for (auto _ : state)
   {
-    depth->SetViewSpecification(vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
+    depth->SetViewSpecification(
+      vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
     resample->Update();
     benchmark::DoNotOptimize(resample->GetOutput()->GetBufferPointer());
   }
 }
 
-const bool Registered = [] {
+const bool Registered = []
+{
   for (const auto & size : { std::pair<long, long>{ 256, 768 }, std::pair<long, long>{ 512, 1024 } })
   {
     for (const auto & stage : { std::pair<const char *, void (*)(benchmark::State &)>{ "Depth", Depth },

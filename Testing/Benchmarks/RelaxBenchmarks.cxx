@@ -55,21 +55,22 @@ RelaxCPUWithInstructionSet(benchmark::State & state, const std::string & instruc
 void
 RelaxPlain(benchmark::State & state)
 {
-  const auto &                     map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
-  const auto                       size = map.Depth->GetLargestPossibleRegion().GetSize();
-  const std::vector<float>         depth(map.Depth->GetBufferPointer(),
-                                 map.Depth->GetBufferPointer() + size[0] * size[1]);
+  const auto &             map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
+  const auto               size = map.Depth->GetLargestPossibleRegion().GetSize();
+  const std::vector<float> depth(map.Depth->GetBufferPointer(), map.Depth->GetBufferPointer() + size[0] * size[1]);
   const std::vector<unsigned char> fixed(map.Fixed->GetBufferPointer(),
                                          map.Fixed->GetBufferPointer() + size[0] * size[1]);
   for (auto _ : state)
   {
-    auto relaxed = vr::test::PlainBilateralDepthRelax(depth, fixed, size[0], size[1], Relaxation, Anisotropy, Iterations);
+    auto relaxed =
+      vr::test::PlainBilateralDepthRelax(depth, fixed, size[0], size[1], Relaxation, Anisotropy, Iterations);
     benchmark::DoNotOptimize(relaxed.data());
   }
   state.SetLabel("scalar double loop, 1 thread");
 }
 
-const bool Registered = [] {
+const bool Registered = []
+{
   for (const auto & size : { std::pair<long, long>{ 256, 768 }, std::pair<long, long>{ 512, 1024 } })
   {
     benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU)

@@ -24,7 +24,8 @@ PhantomScene::Instance()
 
 PhantomScene::PhantomScene()
   : m_Tree(itk::RunoffPhantomImageSource::New()->GetCenterlineTree())
-{}
+{
+}
 
 const VolumeImage *
 PhantomScene::GetVolume()

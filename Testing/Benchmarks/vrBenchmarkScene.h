@@ -53,8 +53,8 @@ public:
 private:
   PhantomScene();
 
-  itk::CenterlineTree                                        m_Tree;
-  VolumeImage::Pointer                                       m_Volume;
+  itk::CenterlineTree                                       m_Tree;
+  VolumeImage::Pointer                                      m_Volume;
   std::map<std::pair<unsigned int, unsigned int>, DepthMap> m_DepthMaps;
 };
 } // namespace vr::benchmarks

@@ -20,7 +20,8 @@ PlainBilateralDepthRelax(const std::vector<float> &         depth,
     throw std::invalid_argument("PlainBilateralDepthRelax: depth or mask size does not match width x height");
   }
   const double underflowExponent = -std::log(static_cast<double>(FLT_MIN));
-  auto         R = [&](double x) {
+  auto         R = [&](double x)
+  {
     const double exponent = anisotropy * x * x;
     return exponent > underflowExponent ? 0.0 : std::exp(-exponent);
   };
