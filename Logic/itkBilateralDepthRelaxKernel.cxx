@@ -123,6 +123,28 @@ struct VectorsOf<16>
   }
 };
 
+/** \a x as computed, never fused into a later addition (an empty asm hides it from the compiler's FMA
+ * contraction): a flux is rounded once, whichever sums it enters, so that a pixel's result does not depend on
+ * whether its row was relaxed alone or together with the next one. Where no such barrier is known, rows are
+ * relaxed one at a time (RelaxRowsInPairs). */
+#if defined(__x86_64__) || defined(__i386__)
+#  define VR_RELAX_ROUNDING_BARRIER(x) __asm__("" : "+v"(x))
+constexpr bool RelaxRowsInPairs = true;
+#elif defined(__aarch64__)
+#  define VR_RELAX_ROUNDING_BARRIER(x) __asm__("" : "+w"(x))
+constexpr bool RelaxRowsInPairs = true;
+#else
+#  define VR_RELAX_ROUNDING_BARRIER(x)
+constexpr bool RelaxRowsInPairs = false;
+#endif
+template <typename TFloat>
+VR_ALWAYS_INLINE TFloat
+Rounded(TFloat x)
+{
+  VR_RELAX_ROUNDING_BARRIER(x);
+  return x;
+}
+
 template <typename V>
 VR_ALWAYS_INLINE typename V::Float
 LoadFloats(const float * from)
@@ -221,14 +243,14 @@ RelaxVector(const TWeight &     weight,
   {
     rightWeight *= lastVectorRightEdges;
   }
-  const Float rightFlux = rightWeight * right;
+  const Float rightFlux = Rounded(rightWeight * right);
   Float       downWeight{};
   Float       downFlux{};
   if (HasRowBelow)
   {
     const Float down = (LoadFloats<V>(rows.Below + x) - high) + (LoadFloats<V>(rows.Below + rows.Stride + x) - low);
     downWeight = weight(down);
-    downFlux = downWeight * down;
+    downFlux = Rounded(downWeight * down);
     StoreFloats<V>(rows.DownWeight + x, downWeight);
     StoreFloats<V>(rows.DownFlux + x, downFlux);
   }
@@ -246,6 +268,85 @@ RelaxVector(const TWeight &     weight,
   const Float newHigh = high + lowAndStep;
   StoreFloats<V>(rows.Out + x, newHigh);
   StoreFloats<V>(rows.Out + rows.Stride + x, lowAndStep - (newHigh - high));
+}
+
+/** RelaxVector for rows y and y + 1 together: the edge between them is used by both straight from registers,
+ * and row y + 1 is loaded once. The same operations in the same order as RelaxVector on each row. */
+template <typename V, bool HasRowBelowPair, bool IsLastVector, typename TWeight>
+VR_ALWAYS_INLINE void
+RelaxVectorPair(const TWeight &     weight,
+                const RowPointers & upper,
+                const RowPointers & lower,
+                typename V::Float   lastVectorRightEdges,
+                std::size_t         x,
+                typename V::Float & upperLeftWeight,
+                typename V::Float & upperLeftFlux,
+                typename V::Float & lowerLeftWeight,
+                typename V::Float & lowerLeftFlux)
+{
+  using Float = typename V::Float;
+  const std::size_t stride = upper.Stride;
+  const Float       highUpper = LoadFloats<V>(upper.Row + x);
+  const Float       lowUpper = LoadFloats<V>(upper.Row + stride + x);
+  const Float       highLower = LoadFloats<V>(lower.Row + x);
+  const Float       lowLower = LoadFloats<V>(lower.Row + stride + x);
+  const Float       rightUpper =
+    (LoadFloats<V>(upper.Row + x + 1) - highUpper) + (LoadFloats<V>(upper.Row + stride + x + 1) - lowUpper);
+  const Float rightLower =
+    (LoadFloats<V>(lower.Row + x + 1) - highLower) + (LoadFloats<V>(lower.Row + stride + x + 1) - lowLower);
+  const Float between = (highLower - highUpper) + (lowLower - lowUpper);
+  Float       rightUpperWeight = weight(rightUpper);
+  Float       rightLowerWeight = weight(rightLower);
+  if (IsLastVector)
+  {
+    rightUpperWeight *= lastVectorRightEdges;
+    rightLowerWeight *= lastVectorRightEdges;
+  }
+  const Float rightUpperFlux = Rounded(rightUpperWeight * rightUpper);
+  const Float rightLowerFlux = Rounded(rightLowerWeight * rightLower);
+  const Float betweenWeight = weight(between);
+  const Float betweenFlux = Rounded(betweenWeight * between);
+  Float       downWeight{};
+  Float       downFlux{};
+  if (HasRowBelowPair)
+  {
+    const Float down =
+      (LoadFloats<V>(lower.Below + x) - highLower) + (LoadFloats<V>(lower.Below + stride + x) - lowLower);
+    downWeight = weight(down);
+    downFlux = Rounded(downWeight * down);
+    StoreFloats<V>(lower.DownWeight + x, downWeight);
+    StoreFloats<V>(lower.DownFlux + x, downFlux);
+  }
+  const Float upperPreviousWeight = V::ShiftInFromLeft(upperLeftWeight, rightUpperWeight);
+  const Float upperPreviousFlux = V::ShiftInFromLeft(upperLeftFlux, rightUpperFlux);
+  const Float lowerPreviousWeight = V::ShiftInFromLeft(lowerLeftWeight, rightLowerWeight);
+  const Float lowerPreviousFlux = V::ShiftInFromLeft(lowerLeftFlux, rightLowerFlux);
+  upperLeftWeight = rightUpperWeight;
+  upperLeftFlux = rightUpperFlux;
+  lowerLeftWeight = rightLowerWeight;
+  lowerLeftFlux = rightLowerFlux;
+
+  {
+    const Float weightSum =
+      (upperPreviousWeight + rightUpperWeight) + (LoadFloats<V>(upper.UpWeight + x) + betweenWeight);
+    const Float fluxSum = (rightUpperFlux - upperPreviousFlux) + (betweenFlux - LoadFloats<V>(upper.UpFlux + x));
+    const Float denominator = LoadFloats<V>(upper.SelfWeight + x) + weightSum;
+    const Float step = denominator > 0.0f ? fluxSum / denominator : Float{};
+    const Float lowAndStep = lowUpper + step;
+    const Float newHigh = highUpper + lowAndStep;
+    StoreFloats<V>(upper.Out + x, newHigh);
+    StoreFloats<V>(upper.Out + stride + x, lowAndStep - (newHigh - highUpper));
+  }
+  {
+    const Float weightSum = (lowerPreviousWeight + rightLowerWeight) + (betweenWeight + downWeight);
+    const Float fluxSum = (rightLowerFlux - lowerPreviousFlux) + (downFlux - betweenFlux);
+    const Float denominator = LoadFloats<V>(lower.SelfWeight + x) + weightSum;
+    const Float step = denominator > 0.0f ? fluxSum / denominator : Float{};
+    const Float lowAndStep = lowLower + step;
+    const Float newHigh = highLower + lowAndStep;
+    StoreFloats<V>(lower.Out + x, newHigh);
+    StoreFloats<V>(lower.Out + stride + x, lowAndStep - (newHigh - highLower));
+  }
 }
 
 /** The first column of the vector that holds a row's last column. */
@@ -288,6 +389,58 @@ RelaxRow(const RelaxGrid &  grid,
   RelaxVector<V, HasRowBelow, true>(weight, rows, lastVectorRightEdges, lastVector, leftWeight, leftFlux);
 }
 
+/** One Jacobi step of rows y and y + 1 into \a out (two padded rows); uses the edges above row y from
+ * scratch.Up* and leaves those below row y + 1 in scratch.Down*. Bit for bit the same as two RelaxRow calls. */
+template <typename V, bool HasRowBelowPair, typename TWeight>
+VR_ALWAYS_INLINE void
+RelaxRowPair(const RelaxGrid &  grid,
+             const TWeight &    weight,
+             typename V::Float  lastVectorRightEdges,
+             const float *      current,
+             std::size_t        y,
+             float *            out,
+             const RowScratch & scratch)
+{
+  const std::size_t stride = grid.Stride;
+  const RowPointers upper{ current + 2 * y * stride,
+                           current + 2 * (y + 1) * stride,
+                           stride,
+                           grid.SelfWeight + y * stride,
+                           scratch.UpWeight,
+                           scratch.UpFlux,
+                           nullptr,
+                           nullptr,
+                           out };
+  const RowPointers lower{ current + 2 * (y + 1) * stride,
+                           current + 2 * (y + 2) * stride,
+                           stride,
+                           grid.SelfWeight + (y + 1) * stride,
+                           nullptr,
+                           nullptr,
+                           scratch.DownWeight,
+                           scratch.DownFlux,
+                           out + 2 * stride };
+  typename V::Float upperLeftWeight{};
+  typename V::Float upperLeftFlux{};
+  typename V::Float lowerLeftWeight{};
+  typename V::Float lowerLeftFlux{};
+  const std::size_t lastVector = LastVectorOfRow<V>(grid);
+  for (std::size_t x = 0; x < lastVector; x += V::Lanes)
+  {
+    RelaxVectorPair<V, HasRowBelowPair, false>(
+      weight, upper, lower, lastVectorRightEdges, x, upperLeftWeight, upperLeftFlux, lowerLeftWeight, lowerLeftFlux);
+  }
+  RelaxVectorPair<V, HasRowBelowPair, true>(weight,
+                                            upper,
+                                            lower,
+                                            lastVectorRightEdges,
+                                            lastVector,
+                                            upperLeftWeight,
+                                            upperLeftFlux,
+                                            lowerLeftWeight,
+                                            lowerLeftFlux);
+}
+
 /** One Jacobi iteration of rows [rowBegin, rowEnd): reads \a current (all rows), writes those rows of \a next.
  * The edges above the band come from relaxing the row above into a discarded row with the very same code, so
  * a band boundary changes no bit. */
@@ -315,7 +468,23 @@ SweepRows(const RelaxGrid & grid,
     std::swap(scratch.UpWeight, scratch.DownWeight);
     std::swap(scratch.UpFlux, scratch.DownFlux);
   }
-  for (std::size_t y = rowBegin; y < rowEnd; ++y)
+  // Two rows at a time save loads and stores; a band's rows split into pairs and singles differently for
+  // different bands, which the bitwise sameness of the two makes harmless.
+  std::size_t y = rowBegin;
+  for (; RelaxRowsInPairs && y + 1 < rowEnd; y += 2)
+  {
+    if (y + 2 < grid.Height)
+    {
+      RelaxRowPair<V, true>(grid, weight, lastVectorRightEdges, current, y, next + 2 * y * grid.Stride, scratch);
+    }
+    else
+    {
+      RelaxRowPair<V, false>(grid, weight, lastVectorRightEdges, current, y, next + 2 * y * grid.Stride, scratch);
+    }
+    std::swap(scratch.UpWeight, scratch.DownWeight);
+    std::swap(scratch.UpFlux, scratch.DownFlux);
+  }
+  for (; y < rowEnd; ++y)
   {
     if (y + 1 < grid.Height)
     {
@@ -411,16 +580,16 @@ FindRowSweeps()
 }
 #else
 /** Without runtime dispatch the compiler's target flags (e.g. -march=native) decide the vector width. */
-#if defined(__AVX512F__)
+#  if defined(__AVX512F__)
 using CompiledVectors = VectorsOf<16>;
 constexpr const char * CompiledInstructionSet = "AVX-512 (compile time)";
-#elif defined(__AVX2__)
+#  elif defined(__AVX2__)
 using CompiledVectors = VectorsOf<8>;
 constexpr const char * CompiledInstructionSet = "AVX2 (compile time)";
-#else
+#  else
 using CompiledVectors = VectorsOf<4>;
 constexpr const char * CompiledInstructionSet = "128-bit vectors (compile time)";
-#endif
+#  endif
 
 void
 SweepRowsCompiled(const RelaxGrid & grid,

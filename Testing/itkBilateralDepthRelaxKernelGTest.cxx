@@ -127,6 +127,23 @@ TEST(BilateralDepthRelaxKernel, InPlaceEqualsOutOfPlaceAndTeamSizeChangesNoBit)
   {
     EXPECT_EQ(Relax(depth, fixed, width, height, 0.9, 0.3, 77, threads), reference) << threads << " threads";
   }
+  // A taller image: bands of many rows that start on even and odd rows, so that the rows relaxed two at a time
+  // pair up differently for each team size.
+  const std::size_t          tallHeight = 203;
+  std::vector<float>         tall(width * tallHeight);
+  std::vector<unsigned char> tallFixed(tall.size(), 0);
+  for (std::size_t k = 0; k < tall.size(); ++k)
+  {
+    tall[k] = distribution(generator);
+    tallFixed[k] = (k % 17 == 3) ? 1 : 0;
+  }
+  const std::vector<float> tallReference = Relax(tall, tallFixed, width, tallHeight, 1.0, 0.5, 77, 1);
+  for (const unsigned int threads : { 2u, 3u, 7u })
+  {
+    EXPECT_EQ(Relax(tall, tallFixed, width, tallHeight, 1.0, 0.5, 77, threads), tallReference)
+      << threads << " threads";
+  }
+
   std::vector<float> inPlace = depth;
   Kernel::Relax(inPlace.data(), fixed.data(), inPlace.data(), width, height, 0.9, 0.3, 77, 2);
   EXPECT_EQ(inPlace, reference);
