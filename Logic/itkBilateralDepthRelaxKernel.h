@@ -31,9 +31,10 @@ namespace itk
  * single float cannot take the small late steps of a 70 mm depth); differences, weights and steps are floats.
  * Depths are held multiplied by sqrt(a log2 e), so that R = 2^-(x^2) for a difference x of held values.
  *
- * On x86-64 the row sweep is compiled for AVX-512, AVX2+FMA and baseline x86-64, and the widest the processor
- * supports is chosen at run time (CPUID; CMake option VR_RELAX_RUNTIME_DISPATCH, on by default). With the option
- * off the compiler flags decide (e.g. -march=native).
+ * On x86-64 the row sweep (itkBilateralDepthRelaxRows.hxx) is compiled for AVX-512, AVX2+FMA and baseline
+ * x86-64, one translation unit each, and the widest the processor supports is chosen at run time (CPUID; CMake
+ * option VR_RELAX_RUNTIME_DISPATCH, on by default). With the option off the compiler flags decide (e.g.
+ * -march=native).
  *
  * Every pixel is computed by the same instructions whatever thread runs its row, so the result is bit-identical
  * for any number of threads with a given instruction set.
