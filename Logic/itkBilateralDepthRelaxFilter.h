@@ -1,6 +1,7 @@
 #ifndef itkBilateralDepthRelaxFilter_h
 #define itkBilateralDepthRelaxFilter_h
 
+#include "itkBilateralDepthRelaxKernel.h"
 #include "itkImage.h"
 #include "itkImageToImageFilter.h"
 
@@ -129,6 +130,9 @@ private:
   double       m_Relaxation{ 1.0 };
   double       m_Anisotropy{ 0.5 };
   unsigned int m_NumberOfIterations{ 500 };
+
+  // The fast kernel's buffers, kept between updates: relaxing again for a new view allocates nothing.
+  BilateralDepthRelaxKernel::Workspace m_KernelWorkspace;
 };
 
 } // namespace itk

@@ -3,7 +3,6 @@
 
 #include "itkBilateralDepthRelaxFilter.h"
 
-#include "itkBilateralDepthRelaxKernel.h"
 #include "itkMultiThreaderBase.h"
 
 #include <algorithm>
@@ -171,7 +170,8 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
                                    threads,
                                    [this, iterations](unsigned int done) {
                                      this->UpdateProgress(static_cast<float>(done) / iterations);
-                                   });
+                                   },
+                                   &m_KernelWorkspace);
 }
 
 template <typename TImage, typename TMaskImage>

@@ -150,7 +150,62 @@ private:
   AlignedBuffer<float> m_DiscardedRow;
   RowScratch           m_Rows{};
 };
+
+/** An AlignedBuffer that keeps its memory while later requests fit in it. */
+class ReusableBuffer
+{
+public:
+  /** At least \a count floats: zero where newly allocated, finite values of an earlier call elsewhere. */
+  float *
+  Reserve(std::size_t count)
+  {
+    if (count > m_Capacity)
+    {
+      m_Buffer.reset();
+      m_Buffer = std::make_unique<AlignedBuffer<float>>(count);
+      m_Capacity = count;
+    }
+    return m_Buffer->Get();
+  }
+
+private:
+  std::unique_ptr<AlignedBuffer<float>> m_Buffer;
+  std::size_t                           m_Capacity{ 0 };
+};
 } // namespace
+
+/** The depth pairs (ping-pong), the self weights and each team member's row buffers. */
+struct BilateralDepthRelaxKernel::Workspace::Buffers
+{
+  ReusableBuffer                              First;
+  ReusableBuffer                              Second;
+  ReusableBuffer                              SelfWeight;
+  std::vector<std::unique_ptr<ThreadScratch>> Scratch;
+  std::size_t                                 ScratchStride{ 0 };
+
+  /** Row buffers for \a team members on rows of \a stride floats. */
+  std::vector<std::unique_ptr<ThreadScratch>> &
+  ReserveScratch(unsigned int team, std::size_t stride)
+  {
+    if (stride != ScratchStride)
+    {
+      Scratch.clear();
+      ScratchStride = stride;
+    }
+    while (Scratch.size() < team)
+    {
+      Scratch.push_back(std::make_unique<ThreadScratch>(stride));
+    }
+    return Scratch;
+  }
+};
+
+BilateralDepthRelaxKernel::Workspace::Workspace()
+  : m_Buffers(std::make_unique<Buffers>())
+{
+}
+
+BilateralDepthRelaxKernel::Workspace::~Workspace() = default;
 
 void
 BilateralDepthRelaxKernel::Relax(const float *            depth,
@@ -162,7 +217,8 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
                                  double                   anisotropy,
                                  unsigned int             iterations,
                                  unsigned int             threads,
-                                 const ProgressCallback & progress)
+                                 const ProgressCallback & progress,
+                                 Workspace *              workspace)
 {
   const std::size_t count = width * height;
   if (count == 0)
@@ -188,45 +244,67 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
   const double      scale = DepthScale(anisotropy);
   const std::size_t paddedCount = height * grid.Stride;
 
+  Workspace            ownWorkspace;
+  Workspace::Buffers & buffers = *(workspace ? workspace : &ownWorkspace)->m_Buffers;
   // The right neighbour of the last vector of the last row reads one vector past the image.
-  AlignedBuffer<float> first(2 * paddedCount + RowAlignment);
-  AlignedBuffer<float> second(2 * paddedCount + RowAlignment);
+  float * const first = buffers.First.Reserve(2 * paddedCount + RowAlignment);
+  float * const second = buffers.Second.Reserve(2 * paddedCount + RowAlignment);
+  float * const selfWeight = buffers.SelfWeight.Reserve(paddedCount);
+  grid.SelfWeight = selfWeight;
   // Eq. 1 divided by w: the pixel's own weight becomes ((1 - w) / w) |Omega|.
-  AlignedBuffer<float> selfWeight(paddedCount);
-  const double         selfPerNeighbour = (1.0 - relaxation) / relaxation;
-  const float          immovable = std::numeric_limits<float>::infinity();
-  for (std::size_t y = 0; y < height; ++y)
+  const double selfPerNeighbour = (1.0 - relaxation) / relaxation;
+  const float  immovable = std::numeric_limits<float>::infinity();
+  auto         initialiseRows = [&](std::size_t rowBegin, std::size_t rowEnd)
   {
-    // Padding columns repeat the last column.
-    float * high = first.Get() + 2 * y * grid.Stride;
-    float * low = high + grid.Stride;
-    for (std::size_t x = 0; x < grid.Stride; ++x)
+    for (std::size_t y = rowBegin; y < rowEnd; ++y)
     {
-      const double scaled = scale * depth[y * width + std::min(x, width - 1)];
-      high[x] = static_cast<float>(scaled);
-      low[x] = static_cast<float>(scaled - high[x]);
+      const float * in = depth + y * width;
+      float *       high = first + 2 * y * grid.Stride;
+      float *       low = high + grid.Stride;
+      for (std::size_t x = 0; x < width; ++x)
+      {
+        const double scaled = scale * in[x];
+        high[x] = static_cast<float>(scaled);
+        low[x] = static_cast<float>(scaled - high[x]);
+      }
+      // Padding columns repeat the last column.
+      std::fill(high + width, high + grid.Stride, high[width - 1]);
+      std::fill(low + width, low + grid.Stride, low[width - 1]);
+      float *           self = selfWeight + y * grid.Stride;
+      const std::size_t verticalNeighbours = (y > 0) + (y + 1 < height);
+      for (std::size_t x = 0; x < width; ++x)
+      {
+        const std::size_t neighbours = verticalNeighbours + (x > 0) + (x + 1 < width);
+        self[x] = static_cast<float>(selfPerNeighbour * static_cast<double>(neighbours));
+      }
+      if (fixed)
+      {
+        const unsigned char * isFixed = fixed + y * width;
+        for (std::size_t x = 0; x < width; ++x)
+        {
+          self[x] = isFixed[x] ? immovable : self[x];
+        }
+      }
+      std::fill(self + width, self + grid.Stride, immovable);
     }
-    float *           self = selfWeight.Get() + y * grid.Stride;
-    const std::size_t verticalNeighbours = (y > 0) + (y + 1 < height);
-    for (std::size_t x = 0; x < width; ++x)
+  };
+  auto writeRows = [&](const float * result, std::size_t rowBegin, std::size_t rowEnd)
+  {
+    for (std::size_t y = rowBegin; y < rowEnd; ++y)
     {
-      const std::size_t neighbours = verticalNeighbours + (x > 0) + (x + 1 < width);
-      self[x] = (fixed && fixed[y * width + x])
-                  ? immovable
-                  : static_cast<float>(selfPerNeighbour * static_cast<double>(neighbours));
+      // Exact for fixed pixels: (x scale) / scale comes within 1e-14 of the float x, which rounding gives back.
+      const float * high = result + 2 * y * grid.Stride;
+      const float * low = high + grid.Stride;
+      float *       out = relaxed + y * width;
+      for (std::size_t x = 0; x < width; ++x)
+      {
+        out[x] = static_cast<float>((static_cast<double>(high[x]) + low[x]) / scale);
+      }
     }
-    std::fill(self + width, self + grid.Stride, immovable);
-  }
-  std::copy_n(first.Get(), 2 * paddedCount + RowAlignment, second.Get());
-  grid.SelfWeight = selfWeight.Get();
+  };
 
   const unsigned int team = static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, height)));
-  std::vector<ThreadScratch> scratch;
-  scratch.reserve(team);
-  for (unsigned int member = 0; member < team; ++member)
-  {
-    scratch.emplace_back(grid.Stride);
-  }
+  auto &             scratch = buffers.ReserveScratch(team, grid.Stride);
 
   // Each member sweeps a fixed band of rows; after the barrier every member sees the whole new image. Member 0
   // is the calling thread and reports progress; a progress callback that throws stops every member after the
@@ -240,11 +318,14 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
     const std::size_t   rowBegin = height * member / team;
     const std::size_t   rowEnd = height * (member + 1) / team;
     const SweepFunction sweep = TheRowSweep().Sweep;
-    float *             current = first.Get();
-    float *             next = second.Get();
+    float *             current = first;
+    float *             next = second;
+    // Every member prepares its own rows; the first sweep reads its neighbours' too.
+    initialiseRows(rowBegin, rowEnd);
+    barrier.Wait();
     for (unsigned int iteration = 0; iteration < iterations; ++iteration)
     {
-      sweep(grid, current, next, rowBegin, rowEnd, scratch[member].Rows());
+      sweep(grid, current, next, rowBegin, rowEnd, scratch[member]->Rows());
       if (member == 0 && progress && iteration > 0)
       {
         try
@@ -264,6 +345,8 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
       }
       std::swap(current, next);
     }
+    // After the last barrier nobody reads the input any more, so \a relaxed may be \a depth.
+    writeRows(current, rowBegin, rowEnd);
   };
 
   // Helpers wait for the word to start, so that a helper the system refuses to create leaves nobody waiting.
@@ -293,7 +376,7 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
       helper.join();
     }
     // The result does not depend on the team size: do it all on this thread.
-    Relax(depth, fixed, relaxed, width, height, relaxation, anisotropy, iterations, 1, progress);
+    Relax(depth, fixed, relaxed, width, height, relaxation, anisotropy, iterations, 1, progress, workspace);
     return;
   }
   start.set_value(true);
@@ -309,18 +392,6 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
   if (progress)
   {
     progress(iterations);
-  }
-
-  const float * result = (iterations % 2 == 0) ? first.Get() : second.Get();
-  for (std::size_t y = 0; y < height; ++y)
-  {
-    // Exact for fixed pixels: (x scale) / scale comes within 1e-14 of the float x, which rounding gives back.
-    const float * high = result + 2 * y * grid.Stride;
-    const float * low = high + grid.Stride;
-    for (std::size_t x = 0; x < width; ++x)
-    {
-      relaxed[y * width + x] = static_cast<float>((static_cast<double>(high[x]) + low[x]) / scale);
-    }
   }
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,10 +49,29 @@ public:
    * (for instance to abort), which stops the team after the current iteration and is rethrown by Relax(). */
   using ProgressCallback = std::function<void(unsigned int completedIterations)>;
 
+  /** Memory Relax() can keep from one call to the next: the depth buffers (about 20 bytes per pixel) and each
+   * thread's row buffers. Reusing one spares allocating and first touching them on every call (a few ms at
+   * 512 x 1024). One call at a time per workspace. */
+  class Workspace
+  {
+  public:
+    Workspace();
+    ~Workspace();
+    Workspace(const Workspace &) = delete;
+    Workspace &
+    operator=(const Workspace &) = delete;
+
+  private:
+    friend class BilateralDepthRelaxKernel;
+    struct Buffers;
+    std::unique_ptr<Buffers> m_Buffers;
+  };
+
   /** Relaxes \a depth (row-major \a width x \a height, finite values, in mm; see IsWithinRange()) into
    * \a relaxed (same layout; may be the same buffer as \a depth). \a fixed (row-major, non-zero = fixed) may be
    * null. \a relaxation is w in [0, 1], \a anisotropy a >= 0 in mm^-2; the caller checks both. \a threads
-   * (>= 1) is the size of the team; it never exceeds the number of rows. */
+   * (>= 1) is the size of the team; it never exceeds the number of rows. \a workspace (may be null) keeps the
+   * buffers for the next call. */
   static void
   Relax(const float *            depth,
         const unsigned char *    fixed,
@@ -62,7 +82,8 @@ public:
         double                   anisotropy,
         unsigned int             iterations,
         unsigned int             threads,
-        const ProgressCallback & progress = ProgressCallback());
+        const ProgressCallback & progress = ProgressCallback(),
+        Workspace *              workspace = nullptr);
 
   /** Depths, multiplied by sqrt(a log2 e) when that exceeds 1, of larger magnitude (mm) could overflow a float
    * difference or flux; Relax() is only for maps within this range (any scanner's field of view is a million

@@ -140,13 +140,57 @@ TEST(BilateralDepthRelaxKernel, InPlaceEqualsOutOfPlaceAndTeamSizeChangesNoBit)
   const std::vector<float> tallReference = Relax(tall, tallFixed, width, tallHeight, 1.0, 0.5, 77, 1);
   for (const unsigned int threads : { 2u, 3u, 7u })
   {
-    EXPECT_EQ(Relax(tall, tallFixed, width, tallHeight, 1.0, 0.5, 77, threads), tallReference)
-      << threads << " threads";
+    EXPECT_EQ(Relax(tall, tallFixed, width, tallHeight, 1.0, 0.5, 77, threads), tallReference) << threads << " threads";
   }
 
   std::vector<float> inPlace = depth;
   Kernel::Relax(inPlace.data(), fixed.data(), inPlace.data(), width, height, 0.9, 0.3, 77, 2);
   EXPECT_EQ(inPlace, reference);
+}
+
+// A workspace kept across calls of other sizes, masks and team sizes holds stale values where a call does not
+// write: none of them may reach a result.
+TEST(BilateralDepthRelaxKernel, ReusedWorkspaceChangesNoBit)
+{
+  struct Call
+  {
+    std::size_t  Width, Height;
+    unsigned int Threads;
+    bool         Masked;
+  };
+  const Call        calls[] = { { 70, 40, 2, true }, { 33, 17, 3, false }, { 70, 40, 2, false },
+                                { 129, 9, 1, true }, { 5, 61, 4, true },   { 70, 40, 2, true } };
+  Kernel::Workspace workspace;
+  unsigned int      seed = 40;
+  for (const auto & call : calls)
+  {
+    std::mt19937                          generator(++seed);
+    std::uniform_real_distribution<float> distribution(-3.0f, 3.0f);
+    std::vector<float>                    depth(call.Width * call.Height);
+    std::vector<unsigned char>            fixed(call.Masked ? depth.size() : 0, 0);
+    for (std::size_t k = 0; k < depth.size(); ++k)
+    {
+      depth[k] = distribution(generator);
+      if (call.Masked)
+      {
+        fixed[k] = (k % 7 == 2) ? 1 : 0;
+      }
+    }
+    const std::vector<float> fresh = Relax(depth, fixed, call.Width, call.Height, 1.0, 0.5, 40, call.Threads);
+    std::vector<float>       reused(depth.size());
+    Kernel::Relax(depth.data(),
+                  call.Masked ? fixed.data() : nullptr,
+                  reused.data(),
+                  call.Width,
+                  call.Height,
+                  1.0,
+                  0.5,
+                  40,
+                  call.Threads,
+                  {},
+                  &workspace);
+    EXPECT_EQ(reused, fresh) << call.Width << " x " << call.Height;
+  }
 }
 
 // w = 0 and N = 0 change nothing (not even by rounding).
