@@ -1,5 +1,7 @@
 // Relax_CPU/W/H: BilateralDepthRelaxFilter on the CPU (all cores, the widest instruction set); Relax_Plain/W/H:
-// the plain reference (a scalar double loop over Eq. 1) on the same input, for the ratio. The paper's filter
+// the plain reference (a scalar double loop over Eq. 1, one thread) on the same input, for the ratio;
+// Relax_Generic/512/1024: the filter's previous CPU loop (now its generic path), for a second ratio;
+// Relax_CPU_<set>/512/1024: the CPU relax forced to a narrower instruction set. The paper's filter
 // settings: 500 iterations, w = 1; a = 0.5 mm^-2 (the filter's defaults).
 #include "vrBenchmarkScene.h"
 
@@ -52,6 +54,34 @@ RelaxCPUWithInstructionSet(benchmark::State & state, const std::string & instruc
   itk::BilateralDepthRelaxKernel::SetInstructionSet("");
 }
 
+/** The filter's previous CPU loop, kept as its generic path for pixel types other than float: Eq. 1 in double,
+ * one exponential per neighbour, rows through ITK's threader (all cores). Run on a double copy of the map. */
+void
+RelaxGeneric(benchmark::State & state)
+{
+  using DoubleImage = itk::Image<double, 2>;
+  const auto & map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
+  auto         depth = DoubleImage::New();
+  depth->CopyInformation(map.Depth);
+  depth->SetRegions(map.Depth->GetLargestPossibleRegion());
+  depth->Allocate();
+  std::copy_n(
+    map.Depth->GetBufferPointer(), map.Depth->GetBufferedRegion().GetNumberOfPixels(), depth->GetBufferPointer());
+  auto filter = itk::BilateralDepthRelaxFilter<DoubleImage>::New();
+  filter->SetDepthInput(depth);
+  filter->SetFixedMask(map.Fixed);
+  filter->SetRelaxation(Relaxation);
+  filter->SetAnisotropy(Anisotropy);
+  filter->SetNumberOfIterations(Iterations);
+  for (auto _ : state)
+  {
+    filter->Modified();
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
+  }
+  state.SetLabel("generic loop, double image, " + std::to_string(filter->GetNumberOfWorkUnits()) + " work units");
+}
+
 void
 RelaxPlain(benchmark::State & state)
 {
@@ -88,6 +118,13 @@ const bool Registered = []
       ->Repetitions(3)
       ->ReportAggregatesOnly();
   }
+  benchmark::RegisterBenchmark("Relax_Generic", RelaxGeneric)
+    ->Args({ 512, 1024 })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
   const auto supported = itk::BilateralDepthRelaxKernel::GetSupportedInstructionSets();
   for (std::size_t k = 1; k < supported.size(); ++k)
   {

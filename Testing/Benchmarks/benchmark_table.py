@@ -119,6 +119,11 @@ def table(report):
 
     others = sorted(name for name in medians if name.startswith("Relax_CPU_"))
     notes = []
+    for name in sorted(name for name in medians if name.startswith("Relax_Generic/")):
+        _, width, height = name.split("/")
+        cpu = medians.get(f"Relax_CPU/{width}/{height}")
+        notes.append(f"- the filter's previous CPU loop (now its generic path: double, all cores), {width}×{height}: "
+                     f"{milliseconds(medians[name])}; the CPU relax is {ratio(medians[name], cpu)} faster")
     for name in others:
         stage, width, height = name.split("/")
         plain = medians.get(f"Relax_Plain/{width}/{height}")
