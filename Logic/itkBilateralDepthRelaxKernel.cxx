@@ -36,17 +36,34 @@ struct RowSweep
 };
 
 #if defined(VR_RELAX_RUNTIME_DISPATCH)
+/** Whether the processor runs code built with -march=x86-64-v3 (\a level 3) or -v4 (\a level 4). GCC 12 knows
+ * the levels by name; otherwise the features the sweep can use are asked one by one. */
+bool
+SupportsLevel(int level)
+{
+  __builtin_cpu_init();
+#  if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+  return level == 4 ? __builtin_cpu_supports("x86-64-v4") : __builtin_cpu_supports("x86-64-v3");
+#  else
+  const bool level3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+                      __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
+  return level == 3 ? level3
+                    : level3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                        __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+                        __builtin_cpu_supports("avx512vl");
+#  endif
+}
+
 /** The instruction sets this processor runs (CPUID), widest first. */
 std::vector<RowSweep>
 FindRowSweeps()
 {
   std::vector<RowSweep> sweeps;
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("x86-64-v4"))
+  if (SupportsLevel(4))
   {
     sweeps.push_back({ BilateralDepthRelaxRows::SweepAVX512, "AVX-512" });
   }
-  if (__builtin_cpu_supports("x86-64-v3"))
+  if (SupportsLevel(3))
   {
     sweeps.push_back({ BilateralDepthRelaxRows::SweepAVX2, "AVX2+FMA" });
   }
