@@ -27,12 +27,14 @@ namespace itk
  * keeps its value: never 0/0, never NaN.
  *
  * The output does not depend on the number of threads (bit-identical), and carries the input's metadata
- * dictionary (the CPR view) along.
+ * dictionary (the CPR view) along. Float images are relaxed by BilateralDepthRelaxKernel (shared edge weights, a
+ * vectorised exponential, a team of GetNumberOfWorkUnits() threads at most as many as the multi-threader's);
+ * other pixel types by a plain loop in double.
  *
  * Bad parameters or inputs (w outside [0, 1], a < 0, a non-finite parameter, a mask of another size, a
  * non-finite depth) raise an itk::ExceptionObject naming the parameter and its value.
  *
- * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter
+ * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel
  */
 template <typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
 class ITK_TEMPLATE_EXPORT BilateralDepthRelaxFilter : public ImageToImageFilter<TImage, TImage>
