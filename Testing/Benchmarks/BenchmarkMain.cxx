@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -31,7 +32,16 @@ ProcessorModel()
 int
 main(int argc, char ** argv)
 {
-  benchmark::Initialize(&argc, argv);
+  // Repetitions of all benchmarks run in random order by default, so that a slow spell of a shared machine
+  // spreads over all figures instead of spoiling one (and the ratios between them). A later
+  // --benchmark_enable_random_interleaving=false on the command line wins.
+  std::vector<char *> arguments(argv, argv + argc);
+  std::string         interleave = "--benchmark_enable_random_interleaving=true";
+  arguments.insert(arguments.begin() + 1, interleave.data());
+  int count = static_cast<int>(arguments.size());
+  benchmark::Initialize(&count, arguments.data());
+  argc = count;
+  argv = arguments.data();
   if (benchmark::ReportUnrecognizedArguments(argc, argv))
   {
     return 1;
