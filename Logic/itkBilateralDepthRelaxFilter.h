@@ -1,6 +1,7 @@
 #ifndef itkBilateralDepthRelaxFilter_h
 #define itkBilateralDepthRelaxFilter_h
 
+#include "itkBilateralDepthRelaxKernel.h"
 #include "itkImage.h"
 #include "itkImageToImageFilter.h"
 
@@ -26,12 +27,14 @@ namespace itk
  * keeps its value: never 0/0, never NaN.
  *
  * The output does not depend on the number of threads (bit-identical), and carries the input's metadata
- * dictionary (the CPR view) along.
+ * dictionary (the CPR view) along. Float images are relaxed by BilateralDepthRelaxKernel (shared edge weights, a
+ * vectorised exponential, a team of GetNumberOfWorkUnits() threads at most as many as the multi-threader's);
+ * other pixel types by a plain loop in double.
  *
  * Bad parameters or inputs (w outside [0, 1], a < 0, a non-finite parameter, a mask of another size, a
  * non-finite depth) raise an itk::ExceptionObject naming the parameter and its value.
  *
- * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter
+ * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel
  */
 template <typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
 class ITK_TEMPLATE_EXPORT BilateralDepthRelaxFilter : public ImageToImageFilter<TImage, TImage>
@@ -108,7 +111,9 @@ protected:
   void
   VerifyDepthIsFinite() const;
 
-  /** The CPU relaxation: N Jacobi sweeps over rows split among the work units. */
+  /** The CPU relaxation: N Jacobi sweeps over rows split among the work units (one thread each). Float images
+   * within BilateralDepthRelaxKernel::MaximumDepthMagnitude run the vectorised kernel; anything else the generic
+   * loop. */
   void
   RelaxOnHost();
 
@@ -116,9 +121,20 @@ protected:
   PrintSelf(std::ostream & os, Indent indent) const override;
 
 private:
+  /** Float depth maps: BilateralDepthRelaxKernel with min(GetNumberOfWorkUnits(), the multi-threader's maximum
+   * number of threads) threads. */
+  void
+  RelaxOnHostFast();
+  /** Any pixel type: a row-parallel loop evaluating Eq. 1 in double through ITK's threader. */
+  void
+  RelaxOnHostGeneric();
+
   double       m_Relaxation{ 1.0 };
   double       m_Anisotropy{ 0.5 };
   unsigned int m_NumberOfIterations{ 500 };
+
+  // The fast kernel's buffers, kept between updates: relaxing again for a new view allocates nothing.
+  BilateralDepthRelaxKernel::Workspace m_KernelWorkspace;
 };
 
 } // namespace itk

@@ -5,7 +5,9 @@
 
 #include "itkMultiThreaderBase.h"
 
+#include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 namespace itk
@@ -108,6 +110,73 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateData()
 template <typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHost()
+{
+  if constexpr (std::is_same<PixelType, float>::value)
+  {
+    const ImageType * depth = this->GetInput();
+    if (BilateralDepthRelaxKernel::IsWithinRange(
+          depth->GetBufferPointer(), depth->GetBufferedRegion().GetNumberOfPixels(), m_Anisotropy))
+    {
+      this->RelaxOnHostFast();
+      return;
+    }
+  }
+  this->RelaxOnHostGeneric();
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
+{
+  const ImageType *     depth = this->GetInput();
+  const MaskImageType * mask = this->GetFixedMask();
+  ImageType *           output = this->GetOutput();
+  const auto            size = depth->GetLargestPossibleRegion().GetSize();
+
+  // The kernel reads the mask as bytes, non-zero = fixed.
+  const unsigned char *      fixed = nullptr;
+  std::vector<unsigned char> fixedBytes;
+  if (mask)
+  {
+    if constexpr (std::is_same<typename MaskImageType::PixelType, unsigned char>::value)
+    {
+      fixed = mask->GetBufferPointer();
+    }
+    else
+    {
+      const auto * values = mask->GetBufferPointer();
+      fixedBytes.resize(mask->GetBufferedRegion().GetNumberOfPixels());
+      for (std::size_t k = 0; k < fixedBytes.size(); ++k)
+      {
+        fixedBytes[k] = values[k] != 0 ? 1 : 0;
+      }
+      fixed = fixedBytes.data();
+    }
+  }
+
+  // ITK's pool threader hands out several work units per thread; the kernel's team needs real threads, one per
+  // core ITK uses, or its barrier would wait on threads that share a core.
+  const unsigned int threads =
+    std::max(1u, std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads()));
+  const unsigned int iterations = m_NumberOfIterations;
+  BilateralDepthRelaxKernel::Relax(depth->GetBufferPointer(),
+                                   fixed,
+                                   output->GetBufferPointer(),
+                                   size[0],
+                                   size[1],
+                                   m_Relaxation,
+                                   m_Anisotropy,
+                                   iterations,
+                                   threads,
+                                   [this, iterations](unsigned int done) {
+                                     this->UpdateProgress(static_cast<float>(done) / iterations);
+                                   },
+                                   &m_KernelWorkspace);
+}
+
+template <typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
 {
   const ImageType *     depth = this->GetInput();
   const MaskImageType * mask = this->GetFixedMask();

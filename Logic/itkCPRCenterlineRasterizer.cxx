@@ -150,6 +150,13 @@ CPRCenterlinePixels
 RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view)
 {
   CPRCenterlinePixels pixels;
+  RasterizeCenterlines(tree, view, pixels);
+  return pixels;
+}
+
+void
+RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view, CPRCenterlinePixels & pixels)
+{
   pixels.Width = view.GetSize()[0];
   pixels.Height = view.GetSize()[1];
   const std::size_t count = static_cast<std::size_t>(pixels.Width) * pixels.Height;
@@ -179,7 +186,6 @@ RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view)
       RasterizeSegment(projected[p], projected[p + 1], owner, writer, pixels.Width, pixels.Height);
     }
   }
-  return pixels;
 }
 
 } // namespace itk

@@ -39,6 +39,9 @@ struct CPRCenterlinePixels
  * (nearer the viewer) wins, then the smaller branch id. */
 CPRCenterlinePixels
 RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view);
+/** As above, into \a pixels, reusing its memory (a view that rotates needs no new allocation). */
+void
+RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view, CPRCenterlinePixels & pixels);
 
 } // namespace itk
 

@@ -246,8 +246,20 @@ AssignDepth(const CPRCenterlinePixels & pixels,
             bool                        fixLumen,
             MultiThreaderBase *         threader)
 {
-  const std::size_t  count = static_cast<std::size_t>(pixels.Width) * pixels.Height;
   CPRDepthAssignment result;
+  AssignDepth(pixels, mode, spacing, fixLumen, threader, result);
+  return result;
+}
+
+void
+AssignDepth(const CPRCenterlinePixels & pixels,
+            CPRDepthMode                mode,
+            const Vector<double, 2> &   spacing,
+            bool                        fixLumen,
+            MultiThreaderBase *         threader,
+            CPRDepthAssignment &        result)
+{
+  const std::size_t count = static_cast<std::size_t>(pixels.Width) * pixels.Height;
   result.Depth.assign(count, 0.0f);
   result.Fixed.assign(count, 0);
   result.Owner.assign(count, 0);
@@ -259,7 +271,6 @@ AssignDepth(const CPRCenterlinePixels & pixels,
   {
     AssignNearest(pixels, spacing, fixLumen, threader, result);
   }
-  return result;
 }
 
 } // namespace itk

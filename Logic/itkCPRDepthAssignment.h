@@ -40,6 +40,14 @@ AssignDepth(const CPRCenterlinePixels & pixels,
             const Vector<double, 2> &   spacing,
             bool                        fixLumen,
             MultiThreaderBase *         threader);
+/** As above, into \a result, reusing its memory (a view that rotates needs no new allocation). */
+void
+AssignDepth(const CPRCenterlinePixels & pixels,
+            CPRDepthMode                mode,
+            const Vector<double, 2> &   spacing,
+            bool                        fixLumen,
+            MultiThreaderBase *         threader,
+            CPRDepthAssignment &        result);
 
 } // namespace itk
 

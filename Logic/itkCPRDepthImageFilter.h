@@ -1,6 +1,7 @@
 #ifndef itkCPRDepthImageFilter_h
 #define itkCPRDepthImageFilter_h
 
+#include "itkCPRCenterlineRasterizer.h"
 #include "itkCPRDepthAssignment.h"
 #include "itkCPRViewGeometry.h"
 #include "itkCenterlineTree.h"
@@ -129,6 +130,10 @@ private:
   CPRViewGeometry      m_View;
   CPRDepthMode         m_Mode{ CPRDepthMode::Scanline };
   bool                 m_FixLumen{ true };
+
+  // Work buffers kept between updates: a new angle then allocates (and page-faults) nothing.
+  CPRCenterlinePixels m_CenterlinePixels;
+  CPRDepthAssignment  m_Assignment;
 };
 
 } // namespace itk

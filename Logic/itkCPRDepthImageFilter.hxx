@@ -3,8 +3,6 @@
 
 #include "itkCPRDepthImageFilter.h"
 
-#include "itkCPRCenterlineRasterizer.h"
-
 #include <algorithm>
 
 namespace itk
@@ -112,16 +110,20 @@ CPRDepthImageFilter<TDepthImage>::GenerateData()
   labels->SetBufferedRegion(labels->GetRequestedRegion());
   labels->Allocate();
 
-  const CPRCenterlinePixels centerlinePixels = RasterizeCenterlines(m_CenterlineTree, m_View);
+  RasterizeCenterlines(m_CenterlineTree, m_View, m_CenterlinePixels);
   this->UpdateProgress(0.3f);
   MultiThreaderBase * threader = this->GetMultiThreader();
   threader->SetNumberOfWorkUnits(this->GetNumberOfWorkUnits());
-  const CPRDepthAssignment assignment =
-    AssignDepth(centerlinePixels, m_Mode, m_View.GetSpacing(), m_FixLumen && m_CenterlineTree.HasRadii(), threader);
+  AssignDepth(m_CenterlinePixels,
+              m_Mode,
+              m_View.GetSpacing(),
+              m_FixLumen && m_CenterlineTree.HasRadii(),
+              threader,
+              m_Assignment);
 
-  std::copy(assignment.Depth.begin(), assignment.Depth.end(), depth->GetBufferPointer());
-  std::copy(assignment.Fixed.begin(), assignment.Fixed.end(), mask->GetBufferPointer());
-  std::copy(assignment.Owner.begin(), assignment.Owner.end(), labels->GetBufferPointer());
+  std::copy(m_Assignment.Depth.begin(), m_Assignment.Depth.end(), depth->GetBufferPointer());
+  std::copy(m_Assignment.Fixed.begin(), m_Assignment.Fixed.end(), mask->GetBufferPointer());
+  std::copy(m_Assignment.Owner.begin(), m_Assignment.Owner.end(), labels->GetBufferPointer());
   this->UpdateProgress(1.0f);
 }
 

@@ -142,8 +142,28 @@ private:
   double               m_SlabThickness{ 0.0 };
   CPRSlabMode          m_SlabMode{ CPRSlabMode::MIP };
 
+  /** Trilinear interpolation straight from the volume's buffer: the same arithmetic, in the same order, as
+   * itk::LinearInterpolateImageFunction (3D), which costs most of a CPR's time through its general interface.
+   * \a index must pass IsInsideBuffer. */
+  double
+  InterpolateLinearly(const ContinuousIndexType & index) const;
+  /** The smallest voxel value, computed again only when the volume (object, buffer or modification time)
+   * changes: rotating the view does not change it. */
+  OutputPixelType
+  VolumeMinimum();
+
   // Per-update state, set in BeforeThreadedGenerateData.
   typename InterpolatorType::Pointer m_Interpolator;
+  const typename VolumeImageType::PixelType * m_VolumeBuffer{ nullptr };
+  typename VolumeImageType::IndexType         m_VolumeBufferStart;
+  typename VolumeImageType::IndexType         m_VolumeBufferEnd;
+  typename VolumeImageType::OffsetValueType   m_VolumeOffsetTable[3]{};
+
+  // VolumeMinimum()'s cache.
+  const VolumeImageType *                     m_MinimumVolume{ nullptr };
+  const typename VolumeImageType::PixelType * m_MinimumBuffer{ nullptr };
+  ModifiedTimeType                            m_MinimumVolumeTime{ 0 };
+  OutputPixelType                             m_CachedVolumeMinimum{};
   OutputPixelType                    m_OutsideValue{};
   ContinuousIndexType                m_IndexAtCenter;
   Vector<double, 3>                  m_IndexStepPerColumn;

@@ -1,0 +1,142 @@
+// Relax_CPU/W/H: BilateralDepthRelaxFilter on the CPU (all cores, the widest instruction set); Relax_Plain/W/H:
+// the plain reference (a scalar double loop over Eq. 1, one thread) on the same input, for the ratio;
+// Relax_Generic/512/1024: the filter's previous CPU loop (now its generic path), for a second ratio;
+// Relax_CPU_<set>/512/1024: the CPU relax forced to a narrower instruction set. The paper's filter
+// settings: 500 iterations, w = 1; a = 0.5 mm^-2 (the filter's defaults).
+#include "vrBenchmarkScene.h"
+
+#include "PlainBilateralDepthRelax.h"
+
+#include "itkBilateralDepthRelaxFilter.h"
+#include "itkBilateralDepthRelaxKernel.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+
+namespace
+{
+using vr::benchmarks::DepthImage;
+using vr::benchmarks::PhantomScene;
+
+constexpr unsigned int Iterations = 500;
+constexpr double       Relaxation = 1.0;
+constexpr double       Anisotropy = 0.5;
+
+void
+RelaxCPU(benchmark::State & state)
+{
+  const auto & map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
+  auto         filter = itk::BilateralDepthRelaxFilter<DepthImage>::New();
+  filter->SetDepthInput(map.Depth);
+  filter->SetFixedMask(map.Fixed);
+  filter->SetRelaxation(Relaxation);
+  filter->SetAnisotropy(Anisotropy);
+  filter->SetNumberOfIterations(Iterations);
+  for (auto _ : state)
+  {
+    filter->Modified();
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
+  }
+  // The filter's team: one thread per work unit, at most as many as the threader's threads.
+  const unsigned int threads =
+    std::min(filter->GetNumberOfWorkUnits(), filter->GetMultiThreader()->GetMaximumNumberOfThreads());
+  state.SetLabel(itk::BilateralDepthRelaxKernel::GetInstructionSet() + ", " + std::to_string(threads) + " threads");
+}
+
+/** The same relax with a narrower instruction set than the processor's widest: how a build runs elsewhere. */
+void
+RelaxCPUWithInstructionSet(benchmark::State & state, const std::string & instructionSet)
+{
+  itk::BilateralDepthRelaxKernel::SetInstructionSet(instructionSet);
+  RelaxCPU(state);
+  itk::BilateralDepthRelaxKernel::SetInstructionSet("");
+}
+
+/** The filter's previous CPU loop, kept as its generic path for pixel types other than float: Eq. 1 in double,
+ * one exponential per neighbour, rows through ITK's threader (all cores). Run on a double copy of the map. */
+void
+RelaxGeneric(benchmark::State & state)
+{
+  using DoubleImage = itk::Image<double, 2>;
+  const auto & map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
+  auto         depth = DoubleImage::New();
+  depth->CopyInformation(map.Depth);
+  depth->SetRegions(map.Depth->GetLargestPossibleRegion());
+  depth->Allocate();
+  std::copy_n(
+    map.Depth->GetBufferPointer(), map.Depth->GetBufferedRegion().GetNumberOfPixels(), depth->GetBufferPointer());
+  auto filter = itk::BilateralDepthRelaxFilter<DoubleImage>::New();
+  filter->SetDepthInput(depth);
+  filter->SetFixedMask(map.Fixed);
+  filter->SetRelaxation(Relaxation);
+  filter->SetAnisotropy(Anisotropy);
+  filter->SetNumberOfIterations(Iterations);
+  for (auto _ : state)
+  {
+    filter->Modified();
+    filter->Update();
+    benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
+  }
+  state.SetLabel("generic loop, double image, " + std::to_string(filter->GetNumberOfWorkUnits()) + " work units");
+}
+
+void
+RelaxPlain(benchmark::State & state)
+{
+  const auto &             map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
+  const auto               size = map.Depth->GetLargestPossibleRegion().GetSize();
+  const std::vector<float> depth(map.Depth->GetBufferPointer(), map.Depth->GetBufferPointer() + size[0] * size[1]);
+  const std::vector<unsigned char> fixed(map.Fixed->GetBufferPointer(),
+                                         map.Fixed->GetBufferPointer() + size[0] * size[1]);
+  for (auto _ : state)
+  {
+    auto relaxed =
+      vr::test::PlainBilateralDepthRelax(depth, fixed, size[0], size[1], Relaxation, Anisotropy, Iterations);
+    benchmark::DoNotOptimize(relaxed.data());
+  }
+  state.SetLabel("scalar double loop, 1 thread");
+}
+
+const bool Registered = []
+{
+  for (const auto & size : { std::pair<long, long>{ 256, 768 }, std::pair<long, long>{ 512, 1024 } })
+  {
+    benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU)
+      ->Args({ size.first, size.second })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Repetitions(10)
+      ->ReportAggregatesOnly();
+    // Seconds per run: a few runs give a stable median.
+    benchmark::RegisterBenchmark("Relax_Plain", RelaxPlain)
+      ->Args({ size.first, size.second })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Iterations(1)
+      ->Repetitions(3)
+      ->ReportAggregatesOnly();
+  }
+  benchmark::RegisterBenchmark("Relax_Generic", RelaxGeneric)
+    ->Args({ 512, 1024 })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
+  const auto supported = itk::BilateralDepthRelaxKernel::GetSupportedInstructionSets();
+  for (std::size_t k = 1; k < supported.size(); ++k)
+  {
+    // "AVX2+FMA" -> "Relax_CPU_AVX2+FMA": no slash, so the name keeps its W/H fields.
+    benchmark::RegisterBenchmark(("Relax_CPU_" + supported[k]).c_str(), RelaxCPUWithInstructionSet, supported[k])
+      ->Args({ 512, 1024 })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Iterations(1)
+      ->Repetitions(5)
+      ->ReportAggregatesOnly();
+  }
+  return true;
+}();
+} // namespace

@@ -1,0 +1,193 @@
+#!/usr/bin/env python3
+"""Prints the paper's Table 1 beside this machine's figures, from VesselReformationBenchmarks' JSON output.
+
+    benchmark_table.py --run build/bin/VesselReformationBenchmarks [--json-out results.json] [-- ARGS...]
+    benchmark_table.py --json results.json
+
+--run runs the benchmark executable (its console output goes to stderr; ARGS after -- are passed on, e.g.
+--benchmark_filter=Relax) and reads the JSON it writes; --json reads a file written earlier with
+--benchmark_out=FILE --benchmark_out_format=json. Figures are medians of the repetitions, real time, in ms.
+Python 3 standard library only.
+"""
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+SIZES = [(256, 768), (512, 1024)]
+
+# Kretschmer, Preim, Stamminger, EuroVis 2014, Table 1: Intel i5, 4 cores @ 3.1 GHz; GeForce GTX 760; 500 passes.
+PAPER = {
+    "mpCPR": {(256, 768): 40, (512, 1024): 113},
+    "filter CPU": {(256, 768): 2486, (512, 1024): 6748},
+    "filter GPU": {(256, 768): 33, (512, 1024): 75},
+    "total GPU": {(256, 768): 74, (512, 1024): 189},
+}
+
+# DESIGN section 4 and issue 5, at 512 x 1024 on the 2-core machine.
+TARGETS = [
+    ("CPU relax, 500 iterations", "Relax_CPU", 150.0),
+    ("depth + resample for a new angle", "DepthResample", 30.0),
+    ("whole pipeline on the CPU", "Pipeline_CPU", 250.0),
+]
+MINIMUM_SPEED_UP = 15.0
+
+SUFFIX = re.compile(r"/(repeats|iterations|min_time|threads):[^/]*|/real_time|/manual_time|/process_time")
+
+
+def base_name(run_name):
+    """'Relax_CPU/512/1024/repeats:10/real_time' -> 'Relax_CPU/512/1024'."""
+    return SUFFIX.sub("", run_name)
+
+
+def to_milliseconds(value, unit):
+    return value * {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}[unit]
+
+
+def read_medians(report):
+    """Median real time (ms) per benchmark; a benchmark run without repetitions counts as its own median."""
+    medians, singles = {}, {}
+    for entry in report.get("benchmarks", []):
+        if entry.get("error_occurred"):
+            continue
+        name = base_name(entry.get("run_name", entry["name"]))
+        time = to_milliseconds(entry["real_time"], entry.get("time_unit", "ns"))
+        if entry.get("run_type") == "aggregate":
+            if entry.get("aggregate_name") == "median":
+                medians[name] = time
+        else:
+            singles.setdefault(name, []).append(time)
+    for name, times in singles.items():
+        if name not in medians:
+            times = sorted(times)
+            middle = len(times) // 2
+            medians[name] = times[middle] if len(times) % 2 else 0.5 * (times[middle - 1] + times[middle])
+    return medians
+
+
+def milliseconds(value):
+    if value is None:
+        return "–"
+    if isinstance(value, int):
+        return f"{value} ms"
+    return f"{value:.0f} ms" if value >= 100 else f"{value:.1f} ms"
+
+
+def ratio(numerator, denominator):
+    if numerator is None or denominator is None or denominator <= 0:
+        return "–"
+    return f"{numerator / denominator:.0f}×" if numerator / denominator >= 10 else f"{numerator / denominator:.1f}×"
+
+
+def table(report):
+    medians = read_medians(report)
+    context = report.get("context", {})
+
+    def ours(stage, size):
+        return medians.get(f"{stage}/{size[0]}/{size[1]}")
+
+    header = "| 500 filter passes | " + " | ".join(
+        f"{w}×{h} paper | {w}×{h} ours" for w, h in SIZES) + " |"
+    lines = [header, "|---|" + "---:|---:|" * len(SIZES)]
+
+    def row(label, paper_key, stage, extra=None):
+        cells = []
+        for size in SIZES:
+            paper = PAPER.get(paper_key, {}).get(size) if paper_key else None
+            value = ours(stage, size) if stage else None
+            text = milliseconds(value)
+            if extra and value is not None:
+                text += extra(size, value)
+            cells += [milliseconds(paper) if paper else "–", text]
+        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+
+    row("mpCPR depth (new angle)", "mpCPR", "Depth")
+    row("filter, CPU", "filter CPU", "Relax_CPU",
+        lambda size, value: f" ({ratio(ours('Relax_Plain', size), value)} plain, "
+                            f"{ratio(PAPER['filter CPU'][size], value)} paper CPU)")
+    row("filter, plain reference (scalar double, 1 thread)", None, "Relax_Plain")
+    row("filter, GPU / OpenCL", "filter GPU", "Relax_OpenCL",
+        lambda size, value: f" ({ratio(ours('Relax_Plain', size), value)} plain)")
+    row("resample (linear)", None, "Resample")
+    row("depth + resample (new angle)", None, "DepthResample")
+    row("total: depth + CPU filter + resample", None, "Pipeline_CPU")
+    row("total: depth + GPU/OpenCL filter + resample", "total GPU", "Pipeline_OpenCL")
+
+    others = sorted(name for name in medians if name.startswith("Relax_CPU_"))
+    notes = []
+    for name in sorted(name for name in medians if name.startswith("Relax_Generic/")):
+        _, width, height = name.split("/")
+        cpu = medians.get(f"Relax_CPU/{width}/{height}")
+        notes.append(f"- the filter's previous CPU loop (now its generic path: double, all cores), {width}×{height}: "
+                     f"{milliseconds(medians[name])}; the CPU relax is {ratio(medians[name], cpu)} faster")
+    for name in others:
+        stage, width, height = name.split("/")
+        plain = medians.get(f"Relax_Plain/{width}/{height}")
+        notes.append(f"- {stage[len('Relax_CPU_'):]} instead of {context.get('relax_instruction_set', '?')} "
+                     f"(a build running elsewhere), {width}×{height}: {milliseconds(medians[name])}, "
+                     f"{ratio(plain, medians[name])} the plain reference")
+
+    checks = []
+    big = SIZES[-1]
+    for label, stage, limit in TARGETS:
+        value = ours(stage, big)
+        if value is None:
+            checks.append(f"- {label} ≤ {limit:.0f} ms: not measured")
+        else:
+            verdict = "met" if value <= limit else f"MISSED by {value - limit:.1f} ms"
+            checks.append(f"- {label} ≤ {limit:.0f} ms at {big[0]}×{big[1]}: {milliseconds(value)}, {verdict}")
+    cpu, plain = ours("Relax_CPU", big), ours("Relax_Plain", big)
+    if cpu and plain:
+        speed_up = plain / cpu
+        verdict = "met" if speed_up >= MINIMUM_SPEED_UP else "MISSED"
+        checks.append(f"- CPU relax ≥ {MINIMUM_SPEED_UP:.0f}× the plain reference in the same run: "
+                      f"{speed_up:.1f}×, {verdict}")
+
+    machine = (f"Ours: {context.get('cpu_model', 'unknown CPU')}, {context.get('num_cpus', '?')} CPUs "
+               f"({context.get('itk_threads', '?')} ITK threads), relax kernel "
+               f"{context.get('relax_instruction_set', '?')}, {context.get('build_type', '?')} build "
+               f"({context.get('cxx_flags', '').strip() or 'default flags'}); "
+               f"medians of repetitions, real time; {context.get('date', '')}.")
+    paper = ("Paper: Kretschmer, Preim, Stamminger, EuroVis 2014, Table 1: Intel i5, 4 cores @ 3.1 GHz, "
+             "GeForce GTX 760 (its mpCPR column is the depth map).")
+    return "\n".join([machine, paper, ""] + lines + [""] + notes + ([""] if notes else []) + ["Targets:"] + checks)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument("--run", metavar="EXE", help="run this benchmark executable")
+    source.add_argument("--json", metavar="FILE", help="read this JSON output")
+    parser.add_argument("--json-out", metavar="FILE", help="with --run: keep the JSON here")
+    parser.add_argument("extra", nargs="*", help="with --run: arguments for the executable (after --)")
+    arguments = parser.parse_args()
+
+    if arguments.json:
+        if arguments.extra or arguments.json_out:
+            parser.error("--json takes no executable arguments or --json-out")
+        try:
+            with open(arguments.json, encoding="utf-8") as file:
+                report = json.load(file)
+        except (OSError, ValueError) as error:
+            sys.exit(f"benchmark_table.py: cannot read --json {arguments.json}: {error}")
+    else:
+        if not (os.path.isfile(arguments.run) and os.access(arguments.run, os.X_OK)):
+            sys.exit(f"benchmark_table.py: --run {arguments.run} is not an executable file")
+        out = arguments.json_out or tempfile.NamedTemporaryFile(suffix=".json", delete=False).name
+        command = [arguments.run, f"--benchmark_out={out}", "--benchmark_out_format=json"] + arguments.extra
+        status = subprocess.run(command, stdout=sys.stderr).returncode
+        if status != 0:
+            sys.exit(f"benchmark_table.py: {' '.join(command)} failed with exit status {status}")
+        with open(out, encoding="utf-8") as file:
+            report = json.load(file)
+        if not arguments.json_out:
+            os.unlink(out)
+    print(table(report))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,29 @@
+#ifndef PlainBilateralDepthRelax_h
+#define PlainBilateralDepthRelax_h
+
+#include <cstddef>
+#include <vector>
+
+namespace vr::test
+{
+/** The plain reference of BilateralDepthRelaxFilter: Eq. 1 of DESIGN 3.5 evaluated exactly as written, in double,
+ * one pixel and one neighbour at a time, written independently of the fast kernel to check it and to time it.
+ *
+ *   D'_p = ((1 - w) |Omega| D_p + w sum_q R(D_p - D_q) D_q) / ((1 - w) |Omega| + w sum_q R(D_p - D_q)),
+ *   R(x) = exp(-a x^2), and R = 0 when a x^2 > -ln(FLT_MIN) (the filter's underflow rule).
+ *
+ * Jacobi: every pixel reads iteration k and writes k + 1; the state stays in double between iterations. Fixed
+ * pixels (fixed[k] != 0; \a fixed may be empty) keep their value; a zero denominator keeps D_p.
+ * \param depth row-major width x height depths in mm. \param relaxation w. \param anisotropy a in mm^-2.
+ * \return the relaxed depths, row-major, in mm. */
+std::vector<double>
+PlainBilateralDepthRelax(const std::vector<float> &         depth,
+                         const std::vector<unsigned char> & fixed,
+                         std::size_t                        width,
+                         std::size_t                        height,
+                         double                             relaxation,
+                         double                             anisotropy,
+                         unsigned int                       iterations);
+} // namespace vr::test
+
+#endif
