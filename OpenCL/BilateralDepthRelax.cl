@@ -3,6 +3,11 @@
 //   D'_p = D_p + w sum R (D_q - D_p) / ((1 - w)|Omega| + w sum R),   R(x) = exp(-a x^2),
 // R = 0 when a x^2 > WEIGHT_UNDERFLOW_EXPONENT, a zero denominator keeps D_p, fixed pixels keep their value.
 //
+// Depths are pairs of floats, high + low, like the CPU kernel's (itkBilateralDepthRelaxKernel.h): a plain float
+// loses the small late steps to rounding and drifts by a few 1e-4 mm over 500 iterations. Each buffer holds the
+// high plane and, `plane` floats further, the low plane. Differences are (high_q - high_p) + (low_q - low_p); the
+// new depth is D + step as a new pair (Fast2Sum).
+//
 // The host prepends these definitions:
 //   VECTOR_WIDTH               lanes per vector: 1, 2, 4, 8 or 16 (the device's preferred float width)
 //   VECTORS_PER_ITEM           vectors a work-item relaxes side by side in a row
@@ -10,7 +15,7 @@
 //   LOCAL_WIDTH, LOCAL_HEIGHT  the work-group size
 //   WEIGHT_UNDERFLOW_EXPONENT  BilateralDepthRelaxFilter::WeightUnderflowExponent
 //
-// Layout: row y of a W-pixel image starts at y * pitch; pixel x lies at y * pitch + VECTOR_WIDTH + x. The pitch
+// Layout (in each plane): row y of a W-pixel image starts at y * pitch; pixel x lies at y * pitch + VECTOR_WIDTH + x. The pitch
 // holds a vector of padding before the row and at least one pixel after it, and the pixels of a row are padded to
 // whole blocks of VECTORS_PER_ITEM vectors, so every load and store is inside the buffer. Padding holds finite
 // values (the host fills it with 0) and never changes: lanes outside the image are kept like fixed pixels.
@@ -76,7 +81,8 @@ RelaxIteration(__global const float * restrict current,
                const int                       pitch,
                const int                       blocksPerRow,
                const float                     relaxation,
-               const float                     anisotropy)
+               const float                     anisotropy,
+               const int                       plane)
 {
   const int block = get_global_id(0);
   const int firstRow = get_global_id(1) * ROWS_PER_ITEM;
@@ -97,7 +103,9 @@ RelaxIteration(__global const float * restrict current,
     for (int v = 0; v < VECTORS_PER_ITEM; ++v)
     {
       const int        k = VECTOR_WIDTH + firstColumn + v * VECTOR_WIDTH;
-      const RealVector fromAbove = LOAD_REALS(current + firstRow * pitch + k) - LOAD_REALS(current + aboveRow * pitch + k);
+      const RealVector fromAbove =
+        (LOAD_REALS(current + firstRow * pitch + k) - LOAD_REALS(current + aboveRow * pitch + k)) +
+        (LOAD_REALS(current + plane + firstRow * pitch + k) - LOAD_REALS(current + plane + aboveRow * pitch + k));
       upWeight[v] = EDGE_WEIGHT(fromAbove, (IntVector)(upValid));
       upWeightedDifference[v] = upWeight[v] * fromAbove;
     }
@@ -111,12 +119,14 @@ RelaxIteration(__global const float * restrict current,
 
     __global const float * row = current + y * pitch + VECTOR_WIDTH;
     __global const float * below = current + belowRow * pitch + VECTOR_WIDTH;
+    __global const float * rowLow = row + plane;
+    __global const float * belowLow = below + plane;
 
     // The left-edge of the block's first pixel, as if it were the right-edge of a vector before the block.
     RealVector previousRightWeight;
     RealVector previousRightWeightedDifference;
     {
-      const float toLeft = row[firstColumn - 1] - row[firstColumn];
+      const float toLeft = (row[firstColumn - 1] - row[firstColumn]) + (rowLow[firstColumn - 1] - rowLow[firstColumn]);
       const float weight = (firstColumn > 0 && anisotropy * toLeft * toLeft <= WEIGHT_UNDERFLOW_EXPONENT)
                              ? exp(-anisotropy * toLeft * toLeft)
                              : 0.0f;
@@ -129,8 +139,9 @@ RelaxIteration(__global const float * restrict current,
       const int        x0 = firstColumn + v * VECTOR_WIDTH;
       const IntVector  x = (IntVector)(x0) + LANE_INDICES;
       const RealVector dp = LOAD_REALS(row + x0);
-      const RealVector toRight = LOAD_REALS(row + x0 + 1) - dp;
-      const RealVector toBelow = LOAD_REALS(below + x0) - dp;
+      const RealVector dpLow = LOAD_REALS(rowLow + x0);
+      const RealVector toRight = (LOAD_REALS(row + x0 + 1) - dp) + (LOAD_REALS(rowLow + x0 + 1) - dpLow);
+      const RealVector toBelow = (LOAD_REALS(below + x0) - dp) + (LOAD_REALS(belowLow + x0) - dpLow);
 
       const RealVector rightWeight = EDGE_WEIGHT(toRight, x + 1 < (IntVector)(width));
       const RealVector rightWeightedDifference = rightWeight * toRight;
@@ -148,11 +159,15 @@ RelaxIteration(__global const float * restrict current,
       const RealVector weightedDifference =
         leftWeightedDifference + rightWeightedDifference - upWeightedDifference[v] + downWeightedDifference;
       const RealVector denominator = selfWeight * neighbours + relaxation * weightSum;
-      const RealVector relaxed = dp + relaxation * weightedDifference / denominator;
+      const RealVector step = relaxation * weightedDifference / denominator;
+      const RealVector lowAndStep = dpLow + step;
+      const RealVector relaxed = dp + lowAndStep;
+      const RealVector relaxedLow = lowAndStep - (relaxed - dp);
 
       const IntVector keep = (LOAD_BYTES_AS_INTS(fixedMask + y * pitch + VECTOR_WIDTH + x0) != (IntVector)(0)) |
                              (x >= (IntVector)(width)) | !(denominator > (RealVector)(0.0f));
       STORE_REALS(select(relaxed, dp, keep), next + y * pitch + VECTOR_WIDTH + x0);
+      STORE_REALS(select(relaxedLow, dpLow, keep), next + plane + y * pitch + VECTOR_WIDTH + x0);
 
       previousRightWeight = rightWeight;
       previousRightWeightedDifference = rightWeightedDifference;

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <vector>
 #include <climits>
 #include <iomanip>
 #include <locale>
@@ -240,8 +241,9 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
   const std::size_t vectorWidth = shape.VectorWidth;
   const std::size_t blockWidth = vectorWidth * shape.VectorsPerItem;
   const std::size_t pitch = vectorWidth + RoundUp(width, blockWidth) + vectorWidth;
-  // The kernel indexes pixels with int.
-  if (pitch * height > static_cast<std::size_t>(INT_MAX))
+  // Each buffer holds the high and the low plane of the depth pairs. The kernel indexes floats with int.
+  const std::size_t plane = pitch * height;
+  if (2 * plane > static_cast<std::size_t>(INT_MAX))
   {
     itkExceptionMacro(<< "the depth image of " << width << " x " << height
                       << " pixels is too large for the OpenCL kernel (at most " << INT_MAX << " padded pixels)");
@@ -265,8 +267,8 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       state.Width = state.Height = state.Pitch = 0;
       for (auto & buffer : state.Depth)
       {
-        buffer = cl::Buffer(state.Context, CL_MEM_READ_WRITE, pitch * height * sizeof(float));
-        state.Queue.enqueueFillBuffer(buffer, 0.0f, 0, pitch * height * sizeof(float));
+        buffer = cl::Buffer(state.Context, CL_MEM_READ_WRITE, 2 * plane * sizeof(float));
+        state.Queue.enqueueFillBuffer(buffer, 0.0f, 0, 2 * plane * sizeof(float));
       }
       state.Mask = cl::Buffer(state.Context, CL_MEM_READ_ONLY, pitch * height);
       state.Width = width;
@@ -284,6 +286,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
                                        width * sizeof(float),
                                        0,
                                        depth->GetBufferPointer());
+    state.Queue.enqueueFillBuffer(state.Depth[0], 0.0f, plane * sizeof(float), plane * sizeof(float)); // low = 0
     if (mask)
     {
       state.Queue.enqueueWriteBufferRect(
@@ -306,6 +309,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       kernel.setArg(6, static_cast<cl_int>(blocksPerRow));
       kernel.setArg(7, static_cast<cl_float>(this->GetRelaxation()));
       kernel.setArg(8, static_cast<cl_float>(this->GetAnisotropy()));
+      kernel.setArg(9, static_cast<cl_int>(plane));
     }
     // Progress, and a chance to abort, about ProgressReports times per update: the host waits for the queue once
     // per chunk of iterations, never once per iteration.
@@ -327,8 +331,11 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
         throw aborted;
       }
     }
+    // One download of both planes; the depth is high + low.
+    std::vector<float>                lowPlane(width * height);
+    const std::array<std::size_t, 3> lowOrigin{ vectorWidth * sizeof(float), height, 0 };
     state.Queue.enqueueReadBufferRect(state.Depth[iterations % 2],
-                                      CL_TRUE,
+                                      CL_FALSE,
                                       depthOrigin,
                                       hostOrigin,
                                       depthRegion,
@@ -337,6 +344,21 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
                                       width * sizeof(float),
                                       0,
                                       output->GetBufferPointer());
+    state.Queue.enqueueReadBufferRect(state.Depth[iterations % 2],
+                                      CL_TRUE,
+                                      lowOrigin,
+                                      hostOrigin,
+                                      depthRegion,
+                                      pitch * sizeof(float),
+                                      0,
+                                      width * sizeof(float),
+                                      0,
+                                      lowPlane.data());
+    float * relaxed = output->GetBufferPointer();
+    for (std::size_t k = 0; k < lowPlane.size(); ++k)
+    {
+      relaxed[k] += lowPlane[k];
+    }
   }
   catch (const cl::Error & error)
   {
