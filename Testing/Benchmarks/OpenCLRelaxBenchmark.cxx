@@ -1,8 +1,8 @@
 // The OpenCL relax at the paper's sizes (Table 1: 256x768 and 512x1024, 500 iterations), upload and download
 // included, on the run-off phantom's mpCPR depth map at 30 degrees. Names follow Relax_CPU/W/H and Relax_Plain/W/H.
-#include "itkCPRDepthImageFilter.h"
+#include "vrBenchmarkScene.h"
+
 #include "itkOpenCLBilateralDepthRelaxFilter.h"
-#include "itkRunoffPhantomImageSource.h"
 
 #include <benchmark/benchmark.h>
 
@@ -11,26 +11,16 @@
 
 namespace
 {
-using DepthImage = itk::Image<float, 2>;
-
 void
 RelaxOpenCL(benchmark::State & state)
 {
-  const auto width = static_cast<itk::SizeValueType>(state.range(0));
-  const auto height = static_cast<itk::SizeValueType>(state.range(1));
-
-  auto phantom = itk::RunoffPhantomImageSource::New();
-  auto depth = itk::CPRDepthImageFilter<DepthImage>::New();
-  depth->SetCenterlineTree(phantom->GetCenterlineTree());
-  itk::CPRViewSpecification view;
-  view.AngleInDegrees = 30.0;
-  view.ImageSize = { { width, height } };
-  depth->SetViewSpecification(view);
-  depth->Update();
+  const auto  width = static_cast<unsigned int>(state.range(0));
+  const auto  height = static_cast<unsigned int>(state.range(1));
+  const auto &depth = vr::benchmarks::PhantomScene::Instance().GetDepthMap(width, height);
 
   auto relax = itk::OpenCLBilateralDepthRelaxFilter::New();
-  relax->SetDepthInput(depth->GetDepthOutput());
-  relax->SetFixedMask(depth->GetFixedMaskOutput());
+  relax->SetDepthInput(depth.Depth);
+  relax->SetFixedMask(depth.Fixed);
   relax->SetRelaxation(1.0);
   relax->SetAnisotropy(0.5);
   relax->SetNumberOfIterations(500);
