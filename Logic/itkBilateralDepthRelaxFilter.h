@@ -36,7 +36,7 @@ namespace itk
  *
  * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel
  */
-template <typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
+template<typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
 class ITK_TEMPLATE_EXPORT BilateralDepthRelaxFilter : public ImageToImageFilter<TImage, TImage>
 {
 public:
@@ -140,7 +140,7 @@ private:
 } // namespace itk
 
 #ifndef ITK_MANUAL_INSTANTIATION
-#  include "itkBilateralDepthRelaxFilter.hxx"
+#include "itkBilateralDepthRelaxFilter.hxx"
 #endif
 
 namespace itk

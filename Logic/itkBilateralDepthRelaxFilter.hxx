@@ -13,14 +13,14 @@
 namespace itk
 {
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 BilateralDepthRelaxFilter<TImage, TMaskImage>::BilateralDepthRelaxFilter()
 {
   this->SetNumberOfRequiredInputs(1);
   this->AddOptionalInputName("FixedMask");
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyPreconditions() ITKv5_CONST
 {
@@ -35,7 +35,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyPreconditions() ITKv5_CONST
   }
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyInputInformation() ITKv5_CONST
 {
@@ -50,7 +50,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyInputInformation() ITKv5_CO
   Superclass::VerifyInputInformation();
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateInputRequestedRegion()
 {
@@ -64,7 +64,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateInputRequestedRegion()
   }
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::EnlargeOutputRequestedRegion(DataObject * output)
 {
@@ -72,7 +72,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::EnlargeOutputRequestedRegion(Data
   output->SetRequestedRegionToLargestPossibleRegion();
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateOutputInformation()
 {
@@ -80,7 +80,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateOutputInformation()
   this->GetOutput()->SetMetaDataDictionary(this->GetInput()->GetMetaDataDictionary());
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyDepthIsFinite() const
 {
@@ -98,7 +98,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyDepthIsFinite() const
   }
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateData()
 {
@@ -107,7 +107,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateData()
   this->RelaxOnHost();
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHost()
 {
@@ -124,7 +124,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHost()
   this->RelaxOnHostGeneric();
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
 {
@@ -159,22 +159,21 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
   const unsigned int threads =
     std::max(1u, std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads()));
   const unsigned int iterations = m_NumberOfIterations;
-  BilateralDepthRelaxKernel::Relax(depth->GetBufferPointer(),
-                                   fixed,
-                                   output->GetBufferPointer(),
-                                   size[0],
-                                   size[1],
-                                   m_Relaxation,
-                                   m_Anisotropy,
-                                   iterations,
-                                   threads,
-                                   [this, iterations](unsigned int done) {
-                                     this->UpdateProgress(static_cast<float>(done) / iterations);
-                                   },
-                                   &m_KernelWorkspace);
+  BilateralDepthRelaxKernel::Relax(
+    depth->GetBufferPointer(),
+    fixed,
+    output->GetBufferPointer(),
+    size[0],
+    size[1],
+    m_Relaxation,
+    m_Anisotropy,
+    iterations,
+    threads,
+    [this, iterations](unsigned int done) { this->UpdateProgress(static_cast<float>(done) / iterations); },
+    &m_KernelWorkspace);
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
 {
@@ -195,13 +194,15 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
   const double a = m_Anisotropy;
   const double selfWeight = 1.0 - w;
 
-  auto weight = [a](double difference) {
+  auto weight = [a](double difference)
+  {
     const double exponent = a * difference * difference;
     return exponent > WeightUnderflowExponent ? 0.0 : std::exp(-exponent);
   };
 
   // Each row reads only `current` and writes only its own part of `next`, so any split gives the same bits.
-  auto relaxRow = [&](SizeValueType row) {
+  auto relaxRow = [&](SizeValueType row)
+  {
     for (std::size_t column = 0; column < width; ++column)
     {
       const std::size_t k = row * width + column;
@@ -214,7 +215,8 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
       double neighbours = 0.0;
       double weightSum = 0.0;
       double weightedDifference = 0.0;
-      auto   accumulate = [&](std::size_t q) {
+      auto   accumulate = [&](std::size_t q)
+      {
         const double difference = static_cast<double>(current[q]) - dp;
         const double r = weight(difference);
         neighbours += 1.0;
@@ -254,7 +256,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
   std::copy(current.begin(), current.end(), output->GetBufferPointer());
 }
 
-template <typename TImage, typename TMaskImage>
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Indent indent) const
 {

@@ -42,16 +42,16 @@ bool
 SupportsLevel(int level)
 {
   __builtin_cpu_init();
-#  if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
   return level == 4 ? __builtin_cpu_supports("x86-64-v4") : __builtin_cpu_supports("x86-64-v3");
-#  else
+#else
   const bool level3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
                       __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
   return level == 3 ? level3
                     : level3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
                         __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
                         __builtin_cpu_supports("avx512vl");
-#  endif
+#endif
 }
 
 /** The instruction sets this processor runs (CPUID), widest first. */
@@ -103,7 +103,7 @@ DepthScale(double anisotropy)
 }
 
 /** Values aligned to a cache line, zero-filled. */
-template <typename TValue>
+template<typename TValue>
 class AlignedBuffer
 {
 public:

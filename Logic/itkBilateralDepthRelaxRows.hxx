@@ -10,7 +10,7 @@
 #include <cstdint>
 
 #if defined(__AVX512F__)
-#  include <immintrin.h>
+#include <immintrin.h>
 #endif
 
 #define VR_ALWAYS_INLINE inline __attribute__((always_inline))
@@ -22,7 +22,7 @@ namespace BilateralDepthRelaxRows
 namespace
 {
 /** 2^f for |f| <= 1/2: degree-5 minimax polynomial, relative error 7.5e-8 (2.3e-7 after float rounding). */
-template <typename TFloat>
+template<typename TFloat>
 VR_ALWAYS_INLINE TFloat
 TwoToTheFraction(TFloat f)
 {
@@ -37,7 +37,7 @@ TwoToTheFraction(TFloat f)
  * filter's underflow rule; -log2(FLT_MIN) is exactly 126). u = n + f with n an integer and |f| <= 1/2 (f exact);
  * 2^f by a degree-5 minimax polynomial (relative error 7.5e-8, 2.3e-7 after float rounding); 2^n built in the
  * exponent bits, a normal float since n >= -126 on the kept range. */
-template <typename TFloat, typename TBits>
+template<typename TFloat, typename TBits>
 VR_ALWAYS_INLINE TFloat
 PowerOfTwoFromBits(TFloat u)
 {
@@ -52,10 +52,10 @@ PowerOfTwoFromBits(TFloat u)
 
 /** The vector types of one instruction set: N float lanes fill one register (SSE2 4, AVX2 8, AVX-512 16).
  * FloatInMemory is an unaligned view of memory that may alias anything. */
-template <std::size_t N>
+template<std::size_t N>
 struct VectorsOf;
 
-template <>
+template<>
 struct VectorsOf<4>
 {
   static constexpr std::size_t Lanes = 4;
@@ -74,7 +74,7 @@ struct VectorsOf<4>
   }
 };
 
-template <>
+template<>
 struct VectorsOf<8>
 {
   static constexpr std::size_t Lanes = 8;
@@ -93,7 +93,7 @@ struct VectorsOf<8>
   }
 };
 
-template <>
+template<>
 struct VectorsOf<16>
 {
   static constexpr std::size_t Lanes = 16;
@@ -125,16 +125,16 @@ struct VectorsOf<16>
  * whether its row was relaxed alone or together with the next one. Where no such barrier is known, rows are
  * relaxed one at a time (RelaxRowsInPairs). */
 #if defined(__x86_64__) || defined(__i386__)
-#  define VR_RELAX_ROUNDING_BARRIER(x) __asm__("" : "+v"(x))
+#define VR_RELAX_ROUNDING_BARRIER(x) __asm__("" : "+v"(x))
 constexpr bool RelaxRowsInPairs = true;
 #elif defined(__aarch64__)
-#  define VR_RELAX_ROUNDING_BARRIER(x) __asm__("" : "+w"(x))
+#define VR_RELAX_ROUNDING_BARRIER(x) __asm__("" : "+w"(x))
 constexpr bool RelaxRowsInPairs = true;
 #else
-#  define VR_RELAX_ROUNDING_BARRIER(x)
+#define VR_RELAX_ROUNDING_BARRIER(x)
 constexpr bool RelaxRowsInPairs = false;
 #endif
-template <typename TFloat>
+template<typename TFloat>
 VR_ALWAYS_INLINE TFloat
 Rounded(TFloat x)
 {
@@ -142,14 +142,14 @@ Rounded(TFloat x)
   return x;
 }
 
-template <typename V>
+template<typename V>
 VR_ALWAYS_INLINE typename V::Float
 LoadFloats(const float * from)
 {
   return *reinterpret_cast<const typename V::FloatInMemory *>(from);
 }
 
-template <typename V>
+template<typename V>
 VR_ALWAYS_INLINE void
 StoreFloats(float * to, typename V::Float lanes)
 {
@@ -157,14 +157,14 @@ StoreFloats(float * to, typename V::Float lanes)
 }
 
 /** Isotropic (a = 0) edges all weigh 1: no exponential needed. */
-template <typename V>
+template<typename V>
 struct IsotropicWeight
 {
   VR_ALWAYS_INLINE typename V::Float operator()(typename V::Float) const { return typename V::Float{} + 1.0f; }
 };
 
 /** R(x) = exp(-a x^2) with the underflow rule, for differences of depths scaled by sqrt(a log2(e)): 2^-(x^2). */
-template <typename V>
+template<typename V>
 struct RangeWeight
 {
   VR_ALWAYS_INLINE typename V::Float
@@ -202,7 +202,7 @@ struct RowPointers
 
 /** Relaxes one vector of row y: both new edges of each pixel (right and down) are computed here once and
  * handed on, the right one to the next vector (as its left edge), the down one to the next row (as its up edge). */
-template <typename V, bool HasRowBelow, bool IsLastVector, typename TWeight>
+template<typename V, bool HasRowBelow, bool IsLastVector, typename TWeight>
 VR_ALWAYS_INLINE void
 RelaxVector(const TWeight &     weight,
             const RowPointers & rows,
@@ -250,7 +250,7 @@ RelaxVector(const TWeight &     weight,
 
 /** RelaxVector for rows y and y + 1 together: the edge between them is used by both straight from registers,
  * and row y + 1 is loaded once. The same operations in the same order as RelaxVector on each row. */
-template <typename V, bool HasRowBelowPair, bool IsLastVector, typename TWeight>
+template<typename V, bool HasRowBelowPair, bool IsLastVector, typename TWeight>
 VR_ALWAYS_INLINE void
 RelaxVectorPair(const TWeight &     weight,
                 const RowPointers & upper,
@@ -328,7 +328,7 @@ RelaxVectorPair(const TWeight &     weight,
 }
 
 /** The first column of the vector that holds a row's last column. */
-template <typename V>
+template<typename V>
 VR_ALWAYS_INLINE std::size_t
                  LastVectorOfRow(const RelaxGrid & grid)
 {
@@ -336,7 +336,7 @@ VR_ALWAYS_INLINE std::size_t
 }
 
 /** One Jacobi step of row y into \a out; leaves the edges below the row in scratch.Down*. */
-template <typename V, bool HasRowBelow, typename TWeight>
+template<typename V, bool HasRowBelow, typename TWeight>
 VR_ALWAYS_INLINE void
 RelaxRow(const RelaxGrid &  grid,
          const TWeight &    weight,
@@ -369,7 +369,7 @@ RelaxRow(const RelaxGrid &  grid,
 
 /** One Jacobi step of rows y and y + 1 into \a out (two padded rows); uses the edges above row y from
  * scratch.Up* and leaves those below row y + 1 in scratch.Down*. Bit for bit the same as two RelaxRow calls. */
-template <typename V, bool HasRowBelowPair, typename TWeight>
+template<typename V, bool HasRowBelowPair, typename TWeight>
 VR_ALWAYS_INLINE void
 RelaxRowPair(const RelaxGrid &  grid,
              const TWeight &    weight,
@@ -422,7 +422,7 @@ RelaxRowPair(const RelaxGrid &  grid,
 /** One Jacobi iteration of rows [rowBegin, rowEnd): reads \a current (all rows), writes those rows of \a next.
  * The edges above the band come from relaxing the row above into a discarded row with the very same code, so
  * a band boundary changes no bit. */
-template <typename V, typename TWeight>
+template<typename V, typename TWeight>
 VR_ALWAYS_INLINE void
 SweepRows(const RelaxGrid & grid,
           const float *     current,
@@ -477,7 +477,7 @@ SweepRows(const RelaxGrid & grid,
   }
 }
 
-template <typename V>
+template<typename V>
 VR_ALWAYS_INLINE void
 SweepRowsWith(const RelaxGrid & grid,
               const float *     current,

@@ -3,7 +3,7 @@
 #include "itkBilateralDepthRelaxRows.hxx"
 
 #if !defined(__AVX2__) || !defined(__FMA__)
-#  error "itkBilateralDepthRelaxRowsAVX2.cxx must be compiled for x86-64-v3 (-march=x86-64-v3)"
+#error "itkBilateralDepthRelaxRowsAVX2.cxx must be compiled for x86-64-v3 (-march=x86-64-v3)"
 #endif
 
 namespace itk

@@ -3,7 +3,7 @@
 #include "itkBilateralDepthRelaxRows.hxx"
 
 #if !defined(__AVX512F__)
-#  error "itkBilateralDepthRelaxRowsAVX512.cxx must be compiled for x86-64-v4 (-march=x86-64-v4)"
+#error "itkBilateralDepthRelaxRowsAVX512.cxx must be compiled for x86-64-v4 (-march=x86-64-v4)"
 #endif
 
 namespace itk

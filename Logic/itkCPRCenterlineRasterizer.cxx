@@ -21,7 +21,8 @@ class PixelWriter
 public:
   explicit PixelWriter(CPRCenterlinePixels & pixels)
     : m_Pixels(pixels)
-  {}
+  {
+  }
 
   void
   Deposit(long column, long row, double depth, double radius, uint32_t owner)
@@ -71,8 +72,12 @@ ClipAxis(double a, double delta, double low, double high, double & t0, double & 
 }
 
 void
-RasterizeSegment(const ProjectedPoint & a, const ProjectedPoint & b, uint32_t owner, PixelWriter & writer,
-                 SizeValueType width, SizeValueType height)
+RasterizeSegment(const ProjectedPoint & a,
+                 const ProjectedPoint & b,
+                 uint32_t               owner,
+                 PixelWriter &          writer,
+                 SizeValueType          width,
+                 SizeValueType          height)
 {
   const double dx = b.Column - a.Column;
   const double dy = b.Row - a.Row;
@@ -89,12 +94,12 @@ RasterizeSegment(const ProjectedPoint & a, const ProjectedPoint & b, uint32_t ow
   {
     return;
   }
-  auto depositCell = [&](long column, long row) {
+  auto depositCell = [&](long column, long row)
+  {
     // Depth and radius at the segment point nearest the pixel centre.
     double t = ((column - a.Column) * dx + (row - a.Row) * dy) / lengthSquared;
     t = std::min(1.0, std::max(0.0, t));
-    writer.Deposit(
-      column, row, a.Depth + t * (b.Depth - a.Depth), a.Radius + t * (b.Radius - a.Radius), owner);
+    writer.Deposit(column, row, a.Depth + t * (b.Depth - a.Depth), a.Radius + t * (b.Radius - a.Radius), owner);
   };
 
   // Amanatides-Woo traversal of the pixel cells [i - 0.5, i + 0.5) x [j - 0.5, j + 0.5).
@@ -171,7 +176,7 @@ RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view, 
     projected.reserve(branch.Points.size());
     for (std::size_t p = 0; p < branch.Points.size(); ++p)
     {
-      const auto coordinates = view.ToView(branch.Points[p]);
+      const auto   coordinates = view.ToView(branch.Points[p]);
       const double radius = branch.HasRadii() ? branch.Radii[p] : std::numeric_limits<double>::quiet_NaN();
       projected.push_back({ coordinates.Column, coordinates.Row, coordinates.Depth, radius });
     }

@@ -40,14 +40,15 @@ AssignScanline(const CPRCenterlinePixels & pixels,
                MultiThreaderBase *         threader,
                CPRDepthAssignment &        result)
 {
-  const std::size_t width = pixels.Width;
-  const std::size_t height = pixels.Height;
+  const std::size_t          width = pixels.Width;
+  const std::size_t          height = pixels.Height;
   std::vector<unsigned char> rowHasCenterline(height, 0);
 
   threader->ParallelizeArray(
     0,
     height,
-    [&](SizeValueType row) {
+    [&](SizeValueType row)
+    {
       const std::size_t first = row * width;
       std::vector<long> nearestRight(width, None);
       long              next = None;
@@ -69,11 +70,11 @@ AssignScanline(const CPRCenterlinePixels & pixels,
         const long right = nearestRight[column];
         long       chosen = left;
         if (left == None || (right != None && Precedes(right - column,
-                                                        pixels.Depth[first + right],
-                                                        pixels.Owner[first + right],
-                                                        column - left,
-                                                        pixels.Depth[first + left],
-                                                        pixels.Owner[first + left])))
+                                                       pixels.Depth[first + right],
+                                                       pixels.Owner[first + right],
+                                                       column - left,
+                                                       pixels.Depth[first + left],
+                                                       pixels.Owner[first + left])))
         {
           chosen = right;
         }
@@ -145,8 +146,9 @@ AssignNearest(const CPRCenterlinePixels & pixels,
   threader->ParallelizeArray(
     0,
     width,
-    [&](SizeValueType column) {
-      auto pixelIndex = [&](long row) { return static_cast<std::size_t>(row * width) + column; };
+    [&](SizeValueType column)
+    {
+      auto              pixelIndex = [&](long row) { return static_cast<std::size_t>(row * width) + column; };
       std::vector<long> upper(height, None);
       long              previous = None;
       for (long row = 0; row < height; ++row)
@@ -159,13 +161,12 @@ AssignNearest(const CPRCenterlinePixels & pixels,
       {
         lower = pixels.IsCenterline(pixelIndex(row)) ? row : lower;
         long chosen = upper[row];
-        if (chosen == None ||
-            (lower != None && Precedes((lower - row) * spacing[1],
-                                       pixels.Depth[pixelIndex(lower)],
-                                       pixels.Owner[pixelIndex(lower)],
-                                       (row - chosen) * spacing[1],
-                                       pixels.Depth[pixelIndex(chosen)],
-                                       pixels.Owner[pixelIndex(chosen)])))
+        if (chosen == None || (lower != None && Precedes((lower - row) * spacing[1],
+                                                         pixels.Depth[pixelIndex(lower)],
+                                                         pixels.Owner[pixelIndex(lower)],
+                                                         (row - chosen) * spacing[1],
+                                                         pixels.Depth[pixelIndex(chosen)],
+                                                         pixels.Owner[pixelIndex(chosen)])))
         {
           chosen = lower;
         }
@@ -183,7 +184,8 @@ AssignNearest(const CPRCenterlinePixels & pixels,
   threader->ParallelizeArray(
     0,
     height,
-    [&](SizeValueType row) {
+    [&](SizeValueType row)
+    {
       const std::size_t first = row * width;
       for (long column = 0; column < width; ++column)
       {
@@ -224,9 +226,8 @@ AssignNearest(const CPRCenterlinePixels & pixels,
         const std::size_t k = first + column;
         result.Depth[k] = static_cast<float>(bestDepth);
         result.Owner[k] = bestOwner;
-        result.Fixed[k] = (bestSource == k || (fixLumen && IsWithinLumen(pixels, bestSource, std::sqrt(bestDistance))))
-                            ? 1
-                            : 0;
+        result.Fixed[k] =
+          (bestSource == k || (fixLumen && IsWithinLumen(pixels, bestSource, std::sqrt(bestDistance)))) ? 1 : 0;
       }
     },
     nullptr);

@@ -33,7 +33,7 @@ namespace itk
  *
  * \sa BilateralDepthRelaxFilter, CPRResampleImageFilter, CPRViewGeometry, CenterlineTree
  */
-template <typename TDepthImage = Image<float, 2>>
+template<typename TDepthImage = Image<float, 2>>
 class ITK_TEMPLATE_EXPORT CPRDepthImageFilter : public ImageSource<TDepthImage>
 {
 public:
@@ -139,7 +139,7 @@ private:
 } // namespace itk
 
 #ifndef ITK_MANUAL_INSTANTIATION
-#  include "itkCPRDepthImageFilter.hxx"
+#include "itkCPRDepthImageFilter.hxx"
 #endif
 
 namespace itk

@@ -8,7 +8,7 @@
 namespace itk
 {
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 CPRDepthImageFilter<TDepthImage>::CPRDepthImageFilter()
 {
   this->SetNumberOfRequiredInputs(0);
@@ -18,7 +18,7 @@ CPRDepthImageFilter<TDepthImage>::CPRDepthImageFilter()
   this->SetNthOutput(2, this->MakeOutput(2));
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 DataObject::Pointer
 CPRDepthImageFilter<TDepthImage>::MakeOutput(ProcessObject::DataObjectPointerArraySizeType index)
 {
@@ -33,7 +33,7 @@ CPRDepthImageFilter<TDepthImage>::MakeOutput(ProcessObject::DataObjectPointerArr
   }
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::SetCenterlineTree(const CenterlineTree & tree)
 {
@@ -41,7 +41,7 @@ CPRDepthImageFilter<TDepthImage>::SetCenterlineTree(const CenterlineTree & tree)
   this->Modified();
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::SetViewSpecification(const CPRViewSpecification & specification)
 {
@@ -49,35 +49,35 @@ CPRDepthImageFilter<TDepthImage>::SetViewSpecification(const CPRViewSpecificatio
   this->Modified();
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::SetReferenceVolume(const ReferenceVolumeType * volume)
 {
   this->ProcessObject::SetInput("ReferenceVolume", const_cast<ReferenceVolumeType *>(volume));
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 auto
 CPRDepthImageFilter<TDepthImage>::GetReferenceVolume() const -> const ReferenceVolumeType *
 {
   return dynamic_cast<const ReferenceVolumeType *>(this->ProcessObject::GetInput("ReferenceVolume"));
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 auto
 CPRDepthImageFilter<TDepthImage>::GetFixedMaskOutput() -> MaskImageType *
 {
   return dynamic_cast<MaskImageType *>(this->ProcessObject::GetOutput(1));
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 auto
 CPRDepthImageFilter<TDepthImage>::GetOwnerLabelOutput() -> LabelImageType *
 {
   return dynamic_cast<LabelImageType *>(this->ProcessObject::GetOutput(2));
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::GenerateOutputInformation()
 {
@@ -88,7 +88,7 @@ CPRDepthImageFilter<TDepthImage>::GenerateOutputInformation()
   m_View.ConfigureImage(this->GetOwnerLabelOutput());
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::EnlargeOutputRequestedRegion(DataObject * output)
 {
@@ -96,7 +96,7 @@ CPRDepthImageFilter<TDepthImage>::EnlargeOutputRequestedRegion(DataObject * outp
   output->SetRequestedRegionToLargestPossibleRegion();
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::GenerateData()
 {
@@ -114,12 +114,8 @@ CPRDepthImageFilter<TDepthImage>::GenerateData()
   this->UpdateProgress(0.3f);
   MultiThreaderBase * threader = this->GetMultiThreader();
   threader->SetNumberOfWorkUnits(this->GetNumberOfWorkUnits());
-  AssignDepth(m_CenterlinePixels,
-              m_Mode,
-              m_View.GetSpacing(),
-              m_FixLumen && m_CenterlineTree.HasRadii(),
-              threader,
-              m_Assignment);
+  AssignDepth(
+    m_CenterlinePixels, m_Mode, m_View.GetSpacing(), m_FixLumen && m_CenterlineTree.HasRadii(), threader, m_Assignment);
 
   std::copy(m_Assignment.Depth.begin(), m_Assignment.Depth.end(), depth->GetBufferPointer());
   std::copy(m_Assignment.Fixed.begin(), m_Assignment.Fixed.end(), mask->GetBufferPointer());
@@ -127,7 +123,7 @@ CPRDepthImageFilter<TDepthImage>::GenerateData()
   this->UpdateProgress(1.0f);
 }
 
-template <typename TDepthImage>
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::PrintSelf(std::ostream & os, Indent indent) const
 {

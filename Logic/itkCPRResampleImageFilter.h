@@ -48,7 +48,7 @@ operator<<(std::ostream & os, CPRSlabMode mode);
  *
  * \sa CPRDepthImageFilter, BilateralDepthRelaxFilter
  */
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage = Image<float, 2>>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage = Image<float, 2>>
 class ITK_TEMPLATE_EXPORT CPRResampleImageFilter : public ImageSource<TOutputImage>
 {
 public:
@@ -153,7 +153,7 @@ private:
   VolumeMinimum();
 
   // Per-update state, set in BeforeThreadedGenerateData.
-  typename InterpolatorType::Pointer m_Interpolator;
+  typename InterpolatorType::Pointer          m_Interpolator;
   const typename VolumeImageType::PixelType * m_VolumeBuffer{ nullptr };
   typename VolumeImageType::IndexType         m_VolumeBufferStart;
   typename VolumeImageType::IndexType         m_VolumeBufferEnd;
@@ -164,18 +164,18 @@ private:
   const typename VolumeImageType::PixelType * m_MinimumBuffer{ nullptr };
   ModifiedTimeType                            m_MinimumVolumeTime{ 0 };
   OutputPixelType                             m_CachedVolumeMinimum{};
-  OutputPixelType                    m_OutsideValue{};
-  ContinuousIndexType                m_IndexAtCenter;
-  Vector<double, 3>                  m_IndexStepPerColumn;
-  Vector<double, 3>                  m_IndexStepPerRow;
-  Vector<double, 3>                  m_IndexStepPerMillimetreDepth;
-  std::vector<double>                m_SlabOffsets;
+  OutputPixelType                             m_OutsideValue{};
+  ContinuousIndexType                         m_IndexAtCenter;
+  Vector<double, 3>                           m_IndexStepPerColumn;
+  Vector<double, 3>                           m_IndexStepPerRow;
+  Vector<double, 3>                           m_IndexStepPerMillimetreDepth;
+  std::vector<double>                         m_SlabOffsets;
 };
 
 } // namespace itk
 
 #ifndef ITK_MANUAL_INSTANTIATION
-#  include "itkCPRResampleImageFilter.hxx"
+#include "itkCPRResampleImageFilter.hxx"
 #endif
 
 namespace itk

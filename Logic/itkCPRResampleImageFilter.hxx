@@ -13,14 +13,14 @@
 namespace itk
 {
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::CPRResampleImageFilter()
 {
   this->SetPrimaryInputName("Volume");
   this->AddRequiredInputName("Depth", 1);
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetView(const CPRViewGeometry & view)
 {
@@ -29,7 +29,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetView(const C
   this->Modified();
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::ClearView()
 {
@@ -37,7 +37,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::ClearView()
   this->Modified();
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetDefaultValue(OutputPixelType value)
 {
@@ -46,7 +46,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetDefaultValue
   this->Modified();
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VerifyPreconditions() ITKv5_CONST
 {
@@ -61,7 +61,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VerifyPrecondit
   }
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateOutputInformation()
 {
@@ -84,7 +84,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateOutputI
   output->SetLargestPossibleRegion(depth->GetLargestPossibleRegion());
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateInputRequestedRegion()
 {
@@ -100,7 +100,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateInputRe
   }
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::BeforeThreadedGenerateData()
 {
@@ -164,7 +164,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::BeforeThreadedG
   }
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 auto
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VolumeMinimum() -> OutputPixelType
 {
@@ -189,7 +189,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VolumeMinimum()
   return m_CachedVolumeMinimum;
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 double
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::InterpolateLinearly(
   const ContinuousIndexType & index) const
@@ -225,7 +225,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::InterpolateLine
   return vxx0 + (vxx1 - vxx0) * fraction[2];
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::DynamicThreadedGenerateData(
   const OutputRegionType & region)
@@ -243,15 +243,15 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::DynamicThreaded
   for (SizeValueType r = 0; r < region.GetSize()[1]; ++r)
   {
     typename OutputImageType::IndexType rowStart{ { start[0], start[1] + static_cast<IndexValueType>(r) } };
-    const auto *      depthRow = depth->GetBufferPointer() + depth->ComputeOffset(rowStart);
-    OutputPixelType * outputRow = output->GetBufferPointer() + output->ComputeOffset(rowStart);
+    const auto *                        depthRow = depth->GetBufferPointer() + depth->ComputeOffset(rowStart);
+    OutputPixelType *                   outputRow = output->GetBufferPointer() + output->ComputeOffset(rowStart);
     for (SizeValueType c = 0; c < width; ++c)
     {
       const IndexValueType    column = rowStart[0] + static_cast<IndexValueType>(c);
       const double            d = static_cast<double>(depthRow[c]);
-      const Vector<double, 3> surface = m_IndexAtCenter.GetVectorFromOrigin() +
-                                        m_IndexStepPerColumn * (column - centerColumn) +
-                                        m_IndexStepPerRow * (rowStart[1] - centerRow) + m_IndexStepPerMillimetreDepth * d;
+      const Vector<double, 3> surface =
+        m_IndexAtCenter.GetVectorFromOrigin() + m_IndexStepPerColumn * (column - centerColumn) +
+        m_IndexStepPerRow * (rowStart[1] - centerRow) + m_IndexStepPerMillimetreDepth * d;
       double sum = 0.0;
       double extreme = 0.0;
       int    inside = 0;
@@ -266,7 +266,8 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::DynamicThreaded
         {
           continue;
         }
-        const double value = linear ? this->InterpolateLinearly(sample) : m_Interpolator->EvaluateAtContinuousIndex(sample);
+        const double value =
+          linear ? this->InterpolateLinearly(sample) : m_Interpolator->EvaluateAtContinuousIndex(sample);
         if (inside == 0)
         {
           extreme = value;
@@ -294,7 +295,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::DynamicThreaded
   }
 }
 
-template <typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::PrintSelf(std::ostream & os, Indent indent) const
 {

@@ -34,7 +34,7 @@ Cross(const VectorType & a, const VectorType & b)
   return MakeVector3(a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]);
 }
 
-template <typename TArray>
+template<typename TArray>
 std::string
 JoinNumbers(const TArray & values, unsigned int count)
 {
@@ -64,8 +64,8 @@ ReadNumbers(const MetaDataDictionary & dictionary, const char * key, unsigned in
   }
   if (values.size() != count || !stream.eof())
   {
-    itkGenericExceptionMacro(<< "CPRViewGeometry: metadata entry " << key << " = \"" << text << "\" is not "
-                             << count << " numbers");
+    itkGenericExceptionMacro(<< "CPRViewGeometry: metadata entry " << key << " = \"" << text << "\" is not " << count
+                             << " numbers");
   }
   return values;
 }
@@ -376,7 +376,9 @@ CPRViewGeometry::ReadFromDictionary(const MetaDataDictionary & dictionary)
   CPRViewGeometry view(MakeVector3(up[0], up[1], up[2]), angle[0], c, imageSize, pixelSpacing);
   // Keep the stored frame bit for bit (re-normalising would move the last bits), once it agrees with the one
   // recomputed from up and the angle.
-  const std::pair<const char *, VectorType *> stored[] = { { KeyUp, &view.m_Up }, { KeyU, &view.m_U }, { KeyV, &view.m_V } };
+  const std::pair<const char *, VectorType *> stored[] = { { KeyUp, &view.m_Up },
+                                                           { KeyU, &view.m_U },
+                                                           { KeyV, &view.m_V } };
   for (const auto & [key, target] : stored)
   {
     if (!dictionary.HasKey(key))

@@ -78,10 +78,10 @@ public:
   CPRViewGeometry() = default;
   /** A view from explicit values; throws itk::ExceptionObject naming the bad value (zero or non-finite up,
    * non-finite angle or centre, zero size, spacing not > 0). */
-  CPRViewGeometry(const VectorType & up,
-                  double             angleInDegrees,
-                  const PointType &  center,
-                  const SizeType &   size,
+  CPRViewGeometry(const VectorType &  up,
+                  double              angleInDegrees,
+                  const PointType &   center,
+                  const SizeType &    size,
                   const SpacingType & spacing);
 
   /** Completes \a specification: centre, size and spacing default from \a tree (and \a volume, may be null)
@@ -141,7 +141,7 @@ public:
   GetImageOrigin() const;
 
   /** Sets region, spacing, origin, identity direction and the view metadata of a 2D image. */
-  template <typename TImage>
+  template<typename TImage>
   void
   ConfigureImage(TImage * image) const
   {

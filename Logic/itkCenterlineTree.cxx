@@ -158,7 +158,7 @@ CenterlineTree::FromSpatialObject(const GroupType * group)
   {
     itkGenericExceptionMacro(<< "CenterlineTree: no spatial object given");
   }
-  CenterlineTree tree;
+  CenterlineTree                                     tree;
   const std::unique_ptr<GroupType::ChildrenListType> children(group->GetChildren(GroupType::MaximumDepth));
   int                                                nextFreeId = 1;
   for (const auto & child : *children)

@@ -145,7 +145,8 @@ struct BoneDefinition
 const std::vector<BoneDefinition> &
 BoneDefinitions()
 {
-  static const std::vector<BoneDefinition> bones = [] {
+  static const std::vector<BoneDefinition> bones = []
+  {
     std::vector<BoneDefinition> list;
     // Lumbar vertebral bodies and sacrum: cancellous bone in a thin shell, discs in between.
     for (int level = 0; level < 6; ++level)
@@ -153,7 +154,7 @@ BoneDefinitions()
       const double top = 2.0 - level * 40.0;
       list.push_back({ { 0, 46, top - 6 }, { 0, 46, top - 26 }, 21.0, 18.5, 260.0f, true });
     }
-    list.push_back({ { 88, 14, -300 }, { 88, 14, -300 }, 24.0, 19.0, 300.0f, false });   // femoral head
+    list.push_back({ { 88, 14, -300 }, { 88, 14, -300 }, 24.0, 19.0, 300.0f, false });  // femoral head
     list.push_back({ { 88, 14, -300 }, { 110, 20, -336 }, 15.0, 10.0, 200.0f, false }); // femoral neck
     list.push_back({ { 110, 26, -340 }, { 90, 18, -600 }, 14.0, 8.0, 20.0f, false });   // femoral shaft
     list.push_back({ { 72, 6, -618 }, { 100, 6, -618 }, 18.0, 14.5, 300.0f, false });   // femoral condyles
@@ -249,8 +250,13 @@ struct Capsule
 };
 
 Capsule
-MakeCapsule(const PointType & a, const PointType & b, double outerA, double outerB, double innerA, double innerB,
-            float innerHU)
+MakeCapsule(const PointType & a,
+            const PointType & b,
+            double            outerA,
+            double            outerB,
+            double            innerA,
+            double            innerB,
+            float             innerHU)
 {
   const double reach = std::max(outerA, outerB);
   return { a, b, outerA, outerB, innerA, innerB, innerHU, std::min(a[2], b[2]) - reach, std::max(a[2], b[2]) + reach };
@@ -328,10 +334,10 @@ BodyAt(double z)
     { 10, 140, 100 }, { -150, 150, 102 }, { -260, 168, 106 }, { -330, 172, 106 }
   };
   // z, leg centre |x|, leg radius.
-  static const std::vector<std::array<double, 3>> legs = { { -290, 90, 78 }, { -340, 90, 80 }, { -450, 89, 74 }, { -600, 84, 58 },
-                                                           { -650, 82, 55 },  { -720, 81, 57 }, { -850, 79, 45 },
-                                                           { -980, 77, 33 },  { -1010, 77, 30 } };
-  BodySection section{};
+  static const std::vector<std::array<double, 3>> legs = { { -290, 90, 78 }, { -340, 90, 80 }, { -450, 89, 74 },
+                                                           { -600, 84, 58 }, { -650, 82, 55 }, { -720, 81, 57 },
+                                                           { -850, 79, 45 }, { -980, 77, 33 }, { -1010, 77, 30 } };
+  BodySection                                     section{};
   section.hasTrunk = z > -330.0;
   section.trunkHalfWidth = Interpolate(trunk, z, 1);
   section.trunkHalfDepth = Interpolate(trunk, z, 2);
@@ -431,8 +437,8 @@ BuildGeometry(const CenterlineTree & tree, double scale)
   {
     for (std::size_t p = 0; p + 1 < branch.Points.size(); ++p)
     {
-      geometry.vessels.push_back(MakeCapsule(
-        branch.Points[p], branch.Points[p + 1], branch.Radii[p], branch.Radii[p + 1], 0.0, 0.0, 0.0f));
+      geometry.vessels.push_back(
+        MakeCapsule(branch.Points[p], branch.Points[p + 1], branch.Radii[p], branch.Radii[p + 1], 0.0, 0.0, 0.0f));
       // Contrast fades distally: about 390 HU in the aorta, 310 HU at the ankle.
       const double height = 0.5 * (branch.Points[p][2] + branch.Points[p + 1][2]) / scale;
       geometry.vesselHU.push_back(static_cast<float>(390.0 + 0.08 * std::max(-1000.0, std::min(0.0, height))));
@@ -460,8 +466,8 @@ BuildGeometry(const CenterlineTree & tree, double scale)
   const auto & definitions = VesselDefinitions();
   for (const auto & plaque : PlaqueDefinitions())
   {
-    const auto &            definition = definitions[plaque.vesselIndex];
-    const int               id = plaque.left ? definition.leftId : definition.rightId;
+    const auto &             definition = definitions[plaque.vesselIndex];
+    const int                id = plaque.left ? definition.leftId : definition.rightId;
     const CenterlineBranch * branch = nullptr;
     for (const auto & candidate : tree.GetBranches())
     {
@@ -480,8 +486,8 @@ BuildGeometry(const CenterlineTree & tree, double scale)
     const Vector<double, 3> other = CrossProduct(tangent, across);
     const double            angle = plaque.angle * Math::pi / 180.0;
     const double            radius = branch->Radii[p];
-    const PointType         center = branch->Points[p] + (across * std::cos(angle) + other * std::sin(angle)) * (0.9 * radius);
-    const double            plaqueRadius = std::max(1.2 * scale, 0.45 * radius);
+    const PointType center = branch->Points[p] + (across * std::cos(angle) + other * std::sin(angle)) * (0.9 * radius);
+    const double    plaqueRadius = std::max(1.2 * scale, 0.45 * radius);
     geometry.plaques.push_back(MakeCapsule(center, center, plaqueRadius, plaqueRadius, 0.0, 0.0, 0.0f));
   }
   return geometry;
@@ -560,12 +566,12 @@ RunoffPhantomImageSource::VerifyPreconditions() ITKv5_CONST
 void
 RunoffPhantomImageSource::GenerateOutputInformation()
 {
-  ImageType *              output = this->GetOutput();
-  ImageType::SizeType      size;
-  ImageType::PointType     origin;
-  ImageType::SpacingType   spacing;
-  const double             low[3] = { -HalfWidthOfFieldOfView, AnteriorEdgeOfFieldOfView, BottomOfFieldOfView };
-  const double             high[3] = { HalfWidthOfFieldOfView, PosteriorEdgeOfFieldOfView, TopOfFieldOfView };
+  ImageType *            output = this->GetOutput();
+  ImageType::SizeType    size;
+  ImageType::PointType   origin;
+  ImageType::SpacingType spacing;
+  const double           low[3] = { -HalfWidthOfFieldOfView, AnteriorEdgeOfFieldOfView, BottomOfFieldOfView };
+  const double           high[3] = { HalfWidthOfFieldOfView, PosteriorEdgeOfFieldOfView, TopOfFieldOfView };
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     size[axis] = static_cast<SizeValueType>(std::ceil((high[axis] - low[axis]) * m_Scale / m_Spacing));
@@ -592,11 +598,11 @@ RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionTyp
   const double          h = m_Spacing;
   const double          scale = m_Scale;
 
-  const auto   start = region.GetIndex();
-  const auto   size = region.GetSize();
-  const long   width = static_cast<long>(size[0]);
-  const long   height = static_cast<long>(size[1]);
-  PointType    corner;
+  const auto start = region.GetIndex();
+  const auto size = region.GetSize();
+  const long width = static_cast<long>(size[0]);
+  const long height = static_cast<long>(size[1]);
+  PointType  corner;
   output->TransformIndexToPhysicalPoint(start, corner);
 
   std::vector<float>  slice(static_cast<std::size_t>(width * height));
@@ -608,7 +614,8 @@ RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionTyp
   std::vector<double> plaqueCoverage(slice.size());
 
   // Loops over the voxels of this slice within reach of a capsule.
-  auto forEachVoxelNear = [&](const Capsule & capsule, double z, auto && visit) {
+  auto forEachVoxelNear = [&](const Capsule & capsule, double z, auto && visit)
+  {
     const double reach = std::max(capsule.outerA, capsule.outerB) + h;
     const double xLow = std::min(capsule.a[0], capsule.b[0]) - reach;
     const double xHigh = std::max(capsule.a[0], capsule.b[0]) + reach;
@@ -652,16 +659,19 @@ RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionTyp
       {
         continue;
       }
-      forEachVoxelNear(bone, z, [&](std::size_t v, double distance, double t) {
-        const double outer = Coverage(distance, bone.outerA + t * (bone.outerB - bone.outerA), h);
-        const double inner = Coverage(distance, bone.innerA + t * (bone.innerB - bone.innerA), h);
-        boneOuter[v] = std::max(boneOuter[v], outer);
-        if (inner > boneInner[v])
-        {
-          boneInner[v] = inner;
-          marrowHU[v] = bone.innerHU;
-        }
-      });
+      forEachVoxelNear(bone,
+                       z,
+                       [&](std::size_t v, double distance, double t)
+                       {
+                         const double outer = Coverage(distance, bone.outerA + t * (bone.outerB - bone.outerA), h);
+                         const double inner = Coverage(distance, bone.innerA + t * (bone.innerB - bone.innerA), h);
+                         boneOuter[v] = std::max(boneOuter[v], outer);
+                         if (inner > boneInner[v])
+                         {
+                           boneInner[v] = inner;
+                           marrowHU[v] = bone.innerHU;
+                         }
+                       });
     }
     for (std::size_t c = 0; c < geometry.vessels.size(); ++c)
     {
@@ -670,14 +680,18 @@ RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionTyp
       {
         continue;
       }
-      forEachVoxelNear(vessel, z, [&](std::size_t v, double distance, double t) {
-        const double coverage = Coverage(distance, vessel.outerA + t * (vessel.outerB - vessel.outerA), h);
-        if (coverage > vesselCoverage[v])
-        {
-          vesselCoverage[v] = coverage;
-          vesselValue[v] = geometry.vesselHU[c];
-        }
-      });
+      forEachVoxelNear(vessel,
+                       z,
+                       [&](std::size_t v, double distance, double t)
+                       {
+                         const double coverage =
+                           Coverage(distance, vessel.outerA + t * (vessel.outerB - vessel.outerA), h);
+                         if (coverage > vesselCoverage[v])
+                         {
+                           vesselCoverage[v] = coverage;
+                           vesselValue[v] = geometry.vesselHU[c];
+                         }
+                       });
     }
     for (const auto & plaque : geometry.plaques)
     {
@@ -685,9 +699,10 @@ RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionTyp
       {
         continue;
       }
-      forEachVoxelNear(plaque, z, [&](std::size_t v, double distance, double) {
-        plaqueCoverage[v] = std::max(plaqueCoverage[v], Coverage(distance, plaque.outerA, h));
-      });
+      forEachVoxelNear(plaque,
+                       z,
+                       [&](std::size_t v, double distance, double)
+                       { plaqueCoverage[v] = std::max(plaqueCoverage[v], Coverage(distance, plaque.outerA, h)); });
     }
 
     for (long j = 0; j < height; ++j)
@@ -702,9 +717,10 @@ RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionTyp
         value = value * (1.0 - plaqueCoverage[v]) + CalcificationHU * plaqueCoverage[v];
         if (value > AirHU + 1.0 && m_NoiseStandardDeviation > 0.0)
         {
-          value += m_NoiseStandardDeviation *
-                   NoiseSample(static_cast<uint64_t>(start[0] + i), static_cast<uint64_t>(start[1] + j),
-                               static_cast<uint64_t>(start[2] + k), m_Seed);
+          value += m_NoiseStandardDeviation * NoiseSample(static_cast<uint64_t>(start[0] + i),
+                                                          static_cast<uint64_t>(start[1] + j),
+                                                          static_cast<uint64_t>(start[2] + k),
+                                                          m_Seed);
         }
         ImageType::IndexType index = { { start[0] + i, start[1] + j, start[2] + static_cast<IndexValueType>(k) } };
         output->SetPixel(index, static_cast<float>(value));

@@ -32,17 +32,17 @@ AtomicOutput::AtomicOutput(std::string finalPath)
   {
     throw InputError("output path \"" + m_FinalPath + "\" names no file");
   }
-  const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  const fs::path  folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
   std::error_code error;
   if (!fs::is_directory(folder, error))
   {
     throw InputError("output " + m_FinalPath + ": the folder " + folder.string() + " does not exist");
   }
   static std::atomic<unsigned> counter{ 0 };
-  const std::string            stem = path.filename().string().substr(0, path.filename().string().size() -
-                                                                          FullExtension(path).size());
-  m_TemporaryPath = (folder / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" +
-                               std::to_string(counter++) + FullExtension(path)))
+  const std::string            stem =
+    path.filename().string().substr(0, path.filename().string().size() - FullExtension(path).size());
+  m_TemporaryPath = (folder / ("." + stem + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+                               FullExtension(path)))
                       .string();
 }
 

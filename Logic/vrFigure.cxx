@@ -22,7 +22,8 @@ namespace vr
 {
 namespace
 {
-const RGBPixelType Background = [] {
+const RGBPixelType Background = []
+{
   RGBPixelType pixel;
   pixel.Set(20, 20, 24);
   return pixel;
@@ -31,7 +32,7 @@ const RGBPixelType Background = [] {
 RGBImageType::Pointer
 MakeRGBImage(unsigned int width, unsigned int height, const RGBPixelType & fill)
 {
-  auto                    image = RGBImageType::New();
+  auto                     image = RGBImageType::New();
   RGBImageType::RegionType region;
   region.SetSize({ { width, height } });
   image->SetRegions(region);
@@ -45,14 +46,14 @@ RGBPixelType
 Viridis(double t)
 {
   static const std::array<std::array<double, 3>, 9> table = { { { 68, 1, 84 },
-                                                                  { 71, 44, 122 },
-                                                                  { 59, 81, 139 },
-                                                                  { 44, 113, 142 },
-                                                                  { 33, 144, 141 },
-                                                                  { 39, 173, 129 },
-                                                                  { 92, 200, 99 },
-                                                                  { 170, 220, 50 },
-                                                                  { 253, 231, 37 } } };
+                                                                { 71, 44, 122 },
+                                                                { 59, 81, 139 },
+                                                                { 44, 113, 142 },
+                                                                { 33, 144, 141 },
+                                                                { 39, 173, 129 },
+                                                                { 92, 200, 99 },
+                                                                { 170, 220, 50 },
+                                                                { 253, 231, 37 } } };
   t = std::min(1.0, std::max(0.0, t)) * (table.size() - 1);
   const auto   k = std::min<std::size_t>(static_cast<std::size_t>(t), table.size() - 2);
   const double f = t - k;
@@ -85,9 +86,9 @@ DrawText(RGBImageType * image, const std::string & text, long x, long y, int fon
   }
   int extent[6];
   glyphs->GetExtent(extent);
-  const int  glyphWidth = extent[1] - extent[0] + 1;
-  const int  glyphHeight = extent[3] - extent[2] + 1;
-  const auto size = image->GetLargestPossibleRegion().GetSize();
+  const int    glyphWidth = extent[1] - extent[0] + 1;
+  const int    glyphHeight = extent[3] - extent[2] + 1;
+  const auto   size = image->GetLargestPossibleRegion().GetSize();
   const auto * rgba = static_cast<const unsigned char *>(glyphs->GetScalarPointer());
   for (int row = 0; row < glyphHeight; ++row)
   {
@@ -181,9 +182,9 @@ RenderWindowLevel(const FloatImage2DType * image, double window, double level)
 RGBImageType::Pointer
 RenderDepth(const FloatImage2DType * depth, double nearest, double farthest)
 {
-  const auto size = depth->GetLargestPossibleRegion().GetSize();
-  auto       rgb = MakeRGBImage(size[0], size[1], Background);
-  const auto count = depth->GetBufferedRegion().GetNumberOfPixels();
+  const auto   size = depth->GetLargestPossibleRegion().GetSize();
+  auto         rgb = MakeRGBImage(size[0], size[1], Background);
+  const auto   count = depth->GetBufferedRegion().GetNumberOfPixels();
   const double range = farthest > nearest ? farthest - nearest : 1.0;
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -195,13 +196,14 @@ RenderDepth(const FloatImage2DType * depth, double nearest, double farthest)
 RGBImageType::Pointer
 RenderDepthRelief(const FloatImage2DType * depth, double nearest, double farthest)
 {
-  auto         rgb = RenderDepth(depth, nearest, farthest);
-  const auto   size = depth->GetLargestPossibleRegion().GetSize();
-  const auto & spacing = depth->GetSpacing();
-  const long   width = static_cast<long>(size[0]);
-  const long   height = static_cast<long>(size[1]);
-  const float *values = depth->GetBufferPointer();
-  auto         at = [&](long column, long row) {
+  auto          rgb = RenderDepth(depth, nearest, farthest);
+  const auto    size = depth->GetLargestPossibleRegion().GetSize();
+  const auto &  spacing = depth->GetSpacing();
+  const long    width = static_cast<long>(size[0]);
+  const long    height = static_cast<long>(size[1]);
+  const float * values = depth->GetBufferPointer();
+  auto          at = [&](long column, long row)
+  {
     column = std::min(width - 1, std::max(0L, column));
     row = std::min(height - 1, std::max(0L, row));
     return static_cast<double>(values[row * width + column]);
@@ -266,8 +268,13 @@ Magnify(const RGBImageType * image, unsigned int width)
 }
 
 std::pair<double, double>
-RangeWithin(const FloatImage2DType * image, unsigned int x, unsigned int y, unsigned int width, unsigned int height,
-            double low, double high)
+RangeWithin(const FloatImage2DType * image,
+            unsigned int             x,
+            unsigned int             y,
+            unsigned int             width,
+            unsigned int             height,
+            double                   low,
+            double                   high)
 {
   const auto          size = image->GetLargestPossibleRegion().GetSize();
   std::vector<double> values;
@@ -283,9 +290,8 @@ RangeWithin(const FloatImage2DType * image, unsigned int x, unsigned int y, unsi
     return { 0.0, 1.0 };
   }
   std::sort(values.begin(), values.end());
-  auto at = [&](double fraction) {
-    return values[static_cast<std::size_t>(std::min(1.0, std::max(0.0, fraction)) * (values.size() - 1))];
-  };
+  auto at = [&](double fraction)
+  { return values[static_cast<std::size_t>(std::min(1.0, std::max(0.0, fraction)) * (values.size() - 1))]; };
   return { at(low), at(high) };
 }
 
@@ -311,8 +317,8 @@ RenderDepthColorBar(double nearest, double farthest, unsigned int width)
 RGBImageType::Pointer
 ComposeFigure(const std::vector<std::vector<FigurePanel>> & rows, const std::string & caption)
 {
-  long width = 0;
-  long height = Gap;
+  long              width = 0;
+  long              height = Gap;
   std::vector<long> rowHeights;
   for (const auto & row : rows)
   {

@@ -42,8 +42,13 @@ Magnify(const RGBImageType * image, unsigned int width);
 /** The \a low and \a high quantiles (fractions in [0, 1]) of \a image inside the given pixel rectangle: a colour
  * range that a few outlying pixels do not stretch. */
 std::pair<double, double>
-RangeWithin(const FloatImage2DType * image, unsigned int x, unsigned int y, unsigned int width, unsigned int height,
-            double low = 0.0, double high = 1.0);
+RangeWithin(const FloatImage2DType * image,
+            unsigned int             x,
+            unsigned int             y,
+            unsigned int             width,
+            unsigned int             height,
+            double                   low = 0.0,
+            double                   high = 1.0);
 
 /** One picture of a figure and its title. */
 struct FigurePanel

@@ -29,8 +29,10 @@ using RelaxFilterType = itk::BilateralDepthRelaxFilter<itk::Image<float, 2>>;
  * see the OpenCL variant). On Auto without a usable device, returns the CPU filter and sets \a notice to why;
  * on OpenCL without one, throws vr::InputError naming what was found. \a chosen receives the backend used. */
 RelaxFilterType::Pointer
-CreateRelaxFilter(RelaxBackend backend, const std::string & deviceRequest, std::string & notice,
-                  RelaxBackend * chosen = nullptr);
+CreateRelaxFilter(RelaxBackend        backend,
+                  const std::string & deviceRequest,
+                  std::string &       notice,
+                  RelaxBackend *      chosen = nullptr);
 } // namespace vr
 
 #endif

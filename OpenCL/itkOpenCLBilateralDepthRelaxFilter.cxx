@@ -332,7 +332,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       }
     }
     // One download of both planes; the depth is high + low.
-    std::vector<float>                lowPlane(width * height);
+    std::vector<float>               lowPlane(width * height);
     const std::array<std::size_t, 3> lowOrigin{ vectorWidth * sizeof(float), height, 0 };
     state.Queue.enqueueReadBufferRect(state.Depth[iterations % 2],
                                       CL_FALSE,

@@ -100,7 +100,8 @@ TEST(RunoffPhantom, VolumeShowsLumenBoneTissueAndAir)
   source->SetSpacing(2.0);
   source->Update();
   const VolumeImage * volume = source->GetOutput();
-  auto value = [&](double x, double y, double z) {
+  auto                value = [&](double x, double y, double z)
+  {
     VolumeImage::IndexType index;
     itk::Point<double, 3>  point;
     point[0] = x;
@@ -123,7 +124,8 @@ TEST(RunoffPhantom, VolumeShowsLumenBoneTissueAndAir)
     {
       values.push_back(value(point[0], point[1], point[2]));
     }
-    const auto inLumen = std::count_if(values.begin(), values.end(), [](double hu) { return hu > 250.0 && hu < 460.0; });
+    const auto inLumen =
+      std::count_if(values.begin(), values.end(), [](double hu) { return hu > 250.0 && hu < 460.0; });
     EXPECT_GE(inLumen, 0.9 * values.size()) << "branch " << branch.Id;
     const double median = vr::test::Median(values);
     EXPECT_GT(median, 290.0) << "branch " << branch.Id;
@@ -162,16 +164,16 @@ TEST(RunoffPhantom, BilateralRelaxationRemovesSmallSeamsAndKeepsLargeJumps)
   ASSERT_GT(small.size(), 300u) << "the phantom must have small seams at its design angle";
   ASSERT_GT(large.size(), 300u) << "the phantom must have large jumps (between the legs) at its design angle";
 
-  const auto bilateral = Relaxed(depth, 1.0, 0.5, 500);
-  const auto smallRatios = vr::test::StepRatios(small, bilateral);
-  const auto largeRatios = vr::test::StepRatios(large, bilateral);
+  const auto   bilateral = Relaxed(depth, 1.0, 0.5, 500);
+  const auto   smallRatios = vr::test::StepRatios(small, bilateral);
+  const auto   largeRatios = vr::test::StepRatios(large, bilateral);
   const double smallMedian = vr::test::Median(smallRatios);
   const double largeMedian = vr::test::Median(largeRatios);
   EXPECT_LE(smallMedian, 0.10) << small.size() << " small seams";
   EXPECT_GE(largeMedian, 0.95) << large.size() << " large jumps";
   EXPECT_GE(Percentile(largeRatios, 0.10), 0.95) << "nine in ten large jumps keep 95 % or more";
 
-  const auto isotropic = Relaxed(depth, 1.0, 0.0, 500);
+  const auto   isotropic = Relaxed(depth, 1.0, 0.0, 500);
   const double isotropicLargeMedian = vr::test::Median(vr::test::StepRatios(large, isotropic));
   EXPECT_LT(isotropicLargeMedian, 0.5) << "plain smoothing should smear the large jumps";
   RecordProperty("SmallSeams", std::to_string(small.size()));
@@ -194,16 +196,17 @@ TEST(RunoffPhantom, LumenIsUntouchedByTheFilter)
   const auto depth = PhantomDepth(256, 768, source->GetOutput());
   const auto relaxed = Relaxed(depth, 1.0, 0.5, 200);
 
-  auto sample = [&](const DepthImage * surface) {
+  auto sample = [&](const DepthImage * surface)
+  {
     auto resample = ResampleFilter::New();
     resample->SetVolume(source->GetOutput());
     resample->SetDepth(surface);
     resample->Update();
     return vr::test::PixelsOf(resample->GetOutput());
   };
-  const auto before = sample(depth->GetDepthOutput());
-  const auto after = sample(relaxed);
-  const auto fixed = vr::test::PixelsOf(depth->GetFixedMaskOutput());
+  const auto  before = sample(depth->GetDepthOutput());
+  const auto  after = sample(relaxed);
+  const auto  fixed = vr::test::PixelsOf(depth->GetFixedMaskOutput());
   std::size_t fixedCount = 0;
   std::size_t changedFree = 0;
   for (std::size_t k = 0; k < fixed.size(); ++k)

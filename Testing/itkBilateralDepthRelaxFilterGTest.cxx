@@ -123,7 +123,8 @@ TEST(BilateralDepthRelaxFilter, CentrePeakHalfRelaxationOneAndTwoIterations)
   // Edge: Dp = e1, two corners (0) and the centre (c1), |Omega| = 3.
   const double rCorner = R(edge1);
   const double rCentre = R(edge1 - centre1);
-  const double edge2 = (1.5 * edge1 + 0.5 * (2 * rCorner * 0.0 + rCentre * centre1)) / (1.5 + 0.5 * (2 * rCorner + rCentre));
+  const double edge2 =
+    (1.5 * edge1 + 0.5 * (2 * rCorner * 0.0 + rCentre * centre1)) / (1.5 + 0.5 * (2 * rCorner + rCentre));
   // Centre: Dp = c1, four edges (e1).
   const double rEdge = R(centre1 - edge1);
   const double centre2 = (2.0 * centre1 + 0.5 * 4 * rEdge * edge1) / (2.0 + 0.5 * 4 * rEdge);
@@ -132,7 +133,7 @@ TEST(BilateralDepthRelaxFilter, CentrePeakHalfRelaxationOneAndTwoIterations)
 
 TEST(BilateralDepthRelaxFilter, CentrePeakHalfRelaxationWithFixedCorners)
 {
-  const auto mask = MakeMaskImage(3, 3, { 1, 0, 1, 0, 0, 0, 1, 0, 1 });
+  const auto   mask = MakeMaskImage(3, 3, { 1, 0, 1, 0, 0, 0, 1, 0, 1 });
   const double e = std::exp(-0.5);
   // Fixed corners stay 0; edges and centre move as without the mask in iteration 1 (the corners were 0).
   ExpectImageNear(Relax(CentrePeak(), mask, 0.5, 0.5, 1), Symmetric3x3(0.0, e / (5.0 + e), 1.0 / (1.0 + e)));
@@ -162,9 +163,9 @@ TEST(BilateralDepthRelaxFilter, SeamLinearTwoIterations)
 {
   // From iteration 1: (0,0): (1/3 + 0)/2 = 1/6; (0,1): (1/4 + 0 + 0)/3 = 1/12;
   // (1,0): (0 + 2/3 + 1/4)/3 = 11/36; (1,1): (0 + 3/4 + 1/3 + 1/4)/4 = 1/3; columns 2, 3 by antisymmetry.
-  ExpectImageNear(Relax(VerticalSeam4x4(), nullptr, 1.0, 0.0, 2),
-                  Seam4x4({ 1.0 / 6.0, 11.0 / 36.0, 25.0 / 36.0, 5.0 / 6.0 },
-                          { 1.0 / 12.0, 1.0 / 3.0, 2.0 / 3.0, 11.0 / 12.0 }));
+  ExpectImageNear(
+    Relax(VerticalSeam4x4(), nullptr, 1.0, 0.0, 2),
+    Seam4x4({ 1.0 / 6.0, 11.0 / 36.0, 25.0 / 36.0, 5.0 / 6.0 }, { 1.0 / 12.0, 1.0 / 3.0, 2.0 / 3.0, 11.0 / 12.0 }));
 }
 
 TEST(BilateralDepthRelaxFilter, SeamHalfRelaxation)
@@ -199,11 +200,11 @@ TEST(BilateralDepthRelaxFilter, ZeroRelaxationLeavesTheImageAsItWas)
 
 TEST(BilateralDepthRelaxFilter, FixedPixelsNeverChange)
 {
-  const auto depth = vr::test::MakeRandomDepthImage(41, 29, -20.0f, 20.0f, 11);
-  const auto mask = vr::test::MakeRandomMaskImage(41, 29, 0.3, 12);
-  const auto before = PixelsOf(depth.GetPointer());
-  const auto fixed = PixelsOf(mask.GetPointer());
-  const auto after = Relax(depth, mask, 1.0, 0.1, 40);
+  const auto  depth = vr::test::MakeRandomDepthImage(41, 29, -20.0f, 20.0f, 11);
+  const auto  mask = vr::test::MakeRandomMaskImage(41, 29, 0.3, 12);
+  const auto  before = PixelsOf(depth.GetPointer());
+  const auto  fixed = PixelsOf(mask.GetPointer());
+  const auto  after = Relax(depth, mask, 1.0, 0.1, 40);
   std::size_t changedFree = 0;
   for (std::size_t k = 0; k < before.size(); ++k)
   {
@@ -238,7 +239,8 @@ TEST(BilateralDepthRelaxFilter, OneAndTwoThreadsGiveIdenticalBits)
 {
   const auto depth = vr::test::MakeRandomDepthImage(512, 1024, -30.0f, 30.0f, 3);
   const auto mask = vr::test::MakeRandomMaskImage(512, 1024, 0.05, 4);
-  auto       run = [&](unsigned int workUnits) {
+  auto       run = [&](unsigned int workUnits)
+  {
     auto filter = FilterType::New();
     filter->SetInput(depth);
     filter->SetFixedMask(mask);
@@ -333,6 +335,7 @@ TEST(BilateralDepthRelaxFilter, PassesTheViewMetadataOn)
   filter->SetNumberOfIterations(1);
   filter->Update();
   std::string angle;
-  EXPECT_TRUE(itk::ExposeMetaData<std::string>(filter->GetOutput()->GetMetaDataDictionary(), "CPR_AngleDegrees", angle));
+  EXPECT_TRUE(
+    itk::ExposeMetaData<std::string>(filter->GetOutput()->GetMetaDataDictionary(), "CPR_AngleDegrees", angle));
   EXPECT_EQ(angle, "30");
 }

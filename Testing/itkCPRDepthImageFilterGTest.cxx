@@ -77,8 +77,10 @@ struct DepthMap
 };
 
 DepthMap
-Compute(const itk::CenterlineTree & tree, const itk::CPRViewSpecification & view,
-        itk::CPRDepthMode mode = itk::CPRDepthMode::Scanline, bool fixLumen = true)
+Compute(const itk::CenterlineTree &       tree,
+        const itk::CPRViewSpecification & view,
+        itk::CPRDepthMode                 mode = itk::CPRDepthMode::Scanline,
+        bool                              fixLumen = true)
 {
   auto filter = FilterType::New();
   filter->SetCenterlineTree(tree);
@@ -196,7 +198,7 @@ TEST(CPRDepthImageFilter, NearestModeEqualsABruteForceVoronoiAssignment)
       }
       tree.AddBranch(Branch(id, points, radii));
     }
-    const auto view = View(23, 17, 1.0, 1.5);
+    const auto     view = View(23, 17, 1.0, 1.5);
     const DepthMap map = Compute(tree, view, itk::CPRDepthMode::Nearest, true);
     const auto     pixels = itk::RasterizeCenterlines(tree, itk::CPRViewGeometry::Resolve(view, tree, nullptr));
     ASSERT_GT(pixels.CountCenterlinePixels(), 10u);
@@ -220,9 +222,10 @@ TEST(CPRDepthImageFilter, NearestModeEqualsABruteForceVoronoiAssignment)
             const double dx = (static_cast<double>(c) - column) * 1.0;
             const double dy = (static_cast<double>(r) - row) * 1.5;
             const double distance = dx * dx + dy * dy;
-            const bool   better = bestOwner == 0 || distance < bestDistance ||
-                                (distance == bestDistance &&
-                                 (pixels.Depth[k] < bestDepth || (pixels.Depth[k] == bestDepth && pixels.Owner[k] < bestOwner)));
+            const bool   better =
+              bestOwner == 0 || distance < bestDistance ||
+              (distance == bestDistance &&
+               (pixels.Depth[k] < bestDepth || (pixels.Depth[k] == bestDepth && pixels.Owner[k] < bestOwner)));
             if (better)
             {
               bestDistance = distance;

@@ -28,8 +28,11 @@ P(double x, double y, double z)
 
 /** A volume of the given grid whose voxels hold f(physical point of the voxel). */
 VolumeType::Pointer
-MakeVolume(const itk::Size<3> & size, const itk::Vector<double, 3> & spacing, const PointType & origin,
-           const VolumeType::DirectionType & direction, const std::function<double(const PointType &)> & f)
+MakeVolume(const itk::Size<3> &                             size,
+           const itk::Vector<double, 3> &                   spacing,
+           const PointType &                                origin,
+           const VolumeType::DirectionType &                direction,
+           const std::function<double(const PointType &)> & f)
 {
   auto volume = VolumeType::New();
   volume->SetRegions(size);
@@ -136,10 +139,11 @@ TEST(CPRResampleImageFilter, NonIdentityDirectionIsSampledAtTheRightPlace)
 
 TEST(CPRResampleImageFilter, PointsOutsideTheVolumeGetTheDefaultValue)
 {
-  const auto volume =
-    MakeVolume({ { 10, 10, 10 } }, itk::MakeVector3(1, 1, 1), P(0, 0, 0), Identity(), [](const PointType & p) {
-      return 100.0 + p[0];
-    });
+  const auto volume = MakeVolume({ { 10, 10, 10 } },
+                                 itk::MakeVector3(1, 1, 1),
+                                 P(0, 0, 0),
+                                 Identity(),
+                                 [](const PointType & p) { return 100.0 + p[0]; });
   const auto view = MakeView(0.0, P(4.5, 4.5, 4.5), 4, 4, 1.0, 1.0);
   // Row 0 reaches 100 mm behind the volume; the rest stays on its middle.
   const auto depth = MakeDepth(view, [](int, int j) { return j == 0 ? 100.0 : 0.0; });
@@ -172,9 +176,12 @@ BrightVoxel
 MakeBrightVoxel()
 {
   BrightVoxel case_;
-  case_.Volume = MakeVolume({ { 21, 21, 21 } }, itk::MakeVector3(1, 1, 1), P(0, 0, 0), Identity(), [](const PointType & p) {
-    return (p[0] == 10.0 && p[1] == 10.0 && p[2] == 10.0) ? 1000.0 : 0.0;
-  });
+  case_.Volume =
+    MakeVolume({ { 21, 21, 21 } },
+               itk::MakeVector3(1, 1, 1),
+               P(0, 0, 0),
+               Identity(),
+               [](const PointType & p) { return (p[0] == 10.0 && p[1] == 10.0 && p[2] == 10.0) ? 1000.0 : 0.0; });
   case_.View = MakeView(0.0, P(10, 10, 10), 5, 5, 1.0, 1.0); // pixel (2, 2) lines up with x = 10, z = 10
   case_.Depth = MakeDepth(case_.View, [](int, int) { return -2.0; });
   return case_;

@@ -75,9 +75,9 @@ TEST(CPRViewGeometry, UIsVCrossUpForAnyUp)
   {
     for (const double angle : { 0.0, 37.0, -120.0 })
     {
-      const auto  view = ViewAt(angle, up);
-      const auto &v = view.GetV();
-      const auto &w = view.GetUp();
+      const auto   view = ViewAt(angle, up);
+      const auto & v = view.GetV();
+      const auto & w = view.GetUp();
       ExpectVectorNear(view.GetU(), v[1] * w[2] - v[2] * w[1], v[2] * w[0] - v[0] * w[2], v[0] * w[1] - v[1] * w[0]);
       EXPECT_NEAR(v * w, 0.0, 1e-12);
       EXPECT_NEAR(v.GetNorm(), 1.0, 1e-12);
@@ -96,7 +96,8 @@ TEST(CPRViewGeometry, UpNearThePosteriorAxisLooksAlongInferior)
 {
   // DESIGN 3.2: theta = 0 looks along P made orthogonal to up, or along I when up is within 10 degrees of the
   // P axis. The two rules give different directions for an up with an x component, so both are checked.
-  auto orthogonalTo = [](const VectorType & axis, VectorType up) {
+  auto orthogonalTo = [](const VectorType & axis, VectorType up)
+  {
     up.Normalize();
     VectorType direction = axis - (axis * up) * up;
     direction.Normalize();
@@ -205,7 +206,7 @@ TEST(CPRViewGeometry, AutomaticUpTakesTheVolumeAxisTheTreeExtendsAlong)
 {
   // Volume axes: i along -x, j along -y, k along +z (like the VMTK aorta scan). The tree runs mostly along y,
   // its root (first point) at y = -40: up is the j axis column (0, -1, 0) pointing towards the root.
-  auto                               volume = itk::Image<float, 3>::New();
+  auto                                volume = itk::Image<float, 3>::New();
   itk::Image<float, 3>::DirectionType direction;
   direction.SetIdentity();
   direction[0][0] = -1;
@@ -227,11 +228,14 @@ TEST(CPRViewGeometry, RejectsBadValues)
   itk::Size<2> good = { { 4, 4 } };
   itk::Size<2> empty = { { 0, 10 } };
   const auto   c = P(0, 0, 0);
-  EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 0), 0, c, good, itk::MakeVector2(1, 1)), itk::ExceptionObject);
+  EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 0), 0, c, good, itk::MakeVector2(1, 1)),
+               itk::ExceptionObject);
   EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 1), std::nan(""), c, good, itk::MakeVector2(1, 1)),
                itk::ExceptionObject);
-  EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 1), 0, c, empty, itk::MakeVector2(1, 1)), itk::ExceptionObject);
-  EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 1), 0, c, good, itk::MakeVector2(-1, 1)), itk::ExceptionObject);
+  EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 1), 0, c, empty, itk::MakeVector2(1, 1)),
+               itk::ExceptionObject);
+  EXPECT_THROW(itk::CPRViewGeometry(itk::MakeVector3(0, 0, 1), 0, c, good, itk::MakeVector2(-1, 1)),
+               itk::ExceptionObject);
   try
   {
     itk::CPRViewGeometry(itk::MakeVector3(0, 0, 1), 0, c, good, itk::MakeVector2(1, std::nan("")));

@@ -50,7 +50,8 @@ Parameters(double w, double a)
 void
 PrintStages(const vr::ReformationOutputs & outputs, const vr::StageCounts & before, const vr::StageCounts & after)
 {
-  auto line = [](const char * stage, double seconds, unsigned int runs) {
+  auto line = [](const char * stage, double seconds, unsigned int runs)
+  {
     std::cout << "    " << std::left << std::setw(11) << stage << std::right
               << (runs ? std::to_string(static_cast<long>(std::lround(seconds * 1000.0))) + " ms" : "not rerun")
               << std::endl;
@@ -67,8 +68,8 @@ int
 main(int argc, char * argv[])
 {
   CLI::App    app{ "VesselReformation demo: a synthetic leg run-off CTA, reformatted with and without bilateral "
-                "depth filtering (Kretschmer et al., EuroVis 2014) through the module logic. Writes PNG pictures, "
-                "NRRD images and the cut surface." };
+                   "depth filtering (Kretschmer et al., EuroVis 2014) through the module logic. Writes PNG pictures, "
+                   "NRRD images and the cut surface." };
   std::string output = "vessel-reformation-demo";
   double      angle = 30.0;
   std::vector<unsigned int> size = { 512, 1024 };
@@ -104,8 +105,8 @@ main(int argc, char * argv[])
     phantom->Update();
     const auto volumeSize = phantom->GetOutput()->GetLargestPossibleRegion().GetSize();
     std::cout << "  phantom " << volumeSize[0] << " x " << volumeSize[1] << " x " << volumeSize[2] << " voxels at "
-              << spacing << " mm, " << phantom->GetCenterlineTree().GetNumberOfBranches() << " arteries: "
-              << std::lround(Milliseconds(start)) << " ms" << std::endl;
+              << spacing << " mm, " << phantom->GetCenterlineTree().GetNumberOfBranches()
+              << " arteries: " << std::lround(Milliseconds(start)) << " ms" << std::endl;
 
     // The platform's view of the data: a volume node and a centerline node in RAS, as a 3D Slicer scene holds them.
     vr::VesselReformationLogic logic;
@@ -113,11 +114,12 @@ main(int argc, char * argv[])
     logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom->GetCenterlineTree(), "RunoffCenterlines"));
     logic.SetWarningCallback([](const std::string & message) { std::cout << "  warning: " << message << std::endl; });
 
-    auto run = [&](double a) {
+    auto run = [&](double a)
+    {
       parameters.Anisotropy = a;
       logic.SetParameters(parameters);
-      const auto  before = logic.GetStageExecutionCounts();
-      const auto &outputs = logic.Update();
+      const auto   before = logic.GetStageExecutionCounts();
+      const auto & outputs = logic.Update();
       std::cout << "  " << (a == 0.0 ? "isotropic" : "bilateral") << " relaxation (" << Parameters(1.0, a) << ", "
                 << iterations << " iterations, " << outputs.RelaxBackendUsed << "):" << std::endl;
       PrintStages(outputs, before, logic.GetStageExecutionCounts());
@@ -153,12 +155,12 @@ main(int argc, char * argv[])
     vr::WriteImage2D(unfiltered.CPR, path("cpr-unfiltered.nrrd"));
     vr::WriteSurface(outputs.Surface, path("cut-surface.vtp"));
 
-    const std::string unfilteredTitle = "unfiltered (w = 0)";
-    const std::string isotropicTitle = "isotropic (" + Parameters(1.0, 0.0) + ")";
-    const std::string bilateralTitle = "bilateral (" + Parameters(1.0, 0.5) + ")";
+    const std::string  unfilteredTitle = "unfiltered (w = 0)";
+    const std::string  isotropicTitle = "isotropic (" + Parameters(1.0, 0.0) + ")";
+    const std::string  bilateralTitle = "bilateral (" + Parameters(1.0, 0.5) + ")";
     std::ostringstream caption;
-    caption << "Synthetic run-off CTA, mpCPR at " << angle << " degrees, " << iterations
-            << " iterations. Top: CPR (W " << Window << " / L " << Level << " HU). Bottom: depth map.";
+    caption << "Synthetic run-off CTA, mpCPR at " << angle << " degrees, " << iterations << " iterations. Top: CPR (W "
+            << Window << " / L " << Level << " HU). Bottom: depth map.";
     // A detail of the patient's left thigh and knee (the screen's right half), magnified, with the depth in a
     // tight colour range: there the small seams are what the eye sees.
     const unsigned int detailX = static_cast<unsigned int>(0.50 * size[0]);
@@ -168,9 +170,8 @@ main(int argc, char * argv[])
     const auto [detailNear, detailFar] =
       vr::RangeWithin(unfiltered.Depth, detailX, detailY, detailWidth, detailHeight, 0.05, 0.95);
     const unsigned int panelWidth = (3 * size[0] + 16) / 4;
-    auto detail = [&](const vr::RGBImageType * image) {
-      return vr::Magnify(vr::Crop(image, detailX, detailY, detailWidth, detailHeight), panelWidth);
-    };
+    auto               detail = [&](const vr::RGBImageType * image)
+    { return vr::Magnify(vr::Crop(image, detailX, detailY, detailWidth, detailHeight), panelWidth); };
     const auto figure = vr::ComposeFigure(
       { { { unfilteredCPR, unfilteredTitle }, { isotropicCPR, isotropicTitle }, { bilateralCPR, bilateralTitle } },
         { { unfilteredDepth, "depth, unfiltered" },
@@ -179,8 +180,10 @@ main(int argc, char * argv[])
         { { vr::RenderDepthColorBar(nearest, farthest, size[0]), "" } },
         { { detail(unfilteredCPR), "detail: left thigh, unfiltered" },
           { detail(bilateralCPR), "detail: bilateral" },
-          { detail(vr::RenderDepthRelief(unfiltered.Depth, detailNear, detailFar)), "detail depth (relief), unfiltered" },
-          { detail(vr::RenderDepthRelief(bilateral.Depth, detailNear, detailFar)), "detail depth (relief), bilateral" } },
+          { detail(vr::RenderDepthRelief(unfiltered.Depth, detailNear, detailFar)),
+            "detail depth (relief), unfiltered" },
+          { detail(vr::RenderDepthRelief(bilateral.Depth, detailNear, detailFar)),
+            "detail depth (relief), bilateral" } },
         { { vr::RenderDepthColorBar(detailNear, detailFar, size[0]), "" } } },
       caption.str());
     vr::WriteRGBPNG(figure, path("figure2-comparison.png"));

@@ -14,9 +14,9 @@ namespace
 void
 RelaxOpenCL(benchmark::State & state)
 {
-  const auto  width = static_cast<unsigned int>(state.range(0));
-  const auto  height = static_cast<unsigned int>(state.range(1));
-  const auto &depth = vr::benchmarks::PhantomScene::Instance().GetDepthMap(width, height);
+  const auto   width = static_cast<unsigned int>(state.range(0));
+  const auto   height = static_cast<unsigned int>(state.range(1));
+  const auto & depth = vr::benchmarks::PhantomScene::Instance().GetDepthMap(width, height);
 
   auto relax = itk::OpenCLBilateralDepthRelaxFilter::New();
   relax->SetDepthInput(depth.Depth);

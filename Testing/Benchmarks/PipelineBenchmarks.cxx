@@ -12,7 +12,7 @@
 #include "itkCPRDepthImageFilter.h"
 #include "itkCPRResampleImageFilter.h"
 #ifdef VESSELREFORMATION_HAS_OPENCL
-#  include "itkOpenCLBilateralDepthRelaxFilter.h"
+#include "itkOpenCLBilateralDepthRelaxFilter.h"
 #endif
 
 #include <benchmark/benchmark.h>
@@ -148,14 +148,15 @@ const bool Registered = []
 {
   for (const auto & size : { std::pair<long, long>{ 256, 768 }, std::pair<long, long>{ 512, 1024 } })
   {
-    for (const auto & stage : { std::pair<const char *, void (*)(benchmark::State &)>{ "Depth", Depth },
-                                { "Resample", Resample },
-                                { "DepthResample", DepthResample },
-                                { "Pipeline_CPU", PipelineCPU },
+    for (const auto & stage : {
+           std::pair<const char *, void (*)(benchmark::State &)>{ "Depth", Depth },
+           { "Resample", Resample },
+           { "DepthResample", DepthResample },
+           { "Pipeline_CPU", PipelineCPU },
 #ifdef VESSELREFORMATION_HAS_OPENCL
-                                { "Pipeline_OpenCL", PipelineOpenCL },
+           { "Pipeline_OpenCL", PipelineOpenCL },
 #endif
-                              })
+         })
     {
       benchmark::RegisterBenchmark(stage.first, stage.second)
         ->Args({ size.first, size.second })

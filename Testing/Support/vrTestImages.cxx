@@ -9,7 +9,7 @@ namespace vr::test
 {
 namespace
 {
-template <typename TImage>
+template<typename TImage>
 typename TImage::Pointer
 MakeImage(unsigned int width, unsigned int height, const std::vector<typename TImage::PixelType> & values)
 {
@@ -55,9 +55,9 @@ MakeRandomDepthImage(unsigned int width, unsigned int height, float low, float h
 MaskImage::Pointer
 MakeRandomMaskImage(unsigned int width, unsigned int height, double fraction, unsigned int seed)
 {
-  std::mt19937               generator(seed);
+  std::mt19937                generator(seed);
   std::bernoulli_distribution distribution(fraction);
-  std::vector<unsigned char> values(static_cast<std::size_t>(width) * height);
+  std::vector<unsigned char>  values(static_cast<std::size_t>(width) * height);
   for (auto & value : values)
   {
     value = distribution(generator) ? 1 : 0;
@@ -68,14 +68,15 @@ MakeRandomMaskImage(unsigned int width, unsigned int height, double fraction, un
 std::vector<DepthStep>
 FindDepthSteps(const DepthImage * depth, const MaskImage * fixed, double minimum)
 {
-  const auto         size = depth->GetBufferedRegion().GetSize();
-  const long         width = static_cast<long>(size[0]);
-  const long         height = static_cast<long>(size[1]);
-  const float *      d = depth->GetBufferPointer();
-  const auto *       m = fixed->GetBufferPointer();
+  const auto             size = depth->GetBufferedRegion().GetSize();
+  const long             width = static_cast<long>(size[0]);
+  const long             height = static_cast<long>(size[1]);
+  const float *          d = depth->GetBufferPointer();
+  const auto *           m = fixed->GetBufferPointer();
   std::vector<DepthStep> steps;
   // Along direction (dx, dy): pair (x, y) -> (x + dx, y + dy), flanks one further out on each side.
-  auto consider = [&](long x, long y, long dx, long dy) {
+  auto consider = [&](long x, long y, long dx, long dy)
+  {
     const long qx = x + dx;
     const long qy = y + dy;
     if (qx >= width || qy >= height)
@@ -93,7 +94,8 @@ FindDepthSteps(const DepthImage * depth, const MaskImage * fixed, double minimum
     {
       return;
     }
-    auto flank = [&](long ax, long ay, long bx, long by) {
+    auto flank = [&](long ax, long ay, long bx, long by)
+    {
       if (ax < 0 || ay < 0 || bx < 0 || by < 0 || ax >= width || bx >= width || ay >= height || by >= height)
       {
         return 0.0;

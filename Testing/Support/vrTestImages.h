@@ -26,7 +26,7 @@ MaskImage::Pointer
 MakeRandomMaskImage(unsigned int width, unsigned int height, double fraction, unsigned int seed);
 
 /** The pixels of a 2D image, row-major. */
-template <typename TImage>
+template<typename TImage>
 std::vector<typename TImage::PixelType>
 PixelsOf(const TImage * image)
 {
