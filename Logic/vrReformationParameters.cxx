@@ -1,6 +1,7 @@
 #include "vrReformationParameters.h"
 
 #include "vrInputError.h"
+#include "vrNumberText.h"
 
 #include <algorithm>
 #include <cctype>
@@ -49,33 +50,6 @@ SplitCommas(const std::string & text)
     parts.emplace_back();
   }
   return parts;
-}
-
-/** The whole of \a text as a finite double, else false. */
-bool
-ToDouble(const std::string & text, double & value)
-{
-  if (text.empty())
-  {
-    return false;
-  }
-  char * end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && std::isfinite(value);
-}
-
-/** The whole of \a text as an integer, else false. */
-bool
-ToInteger(const std::string & text, long long & value)
-{
-  if (text.empty())
-  {
-    return false;
-  }
-  char * end = nullptr;
-  errno = 0;
-  value = std::strtoll(text.c_str(), &end, 10);
-  return end == text.c_str() + text.size() && errno == 0;
 }
 
 std::string
@@ -197,7 +171,7 @@ ParseUpAxis(const std::string & text, const std::string & what)
   bool       valid = parts.size() == 3;
   for (std::size_t k = 0; valid && k < 3; ++k)
   {
-    valid = ToDouble(parts[k], values[k]);
+    valid = ParseWholeDouble(parts[k], values[k]);
   }
   if (!valid || std::sqrt(values[0] * values[0] + values[1] * values[1] + values[2] * values[2]) < 1e-12)
   {
@@ -216,7 +190,7 @@ ParseImageSize(const std::string & text, const std::string & what)
   bool       valid = parts.size() == 2;
   for (std::size_t k = 0; valid && k < 2; ++k)
   {
-    valid = ToInteger(parts[k], values[k]);
+    valid = ParseWholeInteger(parts[k], values[k]);
   }
   if (!valid)
   {
@@ -240,7 +214,7 @@ ParsePixelSpacing(const std::string & text, const std::string & what)
   bool       valid = parts.size() == 1 || parts.size() == 2;
   for (std::size_t k = 0; valid && k < parts.size(); ++k)
   {
-    valid = ToDouble(parts[k], values[k]);
+    valid = ParseWholeDouble(parts[k], values[k]);
   }
   if (!valid)
   {

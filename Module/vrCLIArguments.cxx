@@ -1,6 +1,7 @@
 #include "vrCLIArguments.h"
 
 #include "vrInputError.h"
+#include "vrNumberText.h"
 
 #include <algorithm>
 #include <cctype>
@@ -19,31 +20,6 @@ Lower(std::string text)
 {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;
-}
-
-bool
-ToDouble(const std::string & text, double & value)
-{
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front())))
-  {
-    return false;
-  }
-  char * end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && std::isfinite(value);
-}
-
-bool
-ToInteger(const std::string & text, long long & value)
-{
-  if (text.empty() || std::isspace(static_cast<unsigned char>(text.front())))
-  {
-    return false;
-  }
-  char * end = nullptr;
-  errno = 0;
-  value = std::strtoll(text.c_str(), &end, 10);
-  return end == text.c_str() + text.size() && errno == 0;
 }
 
 std::string
@@ -89,7 +65,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   if (tag == "integer")
   {
     long long number = 0;
-    if (!ToInteger(value, number))
+    if (!ParseWholeInteger(value, number))
     {
       throw InputError(what + ": not a whole number (" + parameter.Label + ")");
     }
@@ -98,7 +74,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   else if (tag == "float" || tag == "double")
   {
     double number = 0.0;
-    if (!ToDouble(value, number))
+    if (!ParseWholeDouble(value, number))
     {
       throw InputError(what + ": not a finite number (" + parameter.Label + ")");
     }
@@ -113,7 +89,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
     {
       long long whole = 0;
       double    number = 0.0;
-      valid = tag == "integer-vector" ? ToInteger(part, whole) : ToDouble(part, number);
+      valid = tag == "integer-vector" ? ParseWholeInteger(part, whole) : ParseWholeDouble(part, number);
     }
     if (!valid)
     {

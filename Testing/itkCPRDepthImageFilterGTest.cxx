@@ -17,15 +17,7 @@ namespace
 using FilterType = itk::CPRDepthImageFilter<itk::Image<float, 2>>;
 using PointType = itk::Point<double, 3>;
 
-PointType
-P(double x, double y, double z)
-{
-  PointType p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
+using vr::test::P;
 
 itk::CenterlineBranch
 Branch(int id, std::vector<PointType> points, std::vector<double> radii = {})

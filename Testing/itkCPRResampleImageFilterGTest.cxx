@@ -16,15 +16,7 @@ using DepthType = itk::Image<float, 2>;
 using FilterType = itk::CPRResampleImageFilter<VolumeType, DepthType, DepthType>;
 using PointType = itk::Point<double, 3>;
 
-PointType
-P(double x, double y, double z)
-{
-  PointType p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
+using vr::test::P;
 
 /** A volume of the given grid whose voxels hold f(physical point of the voxel). */
 VolumeType::Pointer

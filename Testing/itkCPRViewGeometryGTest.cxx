@@ -3,6 +3,8 @@
 #include "itkCPRViewGeometry.h"
 #include "itkMetaDataObject.h"
 
+#include "vrTestImages.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,15 +15,7 @@ namespace
 using PointType = itk::Point<double, 3>;
 using VectorType = itk::Vector<double, 3>;
 
-PointType
-P(double x, double y, double z)
-{
-  PointType p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
+using vr::test::P;
 
 void
 ExpectVectorNear(const VectorType & actual, double x, double y, double z)

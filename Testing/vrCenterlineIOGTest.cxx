@@ -6,6 +6,8 @@
 #include "vrTestFiles.h"
 #include "vrVolumeIO.h"
 
+#include "vrTestImages.h"
+
 #include <gtest/gtest.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -28,37 +30,9 @@ namespace
 using vr::CoordinateSpace;
 using PointType = itk::CenterlineBranch::PointType;
 
-PointType
-P(double x, double y, double z)
-{
-  PointType point;
-  point[0] = x;
-  point[1] = y;
-  point[2] = z;
-  return point;
-}
+using vr::test::P;
 
-/** Runs \a action, expects vr::InputError, and returns its message. */
-std::string
-InputErrorOf(const std::function<void()> & action)
-{
-  try
-  {
-    action();
-  }
-  catch (const vr::InputError & error)
-  {
-    std::cout << "  vr::InputError: " << error.what() << std::endl; // for reading the messages in the test log
-    return error.what();
-  }
-  catch (const std::exception & other)
-  {
-    ADD_FAILURE() << "expected vr::InputError, got another exception: " << other.what();
-    return std::string();
-  }
-  ADD_FAILURE() << "expected vr::InputError, nothing was thrown";
-  return std::string();
-}
+using vr::test::InputErrorOf;
 
 /** InputErrorOf, capturing what \a action printed on stdout and stderr into \a printed: VTK and MetaIO report
  * trouble there, which belongs in the message instead. */

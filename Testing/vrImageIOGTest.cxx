@@ -8,6 +8,8 @@
 #include "itkImageFileReader.h"
 #include "itkImageFileWriter.h"
 
+#include "vrTestImages.h"
+
 #include <gtest/gtest.h>
 #include <vtkCellArray.h>
 #include <vtkFieldData.h>
@@ -25,26 +27,7 @@
 
 namespace
 {
-std::string
-InputErrorOf(const std::function<void()> & action)
-{
-  try
-  {
-    action();
-  }
-  catch (const vr::InputError & error)
-  {
-    std::cout << "  vr::InputError: " << error.what() << std::endl; // for reading the messages in the test log
-    return error.what();
-  }
-  catch (const std::exception & other)
-  {
-    ADD_FAILURE() << "expected vr::InputError, got another exception: " << other.what();
-    return std::string();
-  }
-  ADD_FAILURE() << "expected vr::InputError, nothing was thrown";
-  return std::string();
-}
+using vr::test::InputErrorOf;
 
 #define EXPECT_MESSAGE_HAS(message, part)                                                                              \
   EXPECT_NE((message).find(part), std::string::npos) << "message: " << (message) << "\nmissing: " << (part)

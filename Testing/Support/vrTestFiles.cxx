@@ -1,8 +1,13 @@
 #include "vrTestFiles.h"
 
+#include "vrInputError.h"
+
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <atomic>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
@@ -64,6 +69,27 @@ ReadTextFile(const std::string & path)
   std::ostringstream text;
   text << input.rdbuf();
   return text.str();
+}
+
+std::string
+InputErrorOf(const std::function<void()> & action)
+{
+  try
+  {
+    action();
+  }
+  catch (const vr::InputError & error)
+  {
+    std::cout << "  vr::InputError: " << error.what() << std::endl; // for reading the messages in the test log
+    return error.what();
+  }
+  catch (const std::exception & other)
+  {
+    ADD_FAILURE() << "expected vr::InputError, got another exception: " << other.what();
+    return std::string();
+  }
+  ADD_FAILURE() << "expected vr::InputError, nothing was thrown";
+  return std::string();
 }
 
 std::string

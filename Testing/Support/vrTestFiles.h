@@ -2,6 +2,7 @@
 #define vrTestFiles_h
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,11 @@ void
 WriteTextFile(const std::string & path, const std::string & text);
 std::string
 ReadTextFile(const std::string & path);
+
+/** Runs \a action, expects vr::InputError, and returns its message (printed, for reading in the test log); any
+ * other outcome is a test failure and returns "". */
+std::string
+InputErrorOf(const std::function<void()> & action);
 
 /** The shared real-data folder (VR_SHARED_DATA_DIR/vmtk-aorta-mra), or "" when this checkout lacks it. */
 std::string

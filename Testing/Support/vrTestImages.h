@@ -12,6 +12,17 @@ using DepthImage = itk::Image<float, 2>;
 using MaskImage = itk::Image<unsigned char, 2>;
 using VolumeImage = itk::Image<float, 3>;
 
+/** The point (x, y, z), in mm. */
+inline itk::Point<double, 3>
+P(double x, double y, double z)
+{
+  itk::Point<double, 3> point;
+  point[0] = x;
+  point[1] = y;
+  point[2] = z;
+  return point;
+}
+
 /** A W x H depth image from row-major values (unit spacing, zero origin). */
 DepthImage::Pointer
 MakeDepthImage(unsigned int width, unsigned int height, const std::vector<float> & values);
