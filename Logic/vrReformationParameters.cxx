@@ -210,7 +210,7 @@ itk::Vector<double, 2>
 ParsePixelSpacing(const std::string & text, const std::string & what)
 {
   const auto parts = SplitCommas(text);
-  double     values[2];
+  double     values[2] = { 0.0, 0.0 };
   bool       valid = parts.size() == 1 || parts.size() == 2;
   for (std::size_t k = 0; valid && k < parts.size(); ++k)
   {

@@ -356,8 +356,7 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   for (const char * part : { "Kretschmer",
                              "Preim",
                              "Stamminger",
-                             "Bilateral Depth Filtering for Enhanced Vessel "
-                             "Reformation",
+                             "Bilateral Depth Filtering for Enhanced Vessel Reformation",
                              "EuroVis",
                              "2014",
                              "short paper" })
@@ -580,7 +579,8 @@ WriteSmallDepthAndMask(const fs::path & depthPath, const fs::path & maskPath)
   for (unsigned int k = 0; k < 24 * 16; ++k)
   {
     const unsigned int column = k % 24;
-    depth->GetBufferPointer()[k] = column < 12 ? 2.0f : 5.0f + 0.1f * static_cast<float>(k / 24);
+    const unsigned int row = k / 24;
+    depth->GetBufferPointer()[k] = column < 12 ? 2.0f : 5.0f + 0.1f * static_cast<float>(row);
     mask->GetBufferPointer()[k] = column == 3 || column == 20 ? 1 : 0;
   }
   vr::WriteImage2D(depth.GetPointer(), depthPath.string());

@@ -62,10 +62,9 @@ PrintStages(const vr::ReformationOutputs & outputs, const vr::StageCounts & befo
   line("resample", outputs.Times.Resample, after.Resample - before.Resample);
   line("surface", outputs.Times.Surface, after.Surface - before.Surface);
 }
-} // namespace
 
 int
-main(int argc, char * argv[])
+RunDemo(int argc, char * argv[])
 {
   CLI::App    app{ "VesselReformation demo: a synthetic leg run-off CTA, reformatted with and without bilateral "
                    "depth filtering (Kretschmer et al., EuroVis 2014) through the module logic. Writes PNG pictures, "
@@ -211,6 +210,25 @@ main(int argc, char * argv[])
   catch (const std::exception & error)
   {
     std::cerr << "error: " << error.what() << std::endl;
+  }
+  return EXIT_FAILURE;
+}
+} // namespace
+
+int
+main(int argc, char * argv[])
+{
+  try
+  {
+    return RunDemo(argc, argv);
+  }
+  catch (const std::exception & error) // outside RunDemo's own handlers: allocation, the output stream
+  {
+    std::cerr << "error: " << error.what() << std::endl;
+  }
+  catch (...)
+  {
+    std::cerr << "error: an unknown exception" << std::endl;
   }
   return EXIT_FAILURE;
 }

@@ -42,7 +42,7 @@ RelaxOpenCL(benchmark::State & state)
   // The CPU time of the whole process (the OpenCL driver's threads included): on a machine shared with other work,
   // it tells what the run cost where real time also counts the waits for a core.
   const std::clock_t processStart = std::clock();
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     relax->Modified();
     relax->Update();

@@ -58,7 +58,7 @@ Depth(benchmark::State & state)
 {
   auto        depth = MakeDepthFilter(state.range(0), state.range(1));
   std::size_t iteration = 0;
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     depth->SetViewSpecification(
       vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
@@ -75,7 +75,7 @@ Resample(benchmark::State & state)
   auto resample = MakeResampleFilter(depth->GetDepthOutput());
   // The first update finds the volume's minimum (once per volume, ~0.1 s); rotating the view never repeats it.
   resample->Update();
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     resample->Modified();
     resample->Update();
@@ -90,7 +90,7 @@ DepthResample(benchmark::State & state)
   auto resample = MakeResampleFilter(depth->GetDepthOutput());
   resample->Update();
   std::size_t iteration = 0;
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     depth->SetViewSpecification(
       vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
@@ -119,7 +119,7 @@ Pipeline(benchmark::State & state, RelaxFilter * relax)
     return;
   }
   std::size_t iteration = 0;
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     depth->SetViewSpecification(
       vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));

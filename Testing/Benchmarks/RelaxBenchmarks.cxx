@@ -33,7 +33,7 @@ RelaxCPU(benchmark::State & state)
   filter->SetRelaxation(Relaxation);
   filter->SetAnisotropy(Anisotropy);
   filter->SetNumberOfIterations(Iterations);
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     filter->Modified();
     filter->Update();
@@ -73,7 +73,7 @@ RelaxGeneric(benchmark::State & state)
   filter->SetRelaxation(Relaxation);
   filter->SetAnisotropy(Anisotropy);
   filter->SetNumberOfIterations(Iterations);
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     filter->Modified();
     filter->Update();
@@ -90,7 +90,7 @@ RelaxPlain(benchmark::State & state)
   const std::vector<float> depth(map.Depth->GetBufferPointer(), map.Depth->GetBufferPointer() + size[0] * size[1]);
   const std::vector<unsigned char> fixed(map.Fixed->GetBufferPointer(),
                                          map.Fixed->GetBufferPointer() + size[0] * size[1]);
-  for (auto _ : state)
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     auto relaxed =
       vr::test::PlainBilateralDepthRelax(depth, fixed, size[0], size[1], Relaxation, Anisotropy, Iterations);
