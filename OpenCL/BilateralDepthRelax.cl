@@ -1,7 +1,9 @@
 // One Jacobi iteration of the bilateral depth relaxation (DESIGN 3.5; Kretschmer et al., EuroVis 2014, Eq. 1-2),
 // the equation of BilateralDepthRelaxFilter::RelaxOnHost() in its difference form
 //   D'_p = D_p + w sum R (D_q - D_p) / ((1 - w)|Omega| + w sum R),   R(x) = exp(-a x^2),
-// R = 0 when a x^2 > WEIGHT_UNDERFLOW_EXPONENT, a zero denominator keeps D_p, fixed pixels keep their value.
+// R = 0 when a x^2 > -ln(FLT_MIN), a zero denominator keeps D_p, fixed pixels keep their value.
+// R is computed as 2^u, u = -a log2(e) x^2, with the CPU kernel's polynomial (itkBilateralDepthRelaxRows.hxx): the
+// built-in exp costs a third of the kernel's time on a CPU device, and its accuracy is not needed.
 //
 // Depths are pairs of floats, high + low, like the CPU kernel's (itkBilateralDepthRelaxKernel.h): a plain float
 // loses the small late steps to rounding and drifts by a few 1e-4 mm over 500 iterations. Each buffer holds the
@@ -13,7 +15,7 @@
 //   VECTORS_PER_ITEM           vectors a work-item relaxes side by side in a row
 //   ROWS_PER_ITEM              rows a work-item relaxes one below the other
 //   LOCAL_WIDTH, LOCAL_HEIGHT  the work-group size
-//   WEIGHT_UNDERFLOW_EXPONENT  BilateralDepthRelaxFilter::WeightUnderflowExponent
+//   WEIGHT_UNDERFLOW_POWER     -log2(FLT_MIN) = 126: R = 0 when a log2(e) x^2 exceeds it (the same rule)
 //
 // Layout (in each plane): row y of a W-pixel image starts at y * pitch; pixel x lies at y * pitch + VECTOR_WIDTH + x. The pitch
 // holds a vector of padding before the row and at least one pixel after it, and the pixels of a row are padded to
@@ -33,6 +35,8 @@ typedef float RealVector;
 typedef int   IntVector;
 #  define LOAD_REALS(pointer) (*(pointer))
 #  define LOAD_BYTES_AS_INTS(pointer) ((int)*(pointer))
+#  define AS_UINTS(reals) as_uint(reals)
+#  define UINTS_AS_REALS(uints) as_float(uints)
 #  define STORE_REALS(value, pointer) (*(pointer) = (value))
 #  define LANE_INDICES 0
 #  define LAST_LANE(vector) (vector)
@@ -43,6 +47,8 @@ typedef CONCATENATE(int, VECTOR_WIDTH) IntVector;
 typedef CONCATENATE(uint, VECTOR_WIDTH) UIntVector;
 #  define LOAD_REALS(pointer) CONCATENATE(vload, VECTOR_WIDTH)(0, (pointer))
 #  define LOAD_BYTES_AS_INTS(pointer) CONCATENATE(convert_int, VECTOR_WIDTH)(CONCATENATE(vload, VECTOR_WIDTH)(0, (pointer)))
+#  define AS_UINTS(reals) CONCATENATE(as_uint, VECTOR_WIDTH)(reals)
+#  define UINTS_AS_REALS(uints) CONCATENATE(as_float, VECTOR_WIDTH)(uints)
 #  define STORE_REALS(value, pointer) CONCATENATE(vstore, VECTOR_WIDTH)((value), 0, (pointer))
 // Lane i of the result is lane i-1 of vector; lane 0 is the last lane of previous.
 #  define SHIFT_IN_FROM_LEFT(previous, vector) shuffle2((previous), (vector), SHIFT_MASK)
@@ -67,10 +73,31 @@ typedef CONCATENATE(uint, VECTOR_WIDTH) UIntVector;
 #  endif
 #endif
 
-// R(d) = exp(-a d^2), exactly 0 once a d^2 passes the underflow exponent; `valid` is 0 for edges leaving the image.
+// 2^u for -127 <= u <= 0: u = n + f with n the integer nearest u and |f| <= 1/2 (adding 1.5 * 2^23 rounds u to n
+// and leaves n in the low mantissa bits; the built-in rint is a slow library call on some CPU devices), 2^f by a
+// degree-5 minimax polynomial (relative error 7.5e-8, 2.3e-7 after float rounding), 2^n written into the exponent
+// bits (a normal float for n >= -126).
+inline RealVector
+PowerOfTwo(const RealVector u)
+{
+  const RealVector shifted = u + 12582912.0f;
+  const RealVector n = shifted - 12582912.0f;
+  const RealVector f = u - n;
+  RealVector       p = f * 1.327647198e-3f + 9.675541334e-3f;
+  p = p * f + 5.550713274e-2f;
+  p = p * f + 2.402211972e-1f;
+  p = p * f + 6.931469671e-1f;
+  p = p * f + 1.000000072f;
+  return p * UINTS_AS_REALS((AS_UINTS(shifted) << 23) + 0x3F800000u);
+}
+
+// R(d) = exp(-a d^2) = 2^(-weightPower d^2), weightPower = a log2(e); exactly 0 once the power passes the underflow
+// bound, exactly 1 when a = 0 (isotropic); `valid` is 0 for edges leaving the image.
 #define EDGE_WEIGHT(difference, valid)                                                                                \
-  select((RealVector)(0.0f), exp(-anisotropy * (difference) * (difference)),                                          \
-         (valid) & (anisotropy * (difference) * (difference) <= (RealVector)(WEIGHT_UNDERFLOW_EXPONENT)))
+  select((RealVector)(0.0f),                                                                                          \
+         isotropic ? (RealVector)(1.0f)                                                                               \
+                   : PowerOfTwo(fmax(-weightPower * (difference) * (difference), (RealVector)(-127.0f))),            \
+         (valid) & (weightPower * (difference) * (difference) <= (RealVector)(WEIGHT_UNDERFLOW_POWER)))
 
 __kernel __attribute__((reqd_work_group_size(LOCAL_WIDTH, LOCAL_HEIGHT, 1))) void
 RelaxIteration(__global const float * restrict current,
@@ -81,7 +108,7 @@ RelaxIteration(__global const float * restrict current,
                const int                       pitch,
                const int                       blocksPerRow,
                const float                     relaxation,
-               const float                     anisotropy,
+               const float                     weightPower,
                const int                       plane)
 {
   const int block = get_global_id(0);
@@ -93,6 +120,7 @@ RelaxIteration(__global const float * restrict current,
   const int   firstColumn = block * VECTORS_PER_ITEM * VECTOR_WIDTH;
   const int   lastRow = min(firstRow + ROWS_PER_ITEM, height);
   const float selfWeight = 1.0f - relaxation;
+  const bool  isotropic = weightPower == 0.0f;
 
   // Up-edges, kept as the down-edges of the row above: weight and R (D_row - D_above).
   RealVector upWeight[VECTORS_PER_ITEM];
@@ -127,11 +155,8 @@ RelaxIteration(__global const float * restrict current,
     RealVector previousRightWeightedDifference;
     {
       const float toLeft = (row[firstColumn - 1] - row[firstColumn]) + (rowLow[firstColumn - 1] - rowLow[firstColumn]);
-      const float weight = (firstColumn > 0 && anisotropy * toLeft * toLeft <= WEIGHT_UNDERFLOW_EXPONENT)
-                             ? exp(-anisotropy * toLeft * toLeft)
-                             : 0.0f;
-      previousRightWeight = (RealVector)(weight);
-      previousRightWeightedDifference = (RealVector)(-weight * toLeft);
+      previousRightWeight = EDGE_WEIGHT((RealVector)(toLeft), (IntVector)(firstColumn > 0 ? -1 : 0));
+      previousRightWeightedDifference = -previousRightWeight * toLeft;
     }
 
     for (int v = 0; v < VECTORS_PER_ITEM; ++v)

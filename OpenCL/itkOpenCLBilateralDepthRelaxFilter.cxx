@@ -9,6 +9,7 @@
 #include <array>
 #include <vector>
 #include <climits>
+#include <cmath>
 #include <iomanip>
 #include <locale>
 #include <mutex>
@@ -92,6 +93,12 @@ ChooseKernelShape(const cl::Device & device)
   return shape;
 }
 
+// The underflow rule a x^2 > -ln(FLT_MIN) in powers of two: a log2(e) x^2 > -log2(FLT_MIN), exactly 126.
+constexpr double WeightUnderflowPower = 126.0;
+static_assert(OpenCLBilateralDepthRelaxFilter::WeightUnderflowExponent > 126.0 * 0.6931471805599452 &&
+                OpenCLBilateralDepthRelaxFilter::WeightUnderflowExponent < 126.0 * 0.6931471805599454,
+              "the underflow exponent is -ln(FLT_MIN) = 126 ln 2");
+
 // The #define lines the kernel expects, then #line so that compiler messages count lines of the .cl file.
 std::string
 DefinitionsFor(const KernelShape & shape)
@@ -103,8 +110,7 @@ DefinitionsFor(const KernelShape & shape)
        << "#define ROWS_PER_ITEM " << shape.RowsPerItem << '\n'
        << "#define LOCAL_WIDTH " << shape.LocalWidth << '\n'
        << "#define LOCAL_HEIGHT " << shape.LocalHeight << '\n'
-       << "#define WEIGHT_UNDERFLOW_EXPONENT " << std::setprecision(17)
-       << OpenCLBilateralDepthRelaxFilter::WeightUnderflowExponent << "f\n"
+       << "#define WEIGHT_UNDERFLOW_POWER " << std::fixed << std::setprecision(1) << WeightUnderflowPower << "f\n"
        << "#line 1\n";
   return text.str();
 }
@@ -308,7 +314,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       kernel.setArg(5, static_cast<cl_int>(pitch));
       kernel.setArg(6, static_cast<cl_int>(blocksPerRow));
       kernel.setArg(7, static_cast<cl_float>(this->GetRelaxation()));
-      kernel.setArg(8, static_cast<cl_float>(this->GetAnisotropy()));
+      kernel.setArg(8, static_cast<cl_float>(this->GetAnisotropy() / std::log(2.0))); // a log2(e): R = 2^(-. x^2)
       kernel.setArg(9, static_cast<cl_int>(plane));
     }
     // Progress, and a chance to abort, about ProgressReports times per update: the host waits for the queue once
