@@ -56,18 +56,21 @@ struct KernelShape
 };
 
 // CPU devices get wide vectors and large blocks per work-item, which share most edge weights through registers;
-// GPUs get one pixel column per work-item, so that neighbouring work-items read neighbouring pixels.
+// GPUs get one pixel column per work-item, so that neighbouring work-items read neighbouring pixels. A forced
+// vector width (not 0) and layout replace the device's (the test hook).
 KernelShape
-ChooseKernelShape(const cl::Device & device)
+ChooseKernelShape(const cl::Device & device, unsigned int forcedVectorWidth, bool forcedGPULayout)
 {
   KernelShape   shape;
-  const cl_uint preferred = device.getInfo<CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT>();
+  const cl_uint preferred =
+    forcedVectorWidth > 0 ? forcedVectorWidth : device.getInfo<CL_DEVICE_PREFERRED_VECTOR_WIDTH_FLOAT>();
   while (shape.VectorWidth * 2 <= static_cast<int>(std::min<cl_uint>(preferred, 16)))
   {
     shape.VectorWidth *= 2;
   }
-  if ((device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) == 0 &&
-      (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0)
+  const bool cpuDevice = (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_GPU) == 0 &&
+                         (device.getInfo<CL_DEVICE_TYPE>() & CL_DEVICE_TYPE_CPU) != 0;
+  if (forcedVectorWidth > 0 ? !forcedGPULayout : cpuDevice)
   {
     shape.VectorsPerItem = 8;
     shape.RowsPerItem = 16;
@@ -126,7 +129,10 @@ struct OpenCLBilateralDepthRelaxFilter::DeviceState
 {
   vr::OpenCLDeviceInfo Info;
   /** The source the program was built from (the test hook may change it). */
-  std::string      Source;
+  std::string Source;
+  /** The layout the test hook forced when the program was built (0: none). */
+  unsigned int     ForcedVectorWidth{ 0 };
+  bool             ForcedGPULayout{ false };
   KernelShape      Shape;
   cl::Device       Device;
   cl::Context      Context;
@@ -151,6 +157,20 @@ OpenCLBilateralDepthRelaxFilter::SetKernelSourceForTesting(const std::string & s
 {
   const std::lock_guard<std::mutex> lock(KernelSourceMutex());
   KernelSourceForTesting() = source;
+}
+
+void
+OpenCLBilateralDepthRelaxFilter::SetKernelLayoutForTesting(unsigned int vectorWidth, bool gpuLayout)
+{
+  if (vectorWidth != 0 && vectorWidth != 1 && vectorWidth != 2 && vectorWidth != 4 && vectorWidth != 8 &&
+      vectorWidth != 16)
+  {
+    itkExceptionMacro(<< "SetKernelLayoutForTesting: the vector width must be 0, 1, 2, 4, 8 or 16, not "
+                      << vectorWidth);
+  }
+  m_ForcedVectorWidth = vectorWidth;
+  m_ForcedGPULayout = vectorWidth != 0 && gpuLayout;
+  this->Modified();
 }
 
 std::string
@@ -180,7 +200,8 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   const std::string source = CurrentKernelSource();
   if (m_DeviceState && m_DeviceState->Info.PlatformIndex == chosen.PlatformIndex &&
       m_DeviceState->Info.DeviceIndex == chosen.DeviceIndex && m_DeviceState->Info.DeviceName == chosen.DeviceName &&
-      m_DeviceState->Source == source)
+      m_DeviceState->Source == source && m_DeviceState->ForcedVectorWidth == m_ForcedVectorWidth &&
+      m_DeviceState->ForcedGPULayout == m_ForcedGPULayout)
   {
     return;
   }
@@ -189,12 +210,14 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   auto state = std::make_unique<DeviceState>();
   state->Info = chosen;
   state->Source = source;
+  state->ForcedVectorWidth = m_ForcedVectorWidth;
+  state->ForcedGPULayout = m_ForcedGPULayout;
   try
   {
     state->Device = vr::GetOpenCLDevice(chosen);
     state->Context = cl::Context(state->Device);
     state->Queue = cl::CommandQueue(state->Context, state->Device);
-    state->Shape = ChooseKernelShape(state->Device);
+    state->Shape = ChooseKernelShape(state->Device, m_ForcedVectorWidth, m_ForcedGPULayout);
     state->Program = cl::Program(state->Context, DefinitionsFor(state->Shape) + source);
     try
     {

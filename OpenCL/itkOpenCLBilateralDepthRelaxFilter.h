@@ -76,6 +76,13 @@ public:
   static void
   SetKernelSourceForTesting(const std::string & source);
 
+  /** TEST HOOK ONLY: forces the kernel's layout instead of choosing it from the device, so that a test on a CPU
+   * device also runs the code paths a GPU takes: \a vectorWidth lanes per vector (1, 2, 4, 8 or 16) and, with
+   * \a gpuLayout, one pixel column per work-item in wide work-groups (what GPUs get) rather than wide blocks per
+   * work-item (what CPU devices get). A \a vectorWidth of 0 restores the automatic choice. */
+  void
+  SetKernelLayoutForTesting(unsigned int vectorWidth, bool gpuLayout);
+
 protected:
   OpenCLBilateralDepthRelaxFilter();
   ~OpenCLBilateralDepthRelaxFilter() override;
@@ -97,6 +104,8 @@ private:
   RelaxOnDevice();
 
   std::string                  m_DeviceRequest;
+  unsigned int                 m_ForcedVectorWidth{ 0 }; // 0: the device's preferred width
+  bool                         m_ForcedGPULayout{ false };
   std::unique_ptr<DeviceState> m_DeviceState;
 };
 

@@ -16,7 +16,9 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <sstream>
 #include <string>
+#include <tuple>
 
 namespace
 {
@@ -179,6 +181,62 @@ TEST(OpenCLBilateralDepthRelax, SizesThatAreNoMultipleOfAnyWorkGroupMatchCPU)
     const auto opencl = RelaxOnOpenCL(depth, mask, parameters);
     EXPECT_LE(MaxAbsoluteDifference(cpu, opencl), Tolerance) << size[0] << " x " << size[1];
   }
+}
+
+// The kernel is specialised by #define lines for the device: vector width, and wide blocks per work-item (CPU
+// devices) or one pixel column per work-item (GPUs). PoCL alone would only ever build one of those variants; the
+// test hook forces each, so the code paths an NVIDIA, AMD or Intel GPU takes are checked here too.
+class KernelLayoutAgreement : public ::testing::TestWithParam<std::tuple<unsigned int, bool>>
+{
+};
+
+TEST_P(KernelLayoutAgreement, EveryVectorWidthAndLayoutMatchesCPU)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const unsigned int vectorWidth = std::get<0>(GetParam());
+  const bool         gpuLayout = std::get<1>(GetParam());
+  const unsigned int sizes[][2] = { { 1, 1 }, { 5, 3 }, { 37, 23 }, { 150, 70 } };
+  const Parameters   cases[] = { { 1.0, 0.5, 40 }, { 0.7, 0.0, 40 } };
+  unsigned int       seed = 300;
+  for (const auto & size : sizes)
+  {
+    for (const auto & parameters : cases)
+    {
+      ++seed;
+      const auto depth = vr::test::MakeRandomDepthImage(size[0], size[1], -2.0f, 3.0f, seed);
+      const auto mask = vr::test::MakeRandomMaskImage(size[0], size[1], 0.1, seed + 1000);
+      auto       filter = OpenCLFilter::New();
+      filter->SetKernelLayoutForTesting(vectorWidth, gpuLayout);
+      const auto opencl = Relax<OpenCLFilter>(filter, depth, mask, parameters);
+      const auto cpu = RelaxOnCPU(depth, mask, parameters);
+      EXPECT_LE(MaxAbsoluteDifference(cpu, opencl), Tolerance)
+        << size[0] << " x " << size[1] << ", a = " << parameters.Anisotropy;
+
+      // The hook took effect: the filter reports the layout it built.
+      std::ostringstream printed;
+      filter->Print(printed);
+      EXPECT_NE(printed.str().find("Kernel shape: " + std::to_string(vectorWidth) + "-lane vectors, " +
+                                   (gpuLayout ? "1 vectors" : "8 vectors")),
+                std::string::npos)
+        << printed.str();
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ForcedLayouts,
+                         KernelLayoutAgreement,
+                         ::testing::Combine(::testing::Values(1u, 2u, 4u, 8u, 16u), ::testing::Bool()),
+                         [](const ::testing::TestParamInfo<std::tuple<unsigned int, bool>> & info) {
+                           return std::to_string(std::get<0>(info.param)) + "lanes_" +
+                                  (std::get<1>(info.param) ? "GPULayout" : "CPULayout");
+                         });
+
+TEST(OpenCLBilateralDepthRelax, AnInvalidForcedVectorWidthIsRejected)
+{
+  auto filter = OpenCLFilter::New();
+  EXPECT_THROW(filter->SetKernelLayoutForTesting(3, false), itk::ExceptionObject);
+  EXPECT_THROW(filter->SetKernelLayoutForTesting(32, true), itk::ExceptionObject);
+  EXPECT_NO_THROW(filter->SetKernelLayoutForTesting(0, false));
 }
 
 // --- Answers worked out by hand -------------------------------------------------------------------------------
