@@ -5,8 +5,6 @@
 #include "vrTestImages.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
-#include "itkCPRDepthImageFilter.h"
-#include "itkRunoffPhantomImageSource.h"
 
 #include <gtest/gtest.h>
 
@@ -25,29 +23,7 @@ using RelaxFilter = itk::BilateralDepthRelaxFilter<DepthImage>;
 
 constexpr double Tolerance = 1e-4; // mm, DESIGN 3.5
 
-struct DepthMap
-{
-  DepthImage::Pointer Depth;
-  MaskImage::Pointer  Fixed;
-};
-
-/** The phantom's scanline mpCPR depth map at its design angle, 30 degrees, on a W x H grid of 1.5 mm pixels. */
-DepthMap
-PhantomDepthMap(unsigned int width, unsigned int height)
-{
-  auto phantom = itk::RunoffPhantomImageSource::New();
-  auto depth = itk::CPRDepthImageFilter<DepthImage>::New();
-  depth->SetCenterlineTree(phantom->GetCenterlineTree());
-  itk::CPRViewSpecification view;
-  view.AngleInDegrees = 30.0;
-  view.ImageSize[0] = width;
-  view.ImageSize[1] = height;
-  view.PixelSpacing[0] = 1.5;
-  view.PixelSpacing[1] = 1.5;
-  depth->SetViewSpecification(view);
-  depth->Update();
-  return { depth->GetDepthOutput(), depth->GetFixedMaskOutput() };
-}
+using DepthMap = vr::test::PhantomDepthMap;
 
 DepthImage::Pointer
 RelaxWithFilter(const DepthMap & map, double w, double a, unsigned int iterations, unsigned int threads)
@@ -132,7 +108,7 @@ BitIdentical(const DepthImage * first, const DepthImage * second)
 // The paper's setting: 512 x 1024, 500 iterations, w = 1, with the range kernel (a = 0.5) and without (a = 0).
 TEST(BilateralDepthRelaxFilterFastPath, AgreesWithPlainReferenceOnPhantomAtPaperSize)
 {
-  const DepthMap map = PhantomDepthMap(512, 1024);
+  const DepthMap map = vr::test::MakePhantomDepthMap(512, 1024, 1.5);
   for (const double a : { 0.5, 0.0 })
   {
     SCOPED_TRACE(Describe(512, 1024, 1.0, a, 500));
@@ -299,7 +275,7 @@ TEST(BilateralDepthRelaxFilterFastPath, GenericPathForDoubleAgreesWithPlainRefer
 // Rows are split into bands, one per thread; a band boundary must not change a single bit.
 TEST(BilateralDepthRelaxFilterFastPath, BitIdenticalForAnyNumberOfThreads)
 {
-  const DepthMap phantom = PhantomDepthMap(512, 1024);
+  const DepthMap phantom = vr::test::MakePhantomDepthMap(512, 1024, 1.5);
   const auto     one = RelaxWithFilter(phantom, 1.0, 0.5, 500, 1);
   const auto     two = RelaxWithFilter(phantom, 1.0, 0.5, 500, 2);
   const auto     three = RelaxWithFilter(phantom, 1.0, 0.5, 500, 3);

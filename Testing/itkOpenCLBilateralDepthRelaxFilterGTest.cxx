@@ -1,10 +1,8 @@
 // The OpenCL variant of BilateralDepthRelaxFilter against the CPU filter and against hand-worked answers
 // (DESIGN 3.5, issue 4). Tests that need a device are skipped, with the reason, when no OpenCL device exists.
 #include "itkBilateralDepthRelaxFilter.h"
-#include "itkCPRDepthImageFilter.h"
 #include "itkCPRViewGeometry.h"
 #include "itkOpenCLBilateralDepthRelaxFilter.h"
-#include "itkRunoffPhantomImageSource.h"
 #include "vrOpenCLDevices.h"
 #include "vrOpenCLTestSupport.h"
 #include "vrTestImages.h"
@@ -23,7 +21,9 @@
 namespace
 {
 using vr::test::DepthImage;
+using vr::test::MakePhantomDepthMap;
 using vr::test::MaskImage;
+using vr::test::PhantomDepthMap;
 using CPUFilter = itk::BilateralDepthRelaxFilter<DepthImage>;
 using OpenCLFilter = itk::OpenCLBilateralDepthRelaxFilter;
 
@@ -81,30 +81,6 @@ MaxAbsoluteDifference(const DepthImage * a, const DepthImage * b)
   return largest;
 }
 
-struct PhantomDepthMap
-{
-  DepthImage::Pointer Depth;
-  MaskImage::Pointer  Mask;
-};
-
-// The run-off phantom's mpCPR depth map at the issue's angle of 30 degrees (no volume needed).
-PhantomDepthMap
-MakePhantomDepthMap(unsigned int width, unsigned int height)
-{
-  auto phantom = itk::RunoffPhantomImageSource::New();
-  auto depthFilter = itk::CPRDepthImageFilter<DepthImage>::New();
-  depthFilter->SetCenterlineTree(phantom->GetCenterlineTree());
-  itk::CPRViewSpecification view;
-  view.AngleInDegrees = 30.0;
-  view.ImageSize = { { width, height } };
-  depthFilter->SetViewSpecification(view);
-  depthFilter->Update();
-  PhantomDepthMap map{ depthFilter->GetDepthOutput(), depthFilter->GetFixedMaskOutput() };
-  map.Depth->DisconnectPipeline();
-  map.Mask->DisconnectPipeline();
-  return map;
-}
-
 // --- Agreement with the CPU filter ----------------------------------------------------------------------------
 
 class PhantomAgreement : public ::testing::TestWithParam<std::tuple<unsigned int, unsigned int, double>>
@@ -118,8 +94,8 @@ TEST_P(PhantomAgreement, OpenCLMatchesCPUWithin1e4mmAfter500Iterations)
   const PhantomDepthMap map = MakePhantomDepthMap(width, height);
   const Parameters      parameters{ 1.0, anisotropy, 500 };
 
-  const auto cpu = RelaxOnCPU(map.Depth, map.Mask, parameters);
-  const auto opencl = RelaxOnOpenCL(map.Depth, map.Mask, parameters);
+  const auto cpu = RelaxOnCPU(map.Depth, map.Fixed, parameters);
+  const auto opencl = RelaxOnOpenCL(map.Depth, map.Fixed, parameters);
 
   // Not vacuous: the relaxation moved the depth map by millimetres somewhere.
   const double moved = MaxAbsoluteDifference(cpu, map.Depth);
@@ -366,7 +342,7 @@ TEST(OpenCLBilateralDepthRelax, OutputCarriesTheViewAndTheGridOfTheInput)
   VR_SKIP_WITHOUT_OPENCL_DEVICE();
   const PhantomDepthMap map = MakePhantomDepthMap(64, 96);
   ASSERT_TRUE(itk::CPRViewGeometry::DictionaryHasView(map.Depth->GetMetaDataDictionary()));
-  const auto relaxed = RelaxOnOpenCL(map.Depth, map.Mask, { 1.0, 0.5, 5 });
+  const auto relaxed = RelaxOnOpenCL(map.Depth, map.Fixed, { 1.0, 0.5, 5 });
   ASSERT_TRUE(itk::CPRViewGeometry::DictionaryHasView(relaxed->GetMetaDataDictionary()));
   EXPECT_EQ(itk::CPRViewGeometry::ReadFromDictionary(relaxed->GetMetaDataDictionary()),
             itk::CPRViewGeometry::ReadFromDictionary(map.Depth->GetMetaDataDictionary()));

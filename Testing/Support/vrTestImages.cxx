@@ -1,5 +1,9 @@
 #include "vrTestImages.h"
 
+#include "itkCPRDepthImageFilter.h"
+#include "itkCPRViewGeometry.h"
+#include "itkRunoffPhantomImageSource.h"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -63,6 +67,28 @@ MakeRandomMaskImage(unsigned int width, unsigned int height, double fraction, un
     value = distribution(generator) ? 1 : 0;
   }
   return MakeMaskImage(width, height, values);
+}
+
+PhantomDepthMap
+MakePhantomDepthMap(unsigned int width, unsigned int height, double spacing)
+{
+  auto phantom = itk::RunoffPhantomImageSource::New();
+  auto depthFilter = itk::CPRDepthImageFilter<DepthImage>::New();
+  depthFilter->SetCenterlineTree(phantom->GetCenterlineTree());
+  itk::CPRViewSpecification view;
+  view.AngleInDegrees = 30.0;
+  view.ImageSize = { { width, height } };
+  if (spacing > 0.0)
+  {
+    view.PixelSpacing[0] = spacing;
+    view.PixelSpacing[1] = spacing;
+  }
+  depthFilter->SetViewSpecification(view);
+  depthFilter->Update();
+  PhantomDepthMap map{ depthFilter->GetDepthOutput(), depthFilter->GetFixedMaskOutput() };
+  map.Depth->DisconnectPipeline();
+  map.Fixed->DisconnectPipeline();
+  return map;
 }
 
 std::vector<DepthStep>

@@ -36,6 +36,16 @@ MakeRandomDepthImage(unsigned int width, unsigned int height, float low, float h
 MaskImage::Pointer
 MakeRandomMaskImage(unsigned int width, unsigned int height, double fraction, unsigned int seed);
 
+/** The run-off phantom's scanline mpCPR depth map and fixed mask (no volume needed) at its design angle, 30 degrees,
+ * on a W x H grid: pixels of \a spacing mm, or, with 0, the spacing the view derives from the tree. */
+struct PhantomDepthMap
+{
+  DepthImage::Pointer Depth;
+  MaskImage::Pointer  Fixed;
+};
+PhantomDepthMap
+MakePhantomDepthMap(unsigned int width, unsigned int height, double spacing = 0.0);
+
 /** The pixels of a 2D image, row-major. */
 template<typename TImage>
 std::vector<typename TImage::PixelType>
