@@ -2,7 +2,7 @@
 #define vrCutSurface_h
 
 #include "itkCPRViewGeometry.h"
-#include "vrImageIO.h"
+#include "vrImageTypes.h"
 
 #include <vtkSmartPointer.h>
 

@@ -1,7 +1,8 @@
 #include "vrReformationParameters.h"
 
+#include "itkCPRVectorHelpers.h"
 #include "vrInputError.h"
-#include "vrNumberText.h"
+#include "vrText.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,42 +17,6 @@ namespace vr
 {
 namespace
 {
-std::string
-Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::string
-Trim(const std::string & text)
-{
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos)
-  {
-    return std::string();
-  }
-  const auto last = text.find_last_not_of(" \t");
-  return text.substr(first, last - first + 1);
-}
-
-std::vector<std::string>
-SplitCommas(const std::string & text)
-{
-  std::vector<std::string> parts;
-  std::string              part;
-  std::istringstream       stream(text);
-  while (std::getline(stream, part, ','))
-  {
-    parts.push_back(Trim(part));
-  }
-  if (!text.empty() && text.back() == ',')
-  {
-    parts.emplace_back();
-  }
-  return parts;
-}
-
 std::string
 Quoted(const std::string & text)
 {
@@ -70,6 +35,12 @@ Join(const TValue & values, unsigned int count)
   return stream.str();
 }
 } // namespace
+
+ReformationParameters::ReformationParameters()
+  : Up(itk::detail::MakeVector3(0.0, 0.0, 1.0))
+  , PixelSpacing(itk::detail::MakeVector2(0.0, 0.0))
+{
+}
 
 void
 ReformationParameters::Validate() const
@@ -144,7 +115,7 @@ ReformationParameters::ToViewSpecification() const
 UpAxisChoice
 ParseUpAxis(const std::string & text, const std::string & what)
 {
-  const std::string key = Lower(Trim(text));
+  const std::string key = ToLower(Trim(text));
   UpAxisChoice      choice;
   if (key == "auto")
   {
@@ -162,11 +133,11 @@ ParseUpAxis(const std::string & text, const std::string & what)
   {
     if (key == direction.Name)
     {
-      choice.Vector = itk::MakeVector3(direction.X, direction.Y, direction.Z);
+      choice.Vector = itk::detail::MakeVector3(direction.X, direction.Y, direction.Z);
       return choice;
     }
   }
-  const auto parts = SplitCommas(key);
+  const auto parts = SplitAndTrim(key, ',');
   double     values[3];
   bool       valid = parts.size() == 3;
   for (std::size_t k = 0; valid && k < 3; ++k)
@@ -178,14 +149,14 @@ ParseUpAxis(const std::string & text, const std::string & what)
     throw InputError(what + " " + Quoted(text) +
                      ": expected S, I, A, P, L, R, auto, or a non-zero LPS vector x,y,z such as 0,1,0");
   }
-  choice.Vector = itk::MakeVector3(values[0], values[1], values[2]);
+  choice.Vector = itk::detail::MakeVector3(values[0], values[1], values[2]);
   return choice;
 }
 
 itk::Size<2>
 ParseImageSize(const std::string & text, const std::string & what)
 {
-  const auto parts = SplitCommas(text);
+  const auto parts = SplitAndTrim(text, ',');
   long long  values[2];
   bool       valid = parts.size() == 2;
   for (std::size_t k = 0; valid && k < 2; ++k)
@@ -209,7 +180,7 @@ ParseImageSize(const std::string & text, const std::string & what)
 itk::Vector<double, 2>
 ParsePixelSpacing(const std::string & text, const std::string & what)
 {
-  const auto parts = SplitCommas(text);
+  const auto parts = SplitAndTrim(text, ',');
   double     values[2] = { 0.0, 0.0 };
   bool       valid = parts.size() == 1 || parts.size() == 2;
   for (std::size_t k = 0; valid && k < parts.size(); ++k)
@@ -228,13 +199,13 @@ ParsePixelSpacing(const std::string & text, const std::string & what)
   {
     throw InputError(what + " " + text + ": the spacing must be > 0 mm");
   }
-  return itk::MakeVector2(values[0], values[1]);
+  return itk::detail::MakeVector2(values[0], values[1]);
 }
 
 itk::CPRDepthMode
 ParseDepthMode(const std::string & text, const std::string & what)
 {
-  const std::string key = Lower(Trim(text));
+  const std::string key = ToLower(Trim(text));
   if (key == "scanline")
   {
     return itk::CPRDepthMode::Scanline;
@@ -249,7 +220,7 @@ ParseDepthMode(const std::string & text, const std::string & what)
 itk::CPRInterpolationMode
 ParseInterpolation(const std::string & text, const std::string & what)
 {
-  const std::string key = Lower(Trim(text));
+  const std::string key = ToLower(Trim(text));
   if (key == "linear")
   {
     return itk::CPRInterpolationMode::Linear;
@@ -268,7 +239,7 @@ ParseInterpolation(const std::string & text, const std::string & what)
 itk::CPRSlabMode
 ParseSlabMode(const std::string & text, const std::string & what)
 {
-  const std::string key = Lower(Trim(text));
+  const std::string key = ToLower(Trim(text));
   if (key == "mip")
   {
     return itk::CPRSlabMode::MIP;
@@ -287,7 +258,7 @@ ParseSlabMode(const std::string & text, const std::string & what)
 bool
 ParseOnOff(const std::string & text, const std::string & what)
 {
-  const std::string key = Lower(Trim(text));
+  const std::string key = ToLower(Trim(text));
   if (key == "on" || key == "true" || key == "yes" || key == "1")
   {
     return true;

@@ -1,7 +1,7 @@
 #ifndef vrReformationParameters_h
 #define vrReformationParameters_h
 
-#include "itkCPRDepthAssignment.h"
+#include "itkCPRDepthMode.h"
 #include "itkCPRResampleImageFilter.h"
 #include "itkCPRViewGeometry.h"
 #include "vrRelaxBackend.h"
@@ -26,10 +26,13 @@ struct ReformationParameters
   using VectorType = itk::Vector<double, 3>;
   using PointType = itk::Point<double, 3>;
 
+  /** Every parameter at its default (below). */
+  ReformationParameters();
+
   /** Take the volume axis along which the tree extends most as the rotation axis (--up auto). */
   bool AutomaticUp{ false };
   /** The rotation axis in LPS when AutomaticUp is off; default superior (--up S). */
-  VectorType Up{ itk::MakeVector3(0.0, 0.0, 1.0) };
+  VectorType Up;
   /** Rotation angle theta about up, in degrees (--angle). */
   double AngleInDegrees{ 0.0 };
   /** View centre C in LPS mm; without one, the centre of the tree's bounding box. */
@@ -39,7 +42,7 @@ struct ReformationParameters
   itk::Size<2> ImageSize{ { 0, 0 } };
   /** Pixel spacing sx, sy in mm (--spacing); 0 x 0 takes the default (the volume's smallest spacing, or what
    * fits the tree into ImageSize). */
-  itk::Vector<double, 2> PixelSpacing{ itk::MakeVector2(0.0, 0.0) };
+  itk::Vector<double, 2> PixelSpacing;
 
   /** Scanline (mpCPR) or Nearest depth assignment (--mode). */
   itk::CPRDepthMode Mode{ itk::CPRDepthMode::Scanline };
@@ -81,7 +84,7 @@ struct ReformationParameters
 struct UpAxisChoice
 {
   bool                   Automatic{ false };
-  itk::Vector<double, 3> Vector{ itk::MakeVector3(0.0, 0.0, 1.0) };
+  itk::Vector<double, 3> Vector{ ReformationParameters().Up };
 };
 
 /** Parsers for the text forms of the parameters (command line, presets).

@@ -3,10 +3,9 @@
 
 #include "itkCPRViewGeometry.h"
 #include "vrCenterlineNode.h"
-#include "vrImageIO.h"
 #include "vrReformationParameters.h"
 #include "vrRelaxBackend.h"
-#include "vrVolumeIO.h"
+#include "vrImageTypes.h"
 #include "vrVolumeNode.h"
 
 #include <vtkSmartPointer.h>

@@ -6,6 +6,7 @@
 #include "itkRunoffPhantomImageSource.h"
 #include "vrFigure.h"
 #include "vrImageIO.h"
+#include "vrSurfaceIO.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
 #include "vrVesselReformationLogic.h"

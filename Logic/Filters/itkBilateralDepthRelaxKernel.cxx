@@ -1,0 +1,465 @@
+#include "itkBilateralDepthRelaxKernel.h"
+
+#include "itkBilateralDepthRelaxRows.h"
+#include "itkThreadTeamBarrier.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <future>
+#include <limits>
+#include <memory>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace itk
+{
+namespace
+{
+using detail::BilateralDepthRelaxRows::RelaxGrid;
+using detail::BilateralDepthRelaxRows::RowAlignment;
+using detail::BilateralDepthRelaxRows::RowScratch;
+using detail::BilateralDepthRelaxRows::SweepFunction;
+
+/** The row sweep for one instruction set, and its name. */
+struct RowSweep
+{
+  SweepFunction Sweep;
+  const char *  InstructionSet;
+};
+
+#if defined(VR_RELAX_RUNTIME_DISPATCH)
+/** Whether the processor runs code built with -march=x86-64-v3 (\a level 3) or -v4 (\a level 4). GCC 12 knows
+ * the levels by name; otherwise the features the sweep can use are asked one by one. */
+bool
+SupportsLevel(int level)
+{
+  __builtin_cpu_init();
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
+  return level == 4 ? __builtin_cpu_supports("x86-64-v4") : __builtin_cpu_supports("x86-64-v3");
+#else
+  const bool level3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
+                      __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
+  return level == 3 ? level3
+                    : level3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+                        __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+                        __builtin_cpu_supports("avx512vl");
+#endif
+}
+
+/** The instruction sets this processor runs (CPUID), widest first. */
+std::vector<RowSweep>
+FindRowSweeps()
+{
+  std::vector<RowSweep> sweeps;
+  if (SupportsLevel(4))
+  {
+    sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepAVX512, "AVX-512" });
+  }
+  if (SupportsLevel(3))
+  {
+    sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepAVX2, "AVX2+FMA" });
+  }
+  sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet });
+  return sweeps;
+}
+#else
+/** Without runtime dispatch the compiler's target flags (e.g. -march=native) decide the vector width. */
+std::vector<RowSweep>
+FindRowSweeps()
+{
+  return { { detail::BilateralDepthRelaxRows::SweepBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet } };
+}
+#endif
+
+const std::vector<RowSweep> &
+RowSweeps()
+{
+  static const std::vector<RowSweep> sweeps = FindRowSweeps();
+  return sweeps;
+}
+
+/** Index into RowSweeps() of the one Relax() uses: the widest unless SetInstructionSet() said otherwise. */
+std::atomic<std::size_t> ChosenRowSweep{ 0 };
+
+const RowSweep &
+TheRowSweep()
+{
+  return RowSweeps()[ChosenRowSweep.load(std::memory_order_relaxed)];
+}
+
+/** sqrt(a log2(e)) for a > 0, 1 for a = 0: the factor the kernel holds depths multiplied by. */
+double
+DepthScale(double anisotropy)
+{
+  return anisotropy > 0.0 ? std::sqrt(anisotropy / std::log(2.0)) : 1.0;
+}
+
+/** Values aligned to a cache line, zero-filled. */
+template<typename TValue>
+class AlignedBuffer
+{
+public:
+  explicit AlignedBuffer(std::size_t count)
+    : m_Data(Allocate(count))
+  {
+  }
+  TValue *
+  Get() const
+  {
+    return m_Data.get();
+  }
+
+private:
+  static constexpr std::align_val_t Alignment{ 64 };
+  static TValue *
+  Allocate(std::size_t count)
+  {
+    if (count > std::numeric_limits<std::size_t>::max() / sizeof(TValue) - RowAlignment)
+    {
+      throw std::bad_alloc();
+    }
+    const std::size_t rounded = (count + RowAlignment - 1) / RowAlignment * RowAlignment;
+    auto *            data = static_cast<TValue *>(::operator new[](rounded * sizeof(TValue), Alignment));
+    std::fill_n(data, rounded, TValue{});
+    return data;
+  }
+  struct Deleter
+  {
+    void
+    operator()(TValue * data) const
+    {
+      ::operator delete[](data, Alignment);
+    }
+  };
+  std::unique_ptr<TValue[], Deleter> m_Data;
+};
+
+/** A thread's row buffers, in two allocations. */
+class ThreadScratch
+{
+public:
+  explicit ThreadScratch(std::size_t stride)
+    : m_Edges(4 * stride)
+    , m_DiscardedRow(2 * stride)
+  {
+    m_Rows.UpWeight = m_Edges.Get();
+    m_Rows.UpFlux = m_Edges.Get() + stride;
+    m_Rows.DownWeight = m_Edges.Get() + 2 * stride;
+    m_Rows.DownFlux = m_Edges.Get() + 3 * stride;
+    m_Rows.DiscardedRow = m_DiscardedRow.Get();
+  }
+  RowScratch &
+  Rows()
+  {
+    return m_Rows;
+  }
+
+private:
+  AlignedBuffer<float> m_Edges;
+  AlignedBuffer<float> m_DiscardedRow;
+  RowScratch           m_Rows{};
+};
+
+/** An AlignedBuffer that keeps its memory while later requests fit in it. */
+class ReusableBuffer
+{
+public:
+  /** At least \a count floats: zero where newly allocated, finite values of an earlier call elsewhere. */
+  float *
+  Reserve(std::size_t count)
+  {
+    if (count > m_Capacity)
+    {
+      m_Buffer.reset();
+      m_Buffer = std::make_unique<AlignedBuffer<float>>(count);
+      m_Capacity = count;
+    }
+    return m_Buffer->Get();
+  }
+
+private:
+  std::unique_ptr<AlignedBuffer<float>> m_Buffer;
+  std::size_t                           m_Capacity{ 0 };
+};
+} // namespace
+
+/** The depth pairs (ping-pong), the self weights and each team member's row buffers. */
+struct BilateralDepthRelaxKernel::Workspace::Buffers
+{
+  ReusableBuffer                              First;
+  ReusableBuffer                              Second;
+  ReusableBuffer                              SelfWeight;
+  std::vector<std::unique_ptr<ThreadScratch>> Scratch;
+  std::size_t                                 ScratchStride{ 0 };
+
+  /** Row buffers for \a team members on rows of \a stride floats. */
+  std::vector<std::unique_ptr<ThreadScratch>> &
+  ReserveScratch(unsigned int team, std::size_t stride)
+  {
+    if (stride != ScratchStride)
+    {
+      Scratch.clear();
+      ScratchStride = stride;
+    }
+    while (Scratch.size() < team)
+    {
+      Scratch.push_back(std::make_unique<ThreadScratch>(stride));
+    }
+    return Scratch;
+  }
+};
+
+BilateralDepthRelaxKernel::Workspace::Workspace()
+  : m_Buffers(std::make_unique<Buffers>())
+{
+}
+
+BilateralDepthRelaxKernel::Workspace::~Workspace() = default;
+
+void
+BilateralDepthRelaxKernel::Relax(const float *            depth,
+                                 const unsigned char *    fixed,
+                                 float *                  relaxed,
+                                 std::size_t              width,
+                                 std::size_t              height,
+                                 double                   relaxation,
+                                 double                   anisotropy,
+                                 unsigned int             iterations,
+                                 unsigned int             threads,
+                                 const ProgressCallback & progress,
+                                 Workspace *              workspace)
+{
+  const std::size_t count = width * height;
+  if (count == 0)
+  {
+    return;
+  }
+  if (iterations == 0 || relaxation == 0.0)
+  {
+    // w = 0 gives every pixel all the weight: nothing moves.
+    std::memmove(relaxed, depth, count * sizeof(float));
+    if (progress && iterations > 0)
+    {
+      progress(iterations);
+    }
+    return;
+  }
+
+  RelaxGrid grid{};
+  grid.Width = width;
+  grid.Height = height;
+  grid.Stride = (width + RowAlignment - 1) / RowAlignment * RowAlignment;
+  grid.Isotropic = anisotropy == 0.0;
+  const double      scale = DepthScale(anisotropy);
+  const std::size_t paddedCount = height * grid.Stride;
+
+  Workspace            ownWorkspace;
+  Workspace::Buffers & buffers = *(workspace ? workspace : &ownWorkspace)->m_Buffers;
+  // The right neighbour of the last vector of the last row reads one vector past the image.
+  float * const first = buffers.First.Reserve(2 * paddedCount + RowAlignment);
+  float * const second = buffers.Second.Reserve(2 * paddedCount + RowAlignment);
+  float * const selfWeight = buffers.SelfWeight.Reserve(paddedCount);
+  grid.SelfWeight = selfWeight;
+  // Eq. 1 divided by w: the pixel's own weight becomes ((1 - w) / w) |Omega|.
+  const double selfPerNeighbour = (1.0 - relaxation) / relaxation;
+  const float  immovable = std::numeric_limits<float>::infinity();
+  auto         initialiseRows = [&](std::size_t rowBegin, std::size_t rowEnd)
+  {
+    for (std::size_t y = rowBegin; y < rowEnd; ++y)
+    {
+      const float * in = depth + y * width;
+      float *       high = first + 2 * y * grid.Stride;
+      float *       low = high + grid.Stride;
+      for (std::size_t x = 0; x < width; ++x)
+      {
+        const double scaled = scale * in[x];
+        high[x] = static_cast<float>(scaled);
+        low[x] = static_cast<float>(scaled - high[x]);
+      }
+      // Padding columns repeat the last column.
+      std::fill(high + width, high + grid.Stride, high[width - 1]);
+      std::fill(low + width, low + grid.Stride, low[width - 1]);
+      float *           self = selfWeight + y * grid.Stride;
+      const std::size_t verticalNeighbours = (y > 0) + (y + 1 < height);
+      for (std::size_t x = 0; x < width; ++x)
+      {
+        const std::size_t neighbours = verticalNeighbours + (x > 0) + (x + 1 < width);
+        self[x] = static_cast<float>(selfPerNeighbour * static_cast<double>(neighbours));
+      }
+      if (fixed)
+      {
+        const unsigned char * isFixed = fixed + y * width;
+        for (std::size_t x = 0; x < width; ++x)
+        {
+          self[x] = isFixed[x] ? immovable : self[x];
+        }
+      }
+      std::fill(self + width, self + grid.Stride, immovable);
+    }
+  };
+  auto writeRows = [&](const float * result, std::size_t rowBegin, std::size_t rowEnd)
+  {
+    for (std::size_t y = rowBegin; y < rowEnd; ++y)
+    {
+      // Exact for fixed pixels: (x scale) / scale comes within 1e-14 of the float x, which rounding gives back.
+      const float * high = result + 2 * y * grid.Stride;
+      const float * low = high + grid.Stride;
+      float *       out = relaxed + y * width;
+      for (std::size_t x = 0; x < width; ++x)
+      {
+        out[x] = static_cast<float>((static_cast<double>(high[x]) + low[x]) / scale);
+      }
+    }
+  };
+
+  const unsigned int team = static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, height)));
+  auto &             scratch = buffers.ReserveScratch(team, grid.Stride);
+
+  // Each member sweeps a fixed band of rows; after the barrier every member sees the whole new image. Member 0
+  // is the calling thread and reports progress; a progress callback that throws stops every member after the
+  // same barrier. The iteration after whose barrier the team stops is set by member 0 while others may still
+  // be leaving the previous barrier, so each member compares it with the iteration it has just finished.
+  detail::ThreadTeamBarrier barrier(team);
+  std::atomic<unsigned int> stopAfterIteration{ iterations };
+  std::exception_ptr        failure;
+  auto                      work = [&](unsigned int member)
+  {
+    const std::size_t   rowBegin = height * member / team;
+    const std::size_t   rowEnd = height * (member + 1) / team;
+    const SweepFunction sweep = TheRowSweep().Sweep;
+    float *             current = first;
+    float *             next = second;
+    // Every member prepares its own rows; the first sweep reads its neighbours' too.
+    initialiseRows(rowBegin, rowEnd);
+    barrier.Wait();
+    for (unsigned int iteration = 0; iteration < iterations; ++iteration)
+    {
+      sweep(grid, current, next, rowBegin, rowEnd, scratch[member]->Rows());
+      if (member == 0 && progress && iteration > 0)
+      {
+        try
+        {
+          progress(iteration);
+        }
+        catch (...)
+        {
+          failure = std::current_exception();
+          stopAfterIteration.store(iteration, std::memory_order_relaxed);
+        }
+      }
+      barrier.Wait();
+      if (stopAfterIteration.load(std::memory_order_relaxed) <= iteration)
+      {
+        return;
+      }
+      std::swap(current, next);
+    }
+    // After the last barrier nobody reads the input any more, so \a relaxed may be \a depth.
+    writeRows(current, rowBegin, rowEnd);
+  };
+
+  // Helpers wait for the word to start, so that a helper the system refuses to create leaves nobody waiting.
+  std::promise<bool>       start;
+  std::shared_future<bool> started = start.get_future().share();
+  std::vector<std::thread> helpers;
+  helpers.reserve(team - 1);
+  try
+  {
+    for (unsigned int member = 1; member < team; ++member)
+    {
+      helpers.emplace_back(
+        [&work, started, member]
+        {
+          if (started.get())
+          {
+            work(member);
+          }
+        });
+    }
+  }
+  catch (const std::system_error &)
+  {
+    start.set_value(false);
+    for (auto & helper : helpers)
+    {
+      helper.join();
+    }
+    // The result does not depend on the team size: do it all on this thread.
+    Relax(depth, fixed, relaxed, width, height, relaxation, anisotropy, iterations, 1, progress, workspace);
+    return;
+  }
+  start.set_value(true);
+  work(0);
+  for (auto & helper : helpers)
+  {
+    helper.join();
+  }
+  if (failure)
+  {
+    std::rethrow_exception(failure);
+  }
+  if (progress)
+  {
+    progress(iterations);
+  }
+}
+
+bool
+BilateralDepthRelaxKernel::IsWithinRange(const float * depth, std::size_t count, double anisotropy)
+{
+  const double limit = MaximumDepthMagnitude / std::max(1.0, DepthScale(anisotropy));
+  return std::all_of(depth, depth + count, [limit](float value) { return std::abs(value) <= limit; });
+}
+
+std::string
+BilateralDepthRelaxKernel::GetInstructionSet()
+{
+  return TheRowSweep().InstructionSet;
+}
+
+std::vector<std::string>
+BilateralDepthRelaxKernel::GetSupportedInstructionSets()
+{
+  std::vector<std::string> names;
+  for (const auto & sweep : RowSweeps())
+  {
+    names.emplace_back(sweep.InstructionSet);
+  }
+  return names;
+}
+
+void
+BilateralDepthRelaxKernel::SetInstructionSet(const std::string & name)
+{
+  const auto & sweeps = RowSweeps();
+  if (name.empty())
+  {
+    ChosenRowSweep.store(0);
+    return;
+  }
+  for (std::size_t k = 0; k < sweeps.size(); ++k)
+  {
+    if (name == sweeps[k].InstructionSet)
+    {
+      ChosenRowSweep.store(k);
+      return;
+    }
+  }
+  std::string supported;
+  for (const auto & sweep : sweeps)
+  {
+    supported += std::string(supported.empty() ? "" : ", ") + sweep.InstructionSet;
+  }
+  throw std::invalid_argument("BilateralDepthRelaxKernel: instruction set \"" + name +
+                              "\" is not supported here; supported: " + supported);
+}
+
+} // namespace itk

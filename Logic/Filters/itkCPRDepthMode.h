@@ -1,0 +1,23 @@
+#ifndef itkCPRDepthMode_h
+#define itkCPRDepthMode_h
+
+#include <ostream>
+
+namespace itk
+{
+/** How the pixels away from the centerlines take their depth (DESIGN 3.4).
+ * \ingroup VesselReformation */
+enum class CPRDepthMode
+{
+  /** mpCPR: the nearest centerline pixel in the pixel's own row; empty rows copy the nearest filled row. */
+  Scanline,
+  /** Centerline-reformation-like: the nearest centerline pixel in 2D (a Voronoi partition of the plane). */
+  Nearest
+};
+
+/** Prints "Scanline" or "Nearest". */
+std::ostream &
+operator<<(std::ostream & os, CPRDepthMode mode);
+} // namespace itk
+
+#endif

@@ -1,0 +1,28 @@
+#ifndef vrCenterlineIO_h
+#define vrCenterlineIO_h
+
+#include "itkCenterlineTree.h"
+#include "vrCenterlineReport.h"
+#include "vrCoordinateFrames.h"
+
+#include <string>
+
+namespace vr
+{
+/** Reads a centerline tree in LPS mm from .vtp, .vtk (VMTK or 3D Slicer), .mrk.json (3D Slicer markups
+ * curves), .tre (TubeTK) or .csv (DESIGN 3.3). \a space overrides the file's own coordinate system (Auto: the
+ * file's, else RAS for VTK files). Throws vr::InputError naming the file and the field on any bad input. */
+itk::CenterlineTree
+ReadCenterlines(const std::string &    path,
+                CoordinateSpace        space = CoordinateSpace::Auto,
+                CenterlineReadReport * report = nullptr);
+
+/** Writes \a tree (LPS) to .vtp, .vtk, .mrk.json, .tre or .csv, in \a space (Auto: LPS for .tre, RAS for VTK
+ * and markups, LPS for CSV), atomically. Throws vr::InputError on failure. */
+void
+WriteCenterlines(const itk::CenterlineTree & tree,
+                 const std::string &         path,
+                 CoordinateSpace             space = CoordinateSpace::Auto);
+} // namespace vr
+
+#endif

@@ -1,0 +1,217 @@
+#include "vrImageIO.h"
+
+#include "vrAtomicOutput.h"
+#include "vrITKMessages.h"
+#include "vrInputError.h"
+
+// Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
+#include "itkImageFileReader.h"
+#include "itkImageFileWriter.h"
+#include "itkImageIOFactory.h"
+#include "itkImageRegionConstIterator.h"
+#include "itkPNGImageIO.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace vr
+{
+namespace
+{
+template<typename TImage>
+void
+WriteImageAtomically(const TImage * image, const std::string & path, itk::ImageIOBase * io = nullptr)
+{
+  if (image == nullptr)
+  {
+    throw InputError("output " + path + ": no image to write");
+  }
+  AtomicOutput output(path);
+  auto         writer = itk::ImageFileWriter<TImage>::New();
+  writer->SetInput(image);
+  writer->SetFileName(output.TemporaryPath());
+  if (io != nullptr)
+  {
+    writer->SetImageIO(io);
+  }
+  writer->UseCompressionOn();
+  try
+  {
+    writer->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError("output " + path +
+                     ": could not be written: " + detail::CondenseITKMessage(exception, output.TemporaryPath(), path));
+  }
+  output.Commit();
+}
+
+/** Opens \a path and checks that it holds a 2D scalar image (a 3D one with a single slice is accepted). */
+itk::ImageIOBase::Pointer
+Open2DImage(const std::string & path, const std::string & role)
+{
+  namespace fs = std::filesystem;
+  const std::string where = role + " " + path;
+  std::error_code   error;
+  if (!fs::exists(path, error))
+  {
+    throw InputError(where + ": no such file");
+  }
+  if (fs::is_directory(path, error))
+  {
+    throw InputError(where + ": is a folder, not an image file");
+  }
+  itk::ImageIOBase::Pointer io =
+    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+  if (io.IsNull())
+  {
+    throw InputError(where + ": no ITK reader recognises this file (is the header corrupt?)");
+  }
+  try
+  {
+    io->SetFileName(path);
+    io->ReadImageInformation();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
+  }
+  const unsigned int dimensions = io->GetNumberOfDimensions();
+  if (!(dimensions == 2 || (dimensions == 3 && io->GetDimensions(2) == 1)))
+  {
+    throw InputError(where + ": the image has " + std::to_string(dimensions) + " dimensions; it must be 2D");
+  }
+  if (io->GetNumberOfComponents() != 1)
+  {
+    throw InputError(where + ": the image has " + std::to_string(io->GetNumberOfComponents()) +
+                     " components per pixel; it must be scalar");
+  }
+  return io;
+}
+
+template<typename TImage>
+typename TImage::Pointer
+Read2DImage(const std::string & path, const std::string & role)
+{
+  itk::ImageIOBase::Pointer io = Open2DImage(path, role);
+  auto                      reader = itk::ImageFileReader<TImage>::New();
+  reader->SetImageIO(io);
+  reader->SetFileName(path);
+  try
+  {
+    reader->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError(role + " " + path +
+                     ": the pixel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
+  }
+  typename TImage::Pointer image = reader->GetOutput();
+  image->DisconnectPipeline();
+  return image;
+}
+} // namespace
+
+void
+WriteImage2D(const DepthImageType * image, const std::string & path)
+{
+  WriteImageAtomically(image, path);
+}
+
+void
+WriteImage2D(const MaskImageType * image, const std::string & path)
+{
+  WriteImageAtomically(image, path);
+}
+
+void
+WriteImage2D(const LabelImageType * image, const std::string & path)
+{
+  WriteImageAtomically(image, path);
+}
+
+DepthImageType::Pointer
+ReadDepthImage(const std::string & path)
+{
+  return Read2DImage<DepthImageType>(path, "depth image");
+}
+
+MaskImageType::Pointer
+ReadMaskImage(const std::string & path)
+{
+  // Read the stored values as they are, so that no integer type wraps and no fraction truncates on the way to
+  // unsigned char: any non-zero pixel is fixed, as BilateralDepthRelaxFilter reads its mask.
+  using StoredImageType = itk::Image<double, 2>;
+  StoredImageType::Pointer stored = Read2DImage<StoredImageType>(path, "mask image");
+
+  auto mask = MaskImageType::New();
+  mask->CopyInformation(stored);
+  mask->SetRegions(stored->GetLargestPossibleRegion());
+  mask->SetMetaDataDictionary(stored->GetMetaDataDictionary());
+  mask->Allocate();
+  const std::size_t count = stored->GetLargestPossibleRegion().GetNumberOfPixels();
+  const double *    values = stored->GetBufferPointer();
+  unsigned char *   fixed = mask->GetBufferPointer();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (!std::isfinite(values[k]))
+    {
+      const auto         index = stored->ComputeIndex(static_cast<StoredImageType::OffsetValueType>(k));
+      std::ostringstream what;
+      what << "mask image " << path << ": pixel (" << index[0] << ", " << index[1] << ") is " << values[k]
+           << "; a mask holds 0 (free) or non-zero (fixed)";
+      throw InputError(what.str());
+    }
+    fixed[k] = values[k] != 0.0 ? 1 : 0;
+  }
+  return mask;
+}
+
+unsigned char
+WindowLevelToByte(double value, double window, double level)
+{
+  const double t = (value - (level - 0.5 * window)) / window;
+  if (std::isnan(t))
+  {
+    return 0;
+  }
+  return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, t))));
+}
+
+void
+WriteWindowedPNG(const DepthImageType * image, double window, double level, const std::string & path)
+{
+  if (!(window > 0.0) || !std::isfinite(window))
+  {
+    std::ostringstream what;
+    what << "PNG output " << path << ": window " << window << " must be a finite number > 0";
+    throw InputError(what.str());
+  }
+  if (!std::isfinite(level))
+  {
+    std::ostringstream what;
+    what << "PNG output " << path << ": level " << level << " must be a finite number";
+    throw InputError(what.str());
+  }
+  if (image == nullptr)
+  {
+    throw InputError("PNG output " + path + ": no image to write");
+  }
+  // A plain loop rather than itk::IntensityWindowingImageFilter, whose functor casts NaN to unsigned char.
+  auto bytes = MaskImageType::New();
+  bytes->CopyInformation(image);
+  bytes->SetRegions(image->GetLargestPossibleRegion());
+  bytes->Allocate();
+  const std::size_t count = image->GetLargestPossibleRegion().GetNumberOfPixels();
+  const float *     values = image->GetBufferPointer();
+  unsigned char *   grey = bytes->GetBufferPointer();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    grey[k] = WindowLevelToByte(values[k], window, level);
+  }
+  WriteImageAtomically<MaskImageType>(bytes, path, itk::PNGImageIO::New());
+}
+} // namespace vr

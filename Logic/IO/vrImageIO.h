@@ -1,0 +1,43 @@
+#ifndef vrImageIO_h
+#define vrImageIO_h
+
+#include "vrImageTypes.h"
+
+#include <string>
+
+namespace vr
+{
+/** Writes a 2D output (NRRD or any ITK format by extension) atomically, with its metadata dictionary (the CPR
+ * view, as CPR_* key/value pairs in NRRD). Throws vr::InputError naming the path. */
+void
+WriteImage2D(const DepthImageType * image, const std::string & path);
+void
+WriteImage2D(const MaskImageType * image, const std::string & path);
+void
+WriteImage2D(const LabelImageType * image, const std::string & path);
+
+/** Reads a 2D depth image (and its metadata) or a mask; throws vr::InputError naming the file. A 3D file with a
+ * single slice counts as 2D. The mask may be stored with any scalar pixel type: non-zero pixels become 1 (fixed),
+ * zero 0, a non-finite one is an error naming the pixel. */
+DepthImageType::Pointer
+ReadDepthImage(const std::string & path);
+MaskImageType::Pointer
+ReadMaskImage(const std::string & path);
+
+/** Maps an intensity through window/level to 0..255: level - window/2 -> 0, level + window/2 -> 255, NaN -> 0.
+ * \param value the intensity.
+ * \param window the window width (> 0).
+ * \param level the window's centre.
+ * \return the grey value. */
+unsigned char
+WindowLevelToByte(double value, double window, double level);
+
+/** Writes an 8-bit PNG of \a image through window/level (intensities level -+ window/2 map to 0..255). */
+void
+WriteWindowedPNG(const DepthImageType * image, double window, double level, const std::string & path);
+// Grey = round(255 (v - level + window/2) / window) clamped to [0, 255]; NaN gives 0. Throws vr::InputError
+// naming the window or level when window is not > 0 or either is not finite. Row 0 of the image is the PNG's top.
+
+} // namespace vr
+
+#endif

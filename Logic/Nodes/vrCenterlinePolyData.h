@@ -1,0 +1,73 @@
+#ifndef vrCenterlinePolyData_h
+#define vrCenterlinePolyData_h
+
+#include "itkCenterlineTree.h"
+#include "vrCenterlineReport.h"
+#include "vrCoordinateFrames.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace vr
+{
+/** Radius arrays recognised on centerline polydata, in order of preference: VMTK's, then 3D Slicer's. */
+constexpr const char * VMTKRadiusArrayName = "MaximumInscribedSphereRadius";
+constexpr const char * SlicerRadiusArrayName = "Radius";
+/** The cell array that carries branch ids through the .vtp/.vtk writer and back. */
+constexpr const char * BranchIdsArrayName = "BranchIds";
+
+/** How CenterlineTreeFromPolyData treats points that several polylines share. */
+struct CenterlinePolyDataOptions
+{
+  /** Points of different polylines closer than this (mm) are the same point: VMTK and 3D Slicer copy the
+   * shared trunk exactly, so 1 um is far above round-off and far below any vessel detail. */
+  double SharedPointTolerance{ 1e-3 };
+};
+
+/** Turns centerline polylines (a VMTK centerline file, a 3D Slicer centerline model or curve node) into a tree
+ * in LPS mm: the one implementation behind the .vtp/.vtk reader and the logic's centerline node.
+ *
+ * \param polyData  polylines (line cells); a radius per point from the point array
+ *                  "MaximumInscribedSphereRadius" (VMTK) or "Radius" (3D Slicer), when present.
+ * \param space     the system of the points: RAS (3D Slicer nodes, VMTK), LPS, or Auto (the 3D Slicer "SPACE"
+ *                  field-data string array when present, else RAS).
+ * \param sourceName names the input in error messages (a file name, a node name).
+ * \param report    receives what was found; may be null.
+ *
+ * Without branch arrays, VMTK writes one polyline per source-to-target path, overlapping along shared trunks.
+ * Each point of a polyline that lies within the tolerance of a point of an earlier polyline is dropped as a
+ * repeat; each remaining run of new points becomes a branch, starting (ending) at the shared point where it
+ * leaves (rejoins) the earlier paths, and an earlier branch is split where a later one leaves it. So two paths
+ * sharing a trunk give three branches: the trunk, and each path's own part from the bifurcation. Polylines that
+ * only touch at their ends stay separate branches.
+ *
+ * With the vmtkbranchextractor cell arrays GroupIds, Blanking, CenterlineIds and TractIds, each non-blanked
+ * group becomes one branch: its tracts (one per path through it) are resampled to a common count by arc length
+ * and averaged with weights radius^2, as vmtkcenterlinemerge does. A blanked tract (the bifurcation region) is
+ * given to the tract that follows it on its path, so each child branch runs from the end of its parent through
+ * the bifurcation instead of leaving a gap; a blanked tract that ends its path is dropped.
+ *
+ * Branch ids are 1, 2, ... in order of appearance, or the cell array "BranchIds" when each polyline became
+ * exactly one branch (what WriteCenterlines writes).
+ *
+ * Throws vr::InputError naming \a sourceName and the point, cell or array on: no polyline, a non-finite
+ * coordinate, a radius array with the wrong number of values or components, a radius that is negative or not
+ * finite.
+ */
+itk::CenterlineTree
+CenterlineTreeFromPolyData(vtkPolyData *                     polyData,
+                           CoordinateSpace                   space = CoordinateSpace::RAS,
+                           const std::string &               sourceName = "centerline polydata",
+                           CenterlineReadReport *            report = nullptr,
+                           const CenterlinePolyDataOptions & options = CenterlinePolyDataOptions());
+
+/** One polyline per branch, in \a space (RAS for a 3D Slicer node; Auto means RAS), with the point array
+ * "Radius" when the tree has radii, the cell array "BranchIds" and the 3D Slicer "SPACE" field-data entry. */
+vtkSmartPointer<vtkPolyData>
+PolyDataFromCenterlineTree(const itk::CenterlineTree & tree, CoordinateSpace space = CoordinateSpace::RAS);
+} // namespace vr
+
+#endif

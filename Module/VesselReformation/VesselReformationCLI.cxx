@@ -1,0 +1,170 @@
+// The VesselReformation command-line module: volume + centerlines -> CPR images, depth maps, surface, PNG.
+// It only collects parameters and files; vr::VesselReformationLogic computes.
+
+#include "vrCLIModuleRunner.h"
+#include "vrCenterlineIO.h"
+#include "vrImageIO.h"
+#include "vrSurfaceIO.h"
+#include "vrInputError.h"
+#include "vrModuleExport.h"
+#include "vrNodeConversion.h"
+#include "vrStagedOutputs.h"
+#include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
+
+namespace
+{
+std::string
+FileName(const std::string & path)
+{
+  return std::filesystem::path(path).filename().string();
+}
+
+vr::ReformationParameters
+ParametersFrom(const vr::CLIArguments & arguments)
+{
+  vr::ReformationParameters parameters;
+  const vr::UpAxisChoice    up = vr::ParseUpAxis(arguments.String("up"), "--up");
+  parameters.AutomaticUp = up.Automatic;
+  parameters.Up = up.Vector;
+  parameters.AngleInDegrees = arguments.Double("angle");
+  if (arguments.Given("size"))
+  {
+    parameters.ImageSize = vr::ParseImageSize(arguments.String("size"), "--size");
+  }
+  if (arguments.Given("spacing"))
+  {
+    parameters.PixelSpacing = vr::ParsePixelSpacing(arguments.String("spacing"), "--spacing");
+  }
+  parameters.Mode = vr::ParseDepthMode(arguments.String("mode"), "--mode");
+  parameters.FixLumen = vr::ParseOnOff(arguments.String("fixLumen"), "--fixLumen");
+  parameters.Relaxation = arguments.Double("relaxation");
+  parameters.Anisotropy = arguments.Double("anisotropy");
+  parameters.Iterations = arguments.Integer("iterations");
+  parameters.Backend = vr::ParseRelaxBackend(arguments.String("backend"), "--backend");
+  parameters.OpenCLDevice = arguments.String("openclDevice");
+  parameters.Interpolation = vr::ParseInterpolation(arguments.String("interpolation"), "--interpolation");
+  parameters.SlabThickness = arguments.Double("slabThickness");
+  parameters.SlabMode = vr::ParseSlabMode(arguments.String("slabMode"), "--slabMode");
+  parameters.Window = arguments.Double("window");
+  parameters.Level = arguments.Double("level");
+  parameters.Validate();
+  return parameters;
+}
+
+void
+RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progress)
+{
+  const vr::ReformationParameters parameters = ParametersFrom(arguments);
+  const vr::CoordinateSpace       centerlineSpace =
+    vr::ParseCoordinateSpace(arguments.String("centerlineSpace"), "--centerlineSpace");
+
+  // Every output path is checked before the work, and nothing lands until all are written.
+  vr::StagedOutputs                  staged;
+  std::map<std::string, std::size_t> outputs;
+  for (const char * name : { "outputCPR",
+                             "outputDepth",
+                             "outputRelaxedDepth",
+                             "outputMask",
+                             "outputLabels",
+                             "outputUnfilteredCPR",
+                             "outputSurface",
+                             "outputPNG" })
+  {
+    if (arguments.Given(name))
+    {
+      outputs[name] = staged.Add(arguments.String(name), arguments.Spelling(name));
+    }
+  }
+
+  const std::string            volumePath = arguments.String("inputVolume");
+  const std::string            centerlinePath = arguments.String("inputCenterlines");
+  vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
+  vr::CenterlineReadReport     report;
+  const itk::CenterlineTree    tree = vr::ReadCenterlines(centerlinePath, centerlineSpace, &report);
+
+  vr::VesselReformationLogic logic;
+  logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, FileName(volumePath)));
+  volume = nullptr; // the node holds the voxels now
+  logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
+  logic.SetParameters(parameters);
+  logic.SetSurfaceEnabled(outputs.count("outputSurface") != 0);
+  logic.SetWarningCallback([&progress](const std::string & message)
+                           { progress.Print(std::cerr, "warning: " + message); });
+  logic.SetProgressCallback(
+    [&progress](double fraction, const std::string & stageName)
+    {
+      if (progress.AbortRequested())
+      {
+        throw vr::InputError("cancelled by the caller");
+      }
+      progress.Update(fraction, stageName);
+    });
+  const vr::ReformationOutputs & results = logic.Update();
+
+  const auto write = [&](const char * name, const std::function<void(const std::string &)> & writer)
+  {
+    if (outputs.count(name) != 0)
+    {
+      staged.Write(outputs.at(name), writer);
+    }
+  };
+  write("outputCPR",
+        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.CPR), path); });
+  write("outputDepth",
+        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.Depth), path); });
+  write("outputRelaxedDepth",
+        [&](const std::string & path)
+        { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.RelaxedDepth), path); });
+  write("outputMask",
+        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToMaskImage(results.FixedMask), path); });
+  write("outputLabels",
+        [&](const std::string & path)
+        { vr::WriteImage2D(vr::ConvertVolumeNodeToLabelImage(results.OwnerLabels), path); });
+  write("outputUnfilteredCPR",
+        [&](const std::string & path)
+        { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.UnfilteredCPR), path); });
+  write("outputSurface",
+        [&](const std::string & path) { vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS); });
+  write("outputPNG",
+        [&](const std::string & path)
+        {
+          double window = 0.0;
+          double level = 0.0;
+          logic.GetDisplayWindowLevel(window, level);
+          vr::WriteWindowedPNG(vr::ConvertVolumeNodeToDepthImage(results.CPR), window, level, path);
+        });
+  staged.CommitAll();
+
+  const auto &       size = results.View.GetSize();
+  const auto &       times = results.Times;
+  std::ostringstream summary;
+  summary << "VesselReformation: " << tree.GetNumberOfBranches() << " branches (" << report.Format << ", "
+          << vr::ToString(report.FileSpace) << "), view " << size[0] << " x " << size[1] << " pixels of "
+          << results.View.GetSpacing()[0] << " x " << results.View.GetSpacing()[1] << " mm; times (ms): " << std::fixed
+          << std::setprecision(1) << "conversion " << 1e3 * times.Conversion << ", depth " << 1e3 * times.Depth
+          << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", " << parameters.Iterations
+          << " iterations), resample " << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface;
+  progress.Print(std::cout, summary.str());
+}
+} // namespace
+
+extern "C" VR_MODULE_EXPORT int
+ModuleEntryPoint(int argc, char * argv[])
+{
+  return vr::RunCLIModule(argc,
+                          argv,
+                          XMLModuleDescription,
+                          "VesselReformation",
+                          "Multipath curved planar reformation with bilateral depth filtering",
+                          RunVesselReformation);
+}

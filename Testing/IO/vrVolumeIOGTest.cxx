@@ -1,0 +1,303 @@
+// Volume reader and writer (issue 3): ITK formats keep geometry and values, a DICOM folder is read as the series
+// with the most files, and bad volumes are input errors that name the file.
+#include "vrInputError.h"
+#include "vrTestFiles.h"
+#include "vrVolumeIO.h"
+
+#include "itkCPRVectorHelpers.h"
+#include "itkGDCMImageIO.h"
+#include "itkImageFileWriter.h"
+#include "itkImageSeriesWriter.h"
+#include "itkMetaDataObject.h"
+#include "itkVector.h"
+
+#include "vrTestImages.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace
+{
+using vr::VolumeImageType;
+
+using vr::test::InputErrorOf;
+
+#define EXPECT_MESSAGE_HAS(message, part)                                                                              \
+  EXPECT_NE((message).find(part), std::string::npos) << "message: " << (message) << "\nmissing: " << (part)
+
+/** A 4 x 5 x 6 volume with anisotropic spacing, an offset origin, a 90 degree rotation about z, and voxel value
+ * 0.5 x + 10 y - 3 z + 0.25 (distinct, exact in float). */
+template<typename TImage = VolumeImageType>
+typename TImage::Pointer
+MakeVolume(unsigned int slices = 6)
+{
+  auto                        volume = TImage::New();
+  typename TImage::RegionType region;
+  region.SetSize({ { 4, 5, slices } });
+  volume->SetRegions(region);
+  volume->SetSpacing(itk::detail::MakeVector3(0.5, 0.75, 1.25));
+  typename TImage::PointType origin;
+  origin[0] = 10.0;
+  origin[1] = -20.0;
+  origin[2] = 30.0;
+  volume->SetOrigin(origin);
+  typename TImage::DirectionType direction;
+  direction.Fill(0.0);
+  direction(0, 1) = -1.0;
+  direction(1, 0) = 1.0;
+  direction(2, 2) = 1.0;
+  volume->SetDirection(direction);
+  volume->Allocate();
+  for (unsigned int z = 0; z < slices; ++z)
+  {
+    for (unsigned int y = 0; y < 5; ++y)
+    {
+      for (unsigned int x = 0; x < 4; ++x)
+      {
+        volume->SetPixel({ { x, y, z } }, static_cast<typename TImage::PixelType>(0.5 * x + 10 * y - 3.0 * z + 0.25));
+      }
+    }
+  }
+  return volume;
+}
+
+template<typename TImage>
+void
+WriteWithITK(const TImage * image, const std::string & path)
+{
+  auto writer = itk::ImageFileWriter<TImage>::New();
+  writer->SetInput(image);
+  writer->SetFileName(path);
+  writer->Update();
+}
+
+void
+ExpectSameVolume(const VolumeImageType * expected, const VolumeImageType * actual, double geometryTolerance)
+{
+  ASSERT_EQ(actual->GetLargestPossibleRegion().GetSize(), expected->GetLargestPossibleRegion().GetSize());
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    EXPECT_NEAR(actual->GetSpacing()[axis], expected->GetSpacing()[axis], geometryTolerance);
+    EXPECT_NEAR(actual->GetOrigin()[axis], expected->GetOrigin()[axis], geometryTolerance);
+    for (unsigned int column = 0; column < 3; ++column)
+    {
+      EXPECT_NEAR(actual->GetDirection()(axis, column), expected->GetDirection()(axis, column), geometryTolerance);
+    }
+  }
+  const std::size_t count = expected->GetLargestPossibleRegion().GetNumberOfPixels();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    ASSERT_EQ(actual->GetBufferPointer()[k], expected->GetBufferPointer()[k]) << "voxel " << k;
+  }
+}
+
+TEST(VolumeIO, ReadsTheAortaMetaImageWithItsGeometry)
+{
+  const std::string folder = vr::test::AortaDataFolder();
+  if (folder.empty())
+  {
+    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+  }
+  const VolumeImageType::Pointer volume = vr::ReadVolume(folder + "/aorta.mha");
+  // The values of the MetaImage header (README: 157 x 393 x 34, direction diag(-1, -1, 1)).
+  EXPECT_EQ(volume->GetLargestPossibleRegion().GetSize(), (itk::Size<3>{ { 157, 393, 34 } }));
+  EXPECT_NEAR(volume->GetSpacing()[0], 0.878906, 1e-6);
+  EXPECT_NEAR(volume->GetSpacing()[2], 1.50009, 1e-6);
+  EXPECT_NEAR(volume->GetOrigin()[0], -156.445, 1e-6);
+  EXPECT_NEAR(volume->GetOrigin()[1], -24.6094, 1e-6);
+  EXPECT_EQ(volume->GetDirection()(0, 0), -1.0);
+  EXPECT_EQ(volume->GetDirection()(1, 1), -1.0);
+  EXPECT_EQ(volume->GetDirection()(2, 2), 1.0);
+}
+
+class VolumeFormatRoundTrip : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(VolumeFormatRoundTrip, KeepsValuesSpacingOriginAndDirection)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const auto                      volume = MakeVolume();
+  const std::string               path = folder.File("volume" + GetParam());
+  vr::WriteVolume(volume, path);
+  EXPECT_EQ(folder.Entries(), std::vector<std::string>{ "volume" + GetParam() });
+  // NIfTI keeps the geometry as a float quaternion; the others as decimal or double text.
+  ExpectSameVolume(volume, vr::ReadVolume(path), GetParam() == ".nii.gz" ? 1e-5 : 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(NRRDNIfTIMetaImage,
+                         VolumeFormatRoundTrip,
+                         ::testing::Values(".nrrd", ".nii.gz", ".mha"),
+                         [](const auto & info)
+                         {
+                           std::string name = info.param.substr(1);
+                           name.erase(std::remove(name.begin(), name.end(), '.'), name.end());
+                           return name;
+                         });
+
+using DicomVolumeType = itk::Image<short, 3>;
+
+/** Writes \a volume as a DICOM series of one file per slice, the way ITK's DICOM series examples do: each slice
+ * gets its position, orientation and the shared series UID in its own dictionary. */
+void
+WriteDicomSeries(const DicomVolumeType * volume,
+                 const std::string &     folder,
+                 const std::string &     prefix,
+                 const std::string &     seriesUID)
+{
+  using SliceType = itk::Image<short, 2>;
+  auto io = itk::GDCMImageIO::New();
+  auto writer = itk::ImageSeriesWriter<DicomVolumeType, SliceType>::New();
+  std::vector<std::unique_ptr<itk::MetaDataDictionary>> owned;
+  std::vector<itk::MetaDataDictionary *>                dictionaries;
+  std::vector<std::string>                              names;
+  const unsigned int                                    slices = volume->GetLargestPossibleRegion().GetSize()[2];
+  io->KeepOriginalUIDOn();
+  for (unsigned int z = 0; z < slices; ++z)
+  {
+    auto dictionary = std::make_unique<itk::MetaDataDictionary>();
+    auto put = [&](const char * tag, const std::string & value)
+    { itk::EncapsulateMetaData<std::string>(*dictionary, tag, value); };
+    itk::Point<double, 3> position;
+    volume->TransformIndexToPhysicalPoint({ { 0, 0, static_cast<itk::IndexValueType>(z) } }, position);
+    std::ostringstream positionText;
+    positionText << position[0] << "\\" << position[1] << "\\" << position[2];
+    put("0008|0060", "CT");
+    put("0008|0016", "1.2.840.10008.5.1.4.1.1.2");
+    put("0020|000d", "1.2.826.0.1.3680043.2.1125.1.1");
+    put("0020|000e", seriesUID);
+    put("0020|0052", "1.2.826.0.1.3680043.2.1125.1.3");
+    put("0008|0018", seriesUID + "." + std::to_string(z + 1));
+    put("0020|0013", std::to_string(z + 1));
+    put("0020|0032", positionText.str());
+    put("0020|0037", "1\\0\\0\\0\\1\\0");
+    put("0018|0050", std::to_string(volume->GetSpacing()[2]));
+    dictionaries.push_back(dictionary.get());
+    owned.push_back(std::move(dictionary));
+    names.push_back(folder + "/" + prefix + std::to_string(z + 1) + ".dcm");
+  }
+  writer->SetInput(volume);
+  writer->SetImageIO(io);
+  writer->SetFileNames(names);
+  writer->SetMetaDataDictionaryArray(&dictionaries);
+  writer->Update();
+}
+
+DicomVolumeType::Pointer
+MakeDicomVolume(unsigned int slices)
+{
+  auto                        volume = DicomVolumeType::New();
+  DicomVolumeType::RegionType region;
+  region.SetSize({ { 6, 5, slices } });
+  volume->SetRegions(region);
+  volume->SetSpacing(itk::detail::MakeVector3(0.75, 0.75, 2.5));
+  DicomVolumeType::PointType origin;
+  origin[0] = -100.0;
+  origin[1] = 50.0;
+  origin[2] = 12.5;
+  volume->SetOrigin(origin);
+  volume->Allocate();
+  for (unsigned int z = 0; z < slices; ++z)
+  {
+    for (unsigned int y = 0; y < 5; ++y)
+    {
+      for (unsigned int x = 0; x < 6; ++x)
+      {
+        volume->SetPixel({ { x, y, z } }, static_cast<short>(-1000 + 7 * x + 100 * y + 600 * z));
+      }
+    }
+  }
+  return volume;
+}
+
+TEST(VolumeIO, ReadsTheDICOMSeriesWithTheMostFilesFromAFolder)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const auto                      volume = MakeDicomVolume(5);
+  WriteDicomSeries(volume, folder.Path().string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+  // A two-slice series (a scout) in the same folder must not be chosen.
+  WriteDicomSeries(MakeDicomVolume(2), folder.Path().string(), "scout", "1.2.826.0.1.3680043.2.1125.1.2.2");
+
+  const VolumeImageType::Pointer read = vr::ReadVolume(folder.Path().string());
+  ASSERT_EQ(read->GetLargestPossibleRegion().GetSize(), volume->GetLargestPossibleRegion().GetSize());
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    EXPECT_NEAR(read->GetSpacing()[axis], volume->GetSpacing()[axis], 1e-6);
+    EXPECT_NEAR(read->GetOrigin()[axis], volume->GetOrigin()[axis], 1e-6);
+  }
+  EXPECT_EQ(read->GetDirection(), volume->GetDirection());
+  for (std::size_t k = 0; k < volume->GetLargestPossibleRegion().GetNumberOfPixels(); ++k)
+  {
+    ASSERT_EQ(read->GetBufferPointer()[k], static_cast<float>(volume->GetBufferPointer()[k])) << "voxel " << k;
+  }
+}
+
+TEST(BadVolumeInput, MissingCorruptTwoDimensionalVectorAndEmptyFolder)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  std::string                     message = InputErrorOf([&] { vr::ReadVolume(folder.File("missing.nrrd")); });
+  EXPECT_MESSAGE_HAS(message, folder.File("missing.nrrd"));
+  EXPECT_MESSAGE_HAS(message, "no such file");
+
+  const std::string corrupt = folder.File("corrupt.nrrd");
+  vr::test::WriteTextFile(corrupt, "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 x 4\nencoding: raw\n\n");
+  message = InputErrorOf([&] { vr::ReadVolume(corrupt); });
+  EXPECT_MESSAGE_HAS(message, corrupt);
+  EXPECT_MESSAGE_HAS(message, "header");
+  EXPECT_MESSAGE_HAS(message, "sizes"); // the NRRD field that is wrong
+
+  const std::string flat = folder.File("flat.nrrd");
+  auto              slice = itk::Image<float, 2>::New();
+  slice->SetRegions(itk::ImageRegion<2>({ { 0, 0 } }, { { 3, 3 } }));
+  slice->Allocate(true);
+  WriteWithITK(slice.GetPointer(), flat);
+  message = InputErrorOf([&] { vr::ReadVolume(flat); });
+  EXPECT_MESSAGE_HAS(message, flat);
+  EXPECT_MESSAGE_HAS(message, "2 dimensions; a volume must be 3D");
+
+  const std::string vectors = folder.File("vectors.nrrd");
+  using VectorVolume = itk::Image<itk::Vector<float, 3>, 3>;
+  auto field = VectorVolume::New();
+  field->SetRegions(itk::ImageRegion<3>({ { 0, 0, 0 } }, { { 2, 2, 2 } }));
+  field->Allocate(true);
+  WriteWithITK(field.GetPointer(), vectors);
+  message = InputErrorOf([&] { vr::ReadVolume(vectors); });
+  EXPECT_MESSAGE_HAS(message, vectors);
+  EXPECT_MESSAGE_HAS(message, "3 ");
+  EXPECT_MESSAGE_HAS(message, "must be scalar");
+
+  const std::string empty = folder.File("empty-folder");
+  std::filesystem::create_directory(empty);
+  message = InputErrorOf([&] { vr::ReadVolume(empty); });
+  EXPECT_MESSAGE_HAS(message, empty);
+  EXPECT_MESSAGE_HAS(message, "holds no DICOM series");
+
+  const std::string truncated = folder.File("truncated.nrrd");
+  vr::test::WriteTextFile(truncated,
+                          "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 4 4\nendian: little\n"
+                          "encoding: raw\n\n0123456789");
+  message = InputErrorOf([&] { vr::ReadVolume(truncated); });
+  EXPECT_MESSAGE_HAS(message, truncated);
+  EXPECT_MESSAGE_HAS(message, "voxel data");
+}
+
+TEST(BadVolumeOutput, AFailedWriteLeavesTheExistingFile)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const std::string               path = folder.File("volume.xyz");
+  vr::test::WriteTextFile(path, "previous");
+  const std::string message = InputErrorOf([&] { vr::WriteVolume(MakeVolume(), path); });
+  EXPECT_MESSAGE_HAS(message, path);
+  EXPECT_EQ(vr::test::ReadTextFile(path), "previous");
+  EXPECT_EQ(folder.Entries(), std::vector<std::string>{ "volume.xyz" });
+
+  EXPECT_MESSAGE_HAS(InputErrorOf([&] { vr::WriteVolume(MakeVolume(), folder.File("nowhere/volume.nrrd")); }),
+                     "does not exist");
+}
+} // namespace

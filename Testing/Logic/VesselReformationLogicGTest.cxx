@@ -1,0 +1,706 @@
+// The module logic: nodes to ITK (RAS <-> LPS), the recompute rules of DESIGN 3.7, warnings, parameter checks.
+
+#include "itkCPRVectorHelpers.h"
+#include "vrCoordinateFrames.h"
+#include "vrCutSurface.h"
+#include "vrInputError.h"
+#include "vrNodeConversion.h"
+#include "vrVesselReformationLogic.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkMatrix4x4.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+using vr::ReformationParameters;
+using vr::VesselReformationLogic;
+
+constexpr float  Lumen = 1000.0f;
+constexpr float  Background = 100.0f;
+constexpr double LumenRadius = 3.0;
+
+/** A polyline given in LPS, stored in RAS as a platform would hand it over. */
+struct Polyline
+{
+  std::vector<std::array<double, 3>> PointsLPS;
+};
+
+/** Distance from \a p to the segment a-b. */
+double
+DistanceToSegment(const std::array<double, 3> & p, const std::array<double, 3> & a, const std::array<double, 3> & b)
+{
+  double ab[3];
+  double ap[3];
+  double lengthSquared = 0.0;
+  double dot = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    ab[k] = b[k] - a[k];
+    ap[k] = p[k] - a[k];
+    lengthSquared += ab[k] * ab[k];
+    dot += ab[k] * ap[k];
+  }
+  const double t = lengthSquared > 0.0 ? std::clamp(dot / lengthSquared, 0.0, 1.0) : 0.0;
+  double       distanceSquared = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = ap[k] - t * ab[k];
+    distanceSquared += d * d;
+  }
+  return std::sqrt(distanceSquared);
+}
+
+/** Two vessels, a straight trunk along z and a branch leaving it, in LPS mm. */
+std::vector<Polyline>
+TwoVessels()
+{
+  Polyline trunk;
+  for (int z = 5; z <= 45; z += 2)
+  {
+    trunk.PointsLPS.push_back({ 15.0, 20.0, static_cast<double>(z) });
+  }
+  Polyline branch;
+  for (int step = 0; step <= 10; ++step)
+  {
+    branch.PointsLPS.push_back({ 15.0 + 1.3 * step, 20.0 + 0.6 * step, 25.0 + 2.0 * step });
+  }
+  return { trunk, branch };
+}
+
+/** A 40 x 40 x 50 volume with 1 mm voxels whose IJK->RAS is diag(-1, -1, 1): voxel (i, j, k) lies at LPS
+ * (i, j, k). Lumen intensity within LumenRadius of the vessels, background elsewhere. */
+vtkSmartPointer<vr::VolumeNode>
+MakeVolumeNode(const std::vector<Polyline> & vessels)
+{
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  data->SetExtent(0, 39, 0, 39, 0, 49);
+  data->AllocateScalars(VTK_SHORT, 1);
+  auto * voxels = static_cast<short *>(data->GetScalarPointer());
+  for (int k = 0; k < 50; ++k)
+  {
+    for (int j = 0; j < 40; ++j)
+    {
+      for (int i = 0; i < 40; ++i)
+      {
+        double distance = 1e9;
+        for (const auto & vessel : vessels)
+        {
+          for (std::size_t s = 0; s + 1 < vessel.PointsLPS.size(); ++s)
+          {
+            distance = std::min(
+              distance,
+              DistanceToSegment({ double(i), double(j), double(k) }, vessel.PointsLPS[s], vessel.PointsLPS[s + 1]));
+          }
+        }
+        voxels[(k * 40 + j) * 40 + i] = static_cast<short>(distance <= LumenRadius ? Lumen : Background);
+      }
+    }
+  }
+  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  matrix->SetElement(0, 0, -1.0);
+  matrix->SetElement(1, 1, -1.0);
+  auto node = vtkSmartPointer<vr::VolumeNode>::New();
+  node->SetName("two-vessels");
+  node->SetImageData(data);
+  node->SetIJKToRASMatrix(matrix);
+  return node;
+}
+
+/** The vessels as a centerline node: polylines in RAS with a "Radius" array. With \a forgetRAS the LPS
+ * coordinates are stored as they are, the classic mistake. */
+vtkSmartPointer<vr::CenterlineNode>
+MakeCenterlineNode(const std::vector<Polyline> & vessels, bool forgetRAS = false)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  auto lines = vtkSmartPointer<vtkCellArray>::New();
+  auto radii = vtkSmartPointer<vtkDoubleArray>::New();
+  radii->SetName("Radius");
+  for (const auto & vessel : vessels)
+  {
+    lines->InsertNextCell(static_cast<vtkIdType>(vessel.PointsLPS.size()));
+    for (const auto & p : vessel.PointsLPS)
+    {
+      const double sign = forgetRAS ? 1.0 : -1.0;
+      lines->InsertCellPoint(points->InsertNextPoint(sign * p[0], sign * p[1], p[2]));
+      radii->InsertNextValue(LumenRadius);
+    }
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetLines(lines);
+  polyData->GetPointData()->AddArray(radii);
+  auto node = vtkSmartPointer<vr::CenterlineNode>::New();
+  node->SetName("two-vessels-centerlines");
+  node->SetPolyData(polyData);
+  return node;
+}
+
+itk::Point<double, 3>
+MakePoint(double x, double y, double z)
+{
+  itk::Point<double, 3> point;
+  point[0] = x;
+  point[1] = y;
+  point[2] = z;
+  return point;
+}
+
+ReformationParameters
+QuickParameters()
+{
+  ReformationParameters parameters;
+  parameters.Iterations = 30;
+  parameters.Backend = vr::RelaxBackend::CPU;
+  return parameters;
+}
+
+class VesselReformationLogicTest : public ::testing::Test
+{
+protected:
+  void
+  SetUp() override
+  {
+    m_Vessels = TwoVessels();
+    m_Volume = MakeVolumeNode(m_Vessels);
+    m_Centerlines = MakeCenterlineNode(m_Vessels);
+    m_Logic.SetVolumeNode(m_Volume);
+    m_Logic.SetCenterlineNode(m_Centerlines);
+    m_Logic.SetParameters(QuickParameters());
+  }
+
+  std::vector<Polyline>               m_Vessels;
+  vtkSmartPointer<vr::VolumeNode>     m_Volume;
+  vtkSmartPointer<vr::CenterlineNode> m_Centerlines;
+  VesselReformationLogic              m_Logic;
+};
+
+void
+ExpectCounts(const vr::StageCounts & counts,
+             unsigned                depth,
+             unsigned                relax,
+             unsigned                resample,
+             unsigned                unfiltered,
+             unsigned                relaxed)
+{
+  EXPECT_EQ(counts.Depth, depth);
+  EXPECT_EQ(counts.Relax, relax);
+  EXPECT_EQ(counts.Resample, resample);
+  EXPECT_EQ(counts.UnfilteredSamplings, unfiltered);
+  EXPECT_EQ(counts.RelaxedSamplings, relaxed);
+}
+
+TEST_F(VesselReformationLogicTest, RecomputesOnlyWhatAChangeInvalidates)
+{
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 1u);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 1u);
+
+  // Unchanged parameters: nothing reruns.
+  m_Logic.SetParameters(m_Logic.GetParameters());
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 1u);
+
+  // A new w: relax and the relaxed CPR, not depth, not the unfiltered CPR.
+  ReformationParameters parameters = m_Logic.GetParameters();
+  parameters.Relaxation = 0.5;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 2, 2, 1, 2);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 2u);
+
+  // A new a, then a new N: the same.
+  parameters.Anisotropy = 2.0;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  parameters.Iterations = 10;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 4, 4, 1, 4);
+
+  // A new angle: all three.
+  parameters.AngleInDegrees = 30.0;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 5, 2, 5);
+
+  // A new window and level: nothing.
+  parameters.Window = 400.0;
+  parameters.Level = 500.0;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 5, 2, 5);
+  double window = 0.0;
+  double level = 0.0;
+  m_Logic.GetDisplayWindowLevel(window, level);
+  EXPECT_EQ(window, 400.0);
+  EXPECT_EQ(level, 500.0);
+
+  // A new interpolation: both CPR images, no depth, no relax.
+  parameters.Interpolation = itk::CPRInterpolationMode::Nearest;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 6, 3, 6);
+
+  // A new slab: the same.
+  parameters.SlabThickness = 2.0;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 7, 4, 7);
+
+  // A new mode: everything.
+  parameters.Mode = itk::CPRDepthMode::Nearest;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 3, 6, 8, 5, 8);
+
+  // Modified centerlines (the platform edited the polydata): conversion and everything.
+  m_Centerlines->GetPolyData()->GetPoints()->SetPoint(0, -15.0, -20.0, 6.0);
+  m_Centerlines->GetPolyData()->GetPoints()->Modified();
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 4, 7, 9, 6, 9);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 2u);
+
+  // Another volume node: conversion and everything.
+  m_Logic.SetVolumeNode(MakeVolumeNode(m_Vessels));
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 5, 8, 10, 7, 10);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 3u);
+}
+
+TEST_F(VesselReformationLogicTest, NewBackendRerunsRelaxAndResample)
+{
+  m_Logic.Update();
+  ReformationParameters parameters = m_Logic.GetParameters();
+  parameters.Backend = vr::RelaxBackend::Auto;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 2, 2, 1, 2);
+}
+
+TEST_F(VesselReformationLogicTest, SurfaceIsBuiltOnlyWhenEnabled)
+{
+  m_Logic.SetSurfaceEnabled(false);
+  const auto & outputs = m_Logic.Update();
+  EXPECT_EQ(outputs.Surface, nullptr);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 0u);
+  m_Logic.SetSurfaceEnabled(true);
+  m_Logic.Update();
+  ASSERT_NE(m_Logic.GetOutputs().Surface, nullptr);
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 1u);
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
+}
+
+TEST_F(VesselReformationLogicTest, CenterlinePixelsShowLumenAndFixedPixelsKeepTheirValue)
+{
+  ReformationParameters parameters = m_Logic.GetParameters();
+  parameters.FixLumen = false; // the mask is then exactly the centerline pixels
+  parameters.Iterations = 200;
+  m_Logic.SetParameters(parameters);
+  const auto & outputs = m_Logic.Update();
+  auto         mask = vr::ConvertVolumeNodeToMaskImage(outputs.FixedMask);
+  auto         depth = vr::ConvertVolumeNodeToDepthImage(outputs.Depth);
+  auto         relaxed = vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth);
+  auto         unfiltered = vr::ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR);
+  auto         cpr = vr::ConvertVolumeNodeToDepthImage(outputs.CPR);
+  const auto   count = mask->GetBufferedRegion().GetNumberOfPixels();
+  std::size_t  fixed = 0;
+  std::size_t  moved = 0;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    if (mask->GetBufferPointer()[k])
+    {
+      ++fixed;
+      EXPECT_EQ(relaxed->GetBufferPointer()[k], depth->GetBufferPointer()[k]) << "pixel " << k;
+      EXPECT_EQ(cpr->GetBufferPointer()[k], unfiltered->GetBufferPointer()[k]) << "pixel " << k;
+      EXPECT_GT(cpr->GetBufferPointer()[k], 0.5f * (Lumen + Background)) << "centerline pixel " << k;
+    }
+    else if (relaxed->GetBufferPointer()[k] != depth->GetBufferPointer()[k])
+    {
+      ++moved;
+    }
+  }
+  EXPECT_GT(fixed, 30u);
+  EXPECT_GT(moved, 0u) << "the relaxation changed nothing";
+  EXPECT_EQ(outputs.RelaxBackendUsed, "cpu");
+  EXPECT_GE(outputs.Times.Relax, 0.0);
+}
+
+TEST_F(VesselReformationLogicTest, ProgressRisesToOne)
+{
+  std::vector<double> fractions;
+  m_Logic.SetProgressCallback([&](double fraction, const std::string &) { fractions.push_back(fraction); });
+  m_Logic.Update();
+  ASSERT_GE(fractions.size(), 4u);
+  for (std::size_t k = 1; k < fractions.size(); ++k)
+  {
+    EXPECT_GE(fractions[k], fractions[k - 1] - 1e-12);
+  }
+  EXPECT_EQ(fractions.back(), 1.0);
+  EXPECT_GE(fractions.front(), 0.0);
+}
+
+TEST_F(VesselReformationLogicTest, WarnsWhenMostCenterlinePointsLieOutsideAndContinues)
+{
+  EXPECT_TRUE(m_Logic.GetWarnings().empty());
+  m_Logic.Update();
+  EXPECT_TRUE(m_Logic.GetWarnings().empty()) << m_Logic.GetWarnings().front();
+
+  std::vector<std::string> warned;
+  m_Logic.SetWarningCallback([&](const std::string & message) { warned.push_back(message); });
+  m_Logic.SetCenterlineNode(MakeCenterlineNode(m_Vessels, /*forgetRAS=*/true));
+  const auto & outputs = m_Logic.Update();
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_NE(warned[0].find("--centerlineSpace"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[0].find("100%"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[0].find("two-vessels-centerlines"), std::string::npos) << warned[0];
+  ASSERT_EQ(m_Logic.GetWarnings().size(), 1u);
+  EXPECT_NE(outputs.CPR, nullptr);
+  EXPECT_EQ(
+    vr::VesselReformationLogic::FractionOfPointsOutside(vr::ConvertCenterlineNodeToTree(MakeCenterlineNode(m_Vessels)),
+                                                        vr::ConvertVolumeNodeToItkImage(m_Volume)),
+    0.0);
+}
+
+TEST_F(VesselReformationLogicTest, AutoBackendNoticeIsAWarning)
+{
+  ReformationParameters parameters = m_Logic.GetParameters();
+  parameters.Backend = vr::RelaxBackend::Auto;
+  m_Logic.SetParameters(parameters);
+  std::string expected;
+  vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", expected);
+  m_Logic.Update();
+  const auto warnings = m_Logic.GetWarnings();
+  if (expected.empty())
+  {
+    EXPECT_TRUE(warnings.empty());
+  }
+  else
+  {
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], expected);
+  }
+}
+
+/** Update() must throw vr::InputError whose message holds every one of \a names. */
+void
+ExpectInputError(VesselReformationLogic & logic, const std::vector<std::string> & names)
+{
+  try
+  {
+    logic.Update();
+    FAIL() << "no error";
+  }
+  catch (const vr::InputError & error)
+  {
+    for (const auto & name : names)
+    {
+      EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << error.what() << " lacks " << name;
+    }
+  }
+}
+
+TEST_F(VesselReformationLogicTest, BadParametersAreNamedWithTheirValue)
+{
+  ReformationParameters parameters = QuickParameters();
+  parameters.Relaxation = 2.0;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "--relaxation", "2" });
+
+  parameters = QuickParameters();
+  parameters.Iterations = -5;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "--iterations", "-5" });
+
+  parameters = QuickParameters();
+  parameters.ImageSize[0] = 0;
+  parameters.ImageSize[1] = 10;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "--size", "0,10" });
+
+  parameters = QuickParameters();
+  parameters.Anisotropy = -1.0;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "--anisotropy", "-1" });
+
+  parameters = QuickParameters();
+  parameters.SlabThickness = std::nan("");
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "--slabThickness", "nan" });
+
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
+}
+
+TEST_F(VesselReformationLogicTest, ViewThatDoesNotFitInMemoryIsRefusedBeforeAllocating)
+{
+  ReformationParameters parameters = QuickParameters();
+  parameters.ImageSize[0] = 100000000;
+  parameters.ImageSize[1] = 100000000;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "--size", "100000000,100000000", "memory" });
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
+
+  // The logic recovers: a sensible size runs.
+  parameters.ImageSize[0] = 64;
+  parameters.ImageSize[1] = 96;
+  m_Logic.SetParameters(parameters);
+  const auto & outputs = m_Logic.Update();
+  int          dimensions[3];
+  outputs.CPR->GetImageData()->GetDimensions(dimensions);
+  EXPECT_EQ(dimensions[0], 64);
+  EXPECT_EQ(dimensions[1], 96);
+}
+
+TEST_F(VesselReformationLogicTest, MissingNodesAreReported)
+{
+  VesselReformationLogic empty;
+  ExpectInputError(empty, { "volume node" });
+  empty.SetVolumeNode(m_Volume);
+  ExpectInputError(empty, { "centerline node" });
+}
+
+TEST(VesselReformationLogicRelax, RelaxDepthImageFollowsEquationOne)
+{
+  // A 3 x 1 image [0, 10, 0], w = 1, a = 0, one iteration: each pixel becomes the mean of its neighbours.
+  auto depth = vr::DepthImageType::New();
+  depth->SetRegions(vr::DepthImageType::RegionType({ { 0, 0 } }, { { 3, 1 } }));
+  depth->Allocate();
+  depth->GetBufferPointer()[0] = 0.0f;
+  depth->GetBufferPointer()[1] = 10.0f;
+  depth->GetBufferPointer()[2] = 0.0f;
+  ReformationParameters parameters;
+  parameters.Relaxation = 1.0;
+  parameters.Anisotropy = 0.0;
+  parameters.Iterations = 1;
+  parameters.Backend = vr::RelaxBackend::CPU;
+  std::vector<std::string> warnings;
+  auto                     relaxed = VesselReformationLogic::RelaxDepthImage(depth, nullptr, parameters, {}, warnings);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[0], 10.0f);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[1], 0.0f);
+  EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[2], 10.0f);
+  EXPECT_TRUE(warnings.empty());
+
+  parameters.Relaxation = 1.5;
+  EXPECT_THROW(VesselReformationLogic::RelaxDepthImage(depth, nullptr, parameters, {}, warnings), vr::InputError);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Node conversion against hand-computed cases.
+
+TEST(NodeConversion, VolumeNodeGeometryBecomesLPS)
+{
+  // IJK->RAS with a rotation, anisotropic spacing and an offset:
+  //   R = -2 j + 10,  A = 3 i + 20,  S = 4 k - 30.
+  auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  const double elements[16] = { 0, -2, 0, 10, 3, 0, 0, 20, 0, 0, 4, -30, 0, 0, 0, 1 };
+  matrix->DeepCopy(elements);
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  data->SetExtent(0, 2, 0, 3, 0, 4);
+  data->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto * voxels = static_cast<unsigned char *>(data->GetScalarPointer());
+  for (int k = 0; k < 3 * 4 * 5; ++k)
+  {
+    voxels[k] = static_cast<unsigned char>(k);
+  }
+  auto node = vtkSmartPointer<vr::VolumeNode>::New();
+  node->SetImageData(data);
+  node->SetIJKToRASMatrix(matrix);
+
+  auto image = vr::ConvertVolumeNodeToItkImage(node);
+  // By hand: IJK->LPS = [[0, 2, 0, -10], [-3, 0, 0, -20], [0, 0, 4, -30]].
+  EXPECT_DOUBLE_EQ(image->GetSpacing()[0], 3.0);
+  EXPECT_DOUBLE_EQ(image->GetSpacing()[1], 2.0);
+  EXPECT_DOUBLE_EQ(image->GetSpacing()[2], 4.0);
+  EXPECT_DOUBLE_EQ(image->GetOrigin()[0], -10.0);
+  EXPECT_DOUBLE_EQ(image->GetOrigin()[1], -20.0);
+  EXPECT_DOUBLE_EQ(image->GetOrigin()[2], -30.0);
+  const double direction[3][3] = { { 0, 1, 0 }, { -1, 0, 0 }, { 0, 0, 1 } };
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_DOUBLE_EQ(image->GetDirection()[r][c], direction[r][c]) << r << "," << c;
+    }
+  }
+  // Voxel (1, 2, 3): RAS (-2*2 + 10, 3*1 + 20, 4*3 - 30) = (6, 23, -18), so LPS (-6, -23, -18).
+  vr::VolumeImageType::IndexType index = { { 1, 2, 3 } };
+  itk::Point<double, 3>          point;
+  image->TransformIndexToPhysicalPoint(index, point);
+  EXPECT_NEAR(point[0], -6.0, 1e-12);
+  EXPECT_NEAR(point[1], -23.0, 1e-12);
+  EXPECT_NEAR(point[2], -18.0, 1e-12);
+  EXPECT_EQ(image->GetPixel(index), static_cast<float>((3 * 4 + 2) * 3 + 1));
+
+  // Back to a node: the same matrix and voxels.
+  auto back = vr::ConvertItkImageToVolumeNode(image, "back");
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      EXPECT_NEAR(back->GetIJKToRASMatrix()->GetElement(r, c), elements[4 * r + c], 1e-12) << r << "," << c;
+    }
+  }
+  EXPECT_EQ(static_cast<float *>(back->GetImageData()->GetScalarPointer())[59], 59.0f);
+}
+
+TEST(NodeConversion, BadVolumeNodesAreNamed)
+{
+  auto node = vtkSmartPointer<vr::VolumeNode>::New();
+  node->SetName("broken");
+  try
+  {
+    vr::ConvertVolumeNodeToItkImage(node);
+    FAIL() << "no error";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_NE(std::string(error.what()).find("\"broken\""), std::string::npos) << error.what();
+  }
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  data->SetExtent(0, 1, 0, 1, 0, 1);
+  data->AllocateScalars(VTK_FLOAT, 1);
+  node->SetImageData(data);
+  auto singular = vtkSmartPointer<vtkMatrix4x4>::New();
+  singular->SetElement(2, 2, 0.0);
+  node->SetIJKToRASMatrix(singular);
+  EXPECT_THROW(vr::ConvertVolumeNodeToItkImage(node), vr::InputError);
+  data->SetSpacing(2.0, 1.0, 1.0);
+  node->SetIJKToRASMatrix(nullptr);
+  EXPECT_THROW(vr::ConvertVolumeNodeToItkImage(node), vr::InputError);
+}
+
+TEST(NodeConversion, CenterlineNodePointsBecomeLPS)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->InsertNextPoint(10.0, 20.0, 30.0);
+  points->InsertNextPoint(-1.5, 2.5, -3.5);
+  points->InsertNextPoint(7.0, -8.0, 9.0);
+  auto            lines = vtkSmartPointer<vtkCellArray>::New();
+  const vtkIdType first[2] = { 0, 1 };
+  const vtkIdType second[1] = { 2 };
+  lines->InsertNextCell(2, first);
+  lines->InsertNextCell(1, second);
+  auto radii = vtkSmartPointer<vtkDoubleArray>::New();
+  radii->SetName("MaximumInscribedSphereRadius");
+  radii->InsertNextValue(2.0);
+  radii->InsertNextValue(2.5);
+  radii->InsertNextValue(3.0);
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetLines(lines);
+  polyData->GetPointData()->AddArray(radii);
+  auto node = vtkSmartPointer<vr::CenterlineNode>::New();
+  node->SetPolyData(polyData);
+
+  const itk::CenterlineTree tree = vr::ConvertCenterlineNodeToTree(node);
+  ASSERT_EQ(tree.GetNumberOfBranches(), 2u);
+  const auto & trunk = tree.GetBranches()[0];
+  EXPECT_EQ(trunk.Id, 1);
+  ASSERT_EQ(trunk.Points.size(), 2u);
+  EXPECT_DOUBLE_EQ(trunk.Points[0][0], -10.0);
+  EXPECT_DOUBLE_EQ(trunk.Points[0][1], -20.0);
+  EXPECT_DOUBLE_EQ(trunk.Points[0][2], 30.0);
+  EXPECT_DOUBLE_EQ(trunk.Points[1][0], 1.5);
+  EXPECT_DOUBLE_EQ(trunk.Points[1][1], -2.5);
+  EXPECT_DOUBLE_EQ(trunk.Points[1][2], -3.5);
+  EXPECT_DOUBLE_EQ(trunk.Radii[1], 2.5);
+  EXPECT_EQ(tree.GetBranches()[1].Id, 2);
+  EXPECT_DOUBLE_EQ(tree.GetBranches()[1].Points[0][1], 8.0);
+
+  // Back to a node and again to a tree: ids and radii survive.
+  auto   back = vr::ConvertTreeToCenterlineNode(tree, "back");
+  double ras[3];
+  back->GetPolyData()->GetPoint(0, ras);
+  EXPECT_DOUBLE_EQ(ras[0], 10.0);
+  EXPECT_DOUBLE_EQ(ras[1], 20.0);
+  const itk::CenterlineTree again = vr::ConvertCenterlineNodeToTree(back);
+  EXPECT_EQ(again.GetBranches()[1].Id, 2);
+  EXPECT_DOUBLE_EQ(again.GetBranches()[0].Radii[0], 2.0);
+
+  auto empty = vtkSmartPointer<vr::CenterlineNode>::New();
+  empty->SetName("nothing");
+  empty->SetPolyData(vtkSmartPointer<vtkPolyData>::New());
+  EXPECT_THROW(vr::ConvertCenterlineNodeToTree(empty), vr::InputError);
+}
+
+TEST(NodeConversion, OutputImageNodeLiesOnTheViewPlane)
+{
+  // up S, angle 0: u = LPS (1, 0, 0), v = (0, 1, 0); C = (5, 6, 7), 4 x 3 pixels of 0.5 x 2 mm.
+  const itk::CPRViewGeometry view(
+    itk::detail::MakeVector3(0, 0, 1), 0.0, MakePoint(5, 6, 7), itk::Size<2>{ { 4, 3 } }, itk::detail::MakeVector2(0.5, 2.0));
+  auto image = vr::DepthImageType::New();
+  view.ConfigureImage(image.GetPointer());
+  image->Allocate();
+  for (int k = 0; k < 12; ++k)
+  {
+    image->GetBufferPointer()[k] = static_cast<float>(k) - 3.0f;
+  }
+  auto node = vr::ConvertItkImageToVolumeNode(image.GetPointer(), "Depth");
+  // Pixel (i, j) at LPS B = C + (i - 1.5) 0.5 u - (j - 1) 2 up; pixel (3, 2): (5.75, 6, 5), RAS (-5.75, -6, 5).
+  const double ijk[4] = { 3, 2, 0, 1 };
+  double       ras[4];
+  node->GetIJKToRASMatrix()->MultiplyPoint(ijk, ras);
+  EXPECT_NEAR(ras[0], -5.75, 1e-12);
+  EXPECT_NEAR(ras[1], -6.0, 1e-12);
+  EXPECT_NEAR(ras[2], 5.0, 1e-12);
+  // One slice step is one millimetre along v = LPS (0, 1, 0), RAS (0, -1, 0).
+  EXPECT_NEAR(node->GetIJKToRASMatrix()->GetElement(1, 2), -1.0, 1e-12);
+  EXPECT_STREQ(node->GetAttribute("CPR_Frame"), "LPS");
+
+  auto back = vr::ConvertVolumeNodeToDepthImage(node);
+  EXPECT_EQ(itk::CPRViewGeometry::ReadFromDictionary(back->GetMetaDataDictionary()), view);
+  EXPECT_EQ(back->GetSpacing(), image->GetSpacing());
+  EXPECT_EQ(back->GetOrigin(), image->GetOrigin());
+  EXPECT_EQ(back->GetBufferPointer()[11], 8.0f);
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The cut surface.
+
+TEST(CutSurface, PointsLieAtTheDepthAndJumpsStayOpen)
+{
+  // 3 x 2 pixels of 1 mm, C = 0, up S, angle 0. Depths: left column 0, the rest 0 except pixel (2, 1) = 10 mm.
+  const itk::CPRViewGeometry view(
+    itk::detail::MakeVector3(0, 0, 1), 0.0, MakePoint(0, 0, 0), itk::Size<2>{ { 3, 2 } }, itk::detail::MakeVector2(1.0, 1.0));
+  auto depth = vr::DepthImageType::New();
+  auto intensity = vr::DepthImageType::New();
+  view.ConfigureImage(depth.GetPointer());
+  view.ConfigureImage(intensity.GetPointer());
+  depth->Allocate();
+  intensity->Allocate();
+  const float depths[6] = { 0, 0, 0, 0, 0, 10 };
+  for (int k = 0; k < 6; ++k)
+  {
+    depth->GetBufferPointer()[k] = depths[k];
+    intensity->GetBufferPointer()[k] = 100.0f + k;
+  }
+  auto surface = vr::BuildCutSurface(depth, intensity, view, 4.0);
+  ASSERT_EQ(surface->GetNumberOfPoints(), 6);
+  // Pixel (2, 1): B = (2 - 1) u - (1 - 0.5) up = LPS (1, 0, -0.5); X = B + 10 v = (1, 10, -0.5); RAS (-1, -10, -0.5).
+  double x[3];
+  surface->GetPoint(5, x);
+  EXPECT_NEAR(x[0], -1.0, 1e-6);
+  EXPECT_NEAR(x[1], -10.0, 1e-6);
+  EXPECT_NEAR(x[2], -0.5, 1e-6);
+  EXPECT_EQ(surface->GetPointData()->GetScalars()->GetComponent(5, 0), 105.0);
+  // Two squares, four triangles; the two of the right square that touch pixel 5 cross the 10 mm jump.
+  EXPECT_EQ(surface->GetNumberOfPolys(), 2);
+  // With a threshold above the jump all four stay.
+  EXPECT_EQ(vr::BuildCutSurface(depth, intensity, view, 10.0)->GetNumberOfPolys(), 4);
+}
+} // namespace
