@@ -1,3 +1,4 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Small helpers every folder's CMakeLists.txt uses.
 
 # vr_target_defaults(<target>): the project's warnings on a target of its own.

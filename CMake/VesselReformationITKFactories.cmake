@@ -1,3 +1,4 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # vr_register_itk_io_factories(<target>): what include(${ITK_USE_FILE}) does for ITK's IO factories, scoped to one
 # (imported) target instead of the consumer's whole directory. Every translation unit that links <target> and
 # includes itkImageFileReader.h (or another IO reader/writer header) then registers the IO factories of the ITK

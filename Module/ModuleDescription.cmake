@@ -1,3 +1,4 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # The module description: the one source of truth for both command-line modules' XML
 # (Resources/VesselReformation.xml.in, Resources/BilateralDepthRelax.xml.in) and for vrModuleDescription.h, which
 # platforms and widgets include.

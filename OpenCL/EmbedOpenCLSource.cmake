@@ -1,3 +1,4 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Turns an OpenCL C file into a C++ header holding it as a raw string literal, so the kernel is compiled into the
 # library (never read from the build tree at run time) and the OpenCL compiler's line numbers match the .cl file.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Installs the dependencies, builds, and runs the main job on the built-in phantom. Pictures land in
 # ./vessel-reformation-demo/ (or the folder given as the first argument).
 set -euo pipefail

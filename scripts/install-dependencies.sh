@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Installs what VesselReformation needs to build and test on Debian 12 (bookworm), from Debian's packages.
 set -euo pipefail
 

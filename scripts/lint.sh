@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Runs clang-format (check only) and clang-tidy over the project's sources. Needs a configured build/ (for
 # compile_commands.json) and the clang-format / clang-tidy packages.
 #

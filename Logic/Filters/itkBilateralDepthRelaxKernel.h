@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #ifndef itkBilateralDepthRelaxKernel_h
 #define itkBilateralDepthRelaxKernel_h
 

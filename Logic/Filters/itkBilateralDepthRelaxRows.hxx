@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The row sweep's templates, included only by the itkBilateralDepthRelaxRows*.cxx translation units, each
 // compiled for one instruction set. Everything here has internal linkage and uses no standard-library templates:
 // code compiled for AVX-512 must never be picked by the linker for a caller on another processor.

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The row sweep for AVX2 with FMA (x86-64-v3): this file alone is compiled with -march=x86-64-v3, and runs only
 // on processors whose CPUID says they support it.
 #include "itkBilateralDepthRelaxRows.hxx"

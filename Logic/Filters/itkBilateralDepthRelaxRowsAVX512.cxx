@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The row sweep for AVX-512 (x86-64-v4): this file alone is compiled with -march=x86-64-v4, and runs only on
 // processors whose CPUID says they support it.
 #include "itkBilateralDepthRelaxRows.hxx"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The row sweep for whatever the build's compiler flags target: baseline x86-64 (SSE2, 4 lanes) by default, or
 // as wide as e.g. -march=native allows when runtime dispatch is off.
 #include "itkBilateralDepthRelaxRows.hxx"

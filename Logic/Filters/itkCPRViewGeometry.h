@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #ifndef itkCPRViewGeometry_h
 #define itkCPRViewGeometry_h
 

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #ifndef itkCenterlineTree_h
 #define itkCenterlineTree_h
 

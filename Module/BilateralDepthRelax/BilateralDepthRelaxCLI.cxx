@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The BilateralDepthRelax command-line module: the relaxation stage alone, depth map [+ mask] -> relaxed depth.
 
 #include "vrCLIModuleRunner.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The main job on a built-in default: a synthetic leg run-off CTA, reformatted as a multipath CPR with and
 // without bilateral depth filtering, written as pictures (the paper's Figure 2 among them).
 //

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The VesselReformation command-line module: volume + centerlines -> CPR images, depth maps, surface, PNG.
 // It only collects parameters and files; vr::VesselReformationLogic computes.
 

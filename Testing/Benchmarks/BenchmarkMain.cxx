@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // VesselReformationBenchmarks: the paper's Table 1 on this machine (see benchmark_table.py). The context of the
 // JSON output names the processor, the relax kernel's instruction set, the thread count and the build flags.
 #include "itkBilateralDepthRelaxKernel.h"

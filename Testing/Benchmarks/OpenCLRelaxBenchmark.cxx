@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The OpenCL relax at the paper's sizes (Table 1: 256x768 and 512x1024, 500 iterations), upload and download
 // included, on the run-off phantom's mpCPR depth map at 30 degrees. Names follow Relax_CPU/W/H and Relax_Plain/W/H.
 #include "vrBenchmarkScene.h"

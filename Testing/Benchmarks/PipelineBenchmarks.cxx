@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The stages around the relax, on the phantom at the paper's sizes, each with its filters kept between
 // iterations as the module logic keeps them while the user rotates the view:
 //   Depth/W/H          CPRDepthImageFilter for a new angle (the paper's "mpCPR" column)

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Relax_CPU/W/H: BilateralDepthRelaxFilter on the CPU (all cores, the widest instruction set); Relax_Plain/W/H:
 // the plain reference (a scalar double loop over Eq. 1, one thread) on the same input, for the ratio;
 // Relax_Generic/512/1024: the filter's previous CPU loop (now its generic path), for a second ratio;

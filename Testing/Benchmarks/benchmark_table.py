@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 """Prints the paper's Table 1 beside this machine's figures, from VesselReformationBenchmarks' JSON output.
 
     benchmark_table.py --run build/bin/VesselReformationBenchmarks [--json-out results.json] [-- ARGS...]

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The fast CPU relax (BilateralDepthRelaxKernel behind BilateralDepthRelaxFilter<float>) against the plain
 // reference, an independent double evaluation of Eq. 1: on the phantom's depth map at the paper's size and on
 // random depth maps with masks at odd sizes; and bit-identical results for any number of threads.

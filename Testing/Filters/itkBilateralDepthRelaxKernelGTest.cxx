@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // BilateralDepthRelaxKernel on its own: answers worked by hand on tiny rows, progress reporting, a progress
 // callback that throws (the team must stop, not hang), in-place use, results independent of the team size, and
 // every instruction set this processor runs against the plain reference.

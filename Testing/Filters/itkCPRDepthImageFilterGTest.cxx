@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // CPRDepthImageFilter against analytic cases (DESIGN 3.2 and 3.4). Unless a test says otherwise the view looks
 // along v = LPS +y (theta = 0, up = +z), so a point (x, y, z) lands in column x + (W-1)/2 and row -z + (H-1)/2
 // at depth y, with C at the origin and 1 mm pixels.

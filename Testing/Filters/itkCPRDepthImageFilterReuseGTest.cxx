@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // CPRDepthImageFilter keeps its work buffers between updates so that a new angle allocates nothing. A filter
 // that has already served other angles and sizes must give exactly the maps a fresh filter gives.
 #include "vrTestImages.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // CPRResampleImageFilter samples linearly straight from the volume's buffer and keeps the volume's minimum
 // between updates. Neither may change a result: these tests compare it, bit for bit, with the straightforward
 // evaluation through ITK's own LinearInterpolateImageFunction and MinimumMaximumImageCalculator.

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // CPRViewGeometry against DESIGN 3.2, by hand.
 
 #include "itkCPRVectorHelpers.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // 2D outputs (issue 3): NRRD images keep values and the CPR view, masks of any integer type read as fixed/free,
 // the windowed PNG, the cut surface as .vtp/.vtk, and failed writes that leave existing files alone.
 #include "itkCPRVectorHelpers.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Volume reader and writer (issue 3): ITK formats keep geometry and values, a DICOM folder is read as the series
 // with the most files, and bad volumes are input errors that name the file.
 #include "vrInputError.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The module logic: nodes to ITK (RAS <-> LPS), the recompute rules of DESIGN 3.7, warnings, parameter checks.
 
 #include "itkCPRVectorHelpers.h"

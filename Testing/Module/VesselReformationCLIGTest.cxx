@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The command-line modules as 3D Slicer and a shell use them: the built executables and shared libraries are run
 // (their paths come from CMake), their XML is parsed, their outputs read back, and every bad input of issue 3 is
 // tried.

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The OpenCL variant of BilateralDepthRelaxFilter against the CPU filter and against hand-worked answers
 // (DESIGN 3.5, issue 4). Tests that need a device are skipped, with the reason, when no OpenCL device exists.
 #include "itkBilateralDepthRelaxFilter.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Choosing an OpenCL device: the rules of vr::ChooseOpenCLDevice on device lists made by hand (no hardware
 // needed), and vr::ListOpenCLDevices on the machine.
 #include "vrInputError.h"

@@ -1,3 +1,4 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Installs the build tree to a temporary prefix, then configures, builds and runs Consumer/ against it with
 # find_package(VesselReformation). Run by CTest: cmake -DBUILD_DIR=... -DWORK_DIR=... -DSOURCE_DIR=... -P this.
 foreach(variable BUILD_DIR WORK_DIR SOURCE_DIR GENERATOR C_COMPILER CXX_COMPILER ITK_DIR VTK_DIR)

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The run-off phantom and the paper's claims on it (Kretschmer et al. 2014, Figures 2 and 4).
 
 #include "itkBilateralDepthRelaxFilter.h"

@@ -1,3 +1,4 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // An ITK pipeline of someone else's: phantom -> CPR depth -> bilateral relax (from the logic's backend factory) ->
 // resample, connected output to input and updated once at the end. Exits 0 when every pixel is finite and the
 // centerline pixels show the phantom's contrast-filled lumen (their median; a pixel centre of a thin tibial artery
