@@ -252,6 +252,12 @@ OpenCLBilateralDepthRelaxFilter::GenerateData()
 {
   this->AllocateOutputs();
   this->VerifyDepthIsFinite();
+  if (this->GetSolver() == BilateralDepthRelaxSolver::Steady)
+  {
+    // The steady solver (a multigrid) has no OpenCL kernel: it runs on the CPU, explicitly and whatever the device.
+    this->RelaxOnHost();
+    return;
+  }
   this->PrepareDevice();
   this->RelaxOnDevice();
 }

@@ -23,7 +23,8 @@ namespace itk
  *
  * Parameters are checked, the depth is checked to be finite and the input's metadata dictionary (the CPR view)
  * is passed on by the base class, exactly as on the CPU. Only GenerateData() differs (the ITK/RTK pattern of a
- * GPU filter deriving from its CPU filter).
+ * GPU filter deriving from its CPU filter). The Steady solver has no OpenCL kernel: with SetSolver(Steady) this
+ * filter relaxes on the CPU (BilateralDepthRelaxSteadySolver), without touching the device.
  *
  * The device: SetDeviceRequest(), else the environment variable VR_OPENCL_DEVICE, else the first GPU, else the
  * first CPU device; see vr::ChooseOpenCLDevice() for the syntax ("P:D" or a name substring). The context, queue,
@@ -88,7 +89,8 @@ protected:
   OpenCLBilateralDepthRelaxFilter();
   ~OpenCLBilateralDepthRelaxFilter() override;
 
-  /** Allocates the output, checks every depth is finite, then relaxes on the device. */
+  /** Allocates the output, checks every depth is finite, then relaxes on the device (Jacobi) or on the CPU
+   * (Steady). */
   void
   GenerateData() override;
 

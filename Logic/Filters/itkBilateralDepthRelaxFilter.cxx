@@ -3,5 +3,11 @@
 
 namespace itk
 {
+std::ostream &
+operator<<(std::ostream & os, BilateralDepthRelaxSolver solver)
+{
+  return os << (solver == BilateralDepthRelaxSolver::Steady ? "Steady" : "Jacobi");
+}
+
 template class BilateralDepthRelaxFilter<Image<float, 2>>;
 } // namespace itk

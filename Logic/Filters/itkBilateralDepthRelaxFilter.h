@@ -3,6 +3,8 @@
 #define itkBilateralDepthRelaxFilter_h
 
 #include "itkBilateralDepthRelaxKernel.h"
+#include "itkBilateralDepthRelaxSolver.h"
+#include "itkBilateralDepthRelaxSteadySolver.h"
 #include "itkImage.h"
 #include "itkImageToImageFilter.h"
 
@@ -17,11 +19,20 @@ namespace itk
  * fixed, from the previous iteration's values only,
  *
  * \f[ D'_p = \frac{(1-w)|\Omega| D_p + w \sum_{q \in \Omega(p)} R(D_p - D_q) D_q}
- *                 {(1-w)|\Omega| + w \sum_{q \in \Omega(p)} R(D_p - D_q)}, \qquad R(x) = e^{-a x^2} \f]
+ *                 {(1-w)|\Omega| + w \sum_{q \in \Omega(p)} R(D_p - D_q)}, \qquad R(x) = e^{-(x/J)^2} = e^{-a x^2} \f]
  *
  * where Omega(p) are the 4-neighbours inside the image (2 at corners, 3 on borders). Fixed pixels (mask != 0)
  * keep their value and still feed their neighbours. w = 0 changes nothing; a = 0 is linear Laplacian
- * smoothing; a larger a stops smoothing across larger depth jumps.
+ * smoothing; a larger a stops smoothing across smaller depth jumps.
+ *
+ * The range kernel is set by its meaning, the jump threshold J in mm (SetJumpThreshold(); depth steps well below J
+ * are smoothed away, steps of several J stay), or by the paper's anisotropy a = 1/J^2 in mm^-2 (SetAnisotropy());
+ * either setter sets both. The default, J = 3 mm (a = 1/9 mm^-2), removes the 2-10 mm scan-line seams of real CT
+ * angiography and keeps jumps from 20 mm; the paper's a = 0.5 mm^-2 (J = 1.41 mm) leaves most seams above 2 mm.
+ *
+ * Two solvers (SetSolver()): Jacobi, the paper's N passes, whose result depends on N and on the pixel count (N passes
+ * spread smoothing about sqrt(N) pixels); and Steady, the fixed point those passes approach, computed directly to a
+ * residual below SteadyTolerance mm by BilateralDepthRelaxSteadySolver (w and N do not apply).
  *
  * A weight R underflows to 0 when a x^2 exceeds WeightUnderflowExponent (the exponent of float's smallest
  * normal number), identically on every backend. When w = 1 and every weight of a pixel underflows, the pixel
@@ -30,12 +41,14 @@ namespace itk
  * The output does not depend on the number of threads (bit-identical), and carries the input's metadata
  * dictionary (the CPR view) along. Float images are relaxed by BilateralDepthRelaxKernel (shared edge weights, a
  * vectorised exponential, a team of GetNumberOfWorkUnits() threads at most as many as the multi-threader's);
- * other pixel types by a plain loop in double.
+ * other pixel types by a plain loop in double (Jacobi) or through a float copy (Steady).
  *
- * Bad parameters or inputs (w outside [0, 1], a < 0, a non-finite parameter, a mask of another size, a
+ * Bad parameters or inputs (w outside [0, 1], a < 0, J <= 0, a non-finite parameter, a mask of another size, a
  * non-finite depth) raise an itk::ExceptionObject naming the parameter and its value.
  *
- * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel
+ * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel,
+ * BilateralDepthRelaxSteadySolver
+ * \ingroup VesselReformation
  */
 template<typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
 class ITK_TEMPLATE_EXPORT BilateralDepthRelaxFilter : public ImageToImageFilter<TImage, TImage>
@@ -65,13 +78,38 @@ public:
   itkSetMacro(Relaxation, double);
   itkGetConstMacro(Relaxation, double);
 
-  /** Anisotropy a >= 0, in mm^-2: the range kernel's sharpness. 0 is isotropic (linear) smoothing. */
-  itkSetMacro(Anisotropy, double);
+  /** The default jump threshold J, in mm: see the class comment. */
+  static constexpr double DefaultJumpThreshold = 3.0;
+
+  /** Anisotropy a >= 0, in mm^-2: the range kernel's sharpness, a = 1/J^2. 0 is isotropic (linear) smoothing.
+   * Sets the jump threshold to 1/sqrt(a) (infinite for a = 0). */
+  void
+  SetAnisotropy(double anisotropy);
   itkGetConstMacro(Anisotropy, double);
 
-  /** Number of Jacobi iterations N >= 0. */
+  /** Jump threshold J > 0, in mm: R(x) = exp(-(x/J)^2). Sets the anisotropy to 1/J^2. */
+  void
+  SetJumpThreshold(double jumpThreshold);
+  itkGetConstMacro(JumpThreshold, double);
+
+  /** Number of Jacobi iterations N >= 0 (Jacobi only). */
   itkSetMacro(NumberOfIterations, unsigned int);
   itkGetConstMacro(NumberOfIterations, unsigned int);
+
+  /** Jacobi (the paper's, the default) or Steady. */
+  itkSetEnumMacro(Solver, BilateralDepthRelaxSolver);
+  itkGetEnumMacro(Solver, BilateralDepthRelaxSolver);
+
+  /** The residual max |D_p - sum R D_q / sum R| over free pixels that the Steady solver reaches, in mm (> 0). */
+  itkSetMacro(SteadyTolerance, double);
+  itkGetConstMacro(SteadyTolerance, double);
+
+  /** What the last Steady solve did (outer iterations, V-cycles, final residual); empty after a Jacobi update. */
+  const BilateralDepthRelaxSteadySolver::Report &
+  GetSteadyReport() const
+  {
+    return m_SteadyReport;
+  }
 
   /** Optional fixed mask, same size as the depth image: non-zero pixels keep their depth. */
   itkSetInputMacro(FixedMask, MaskImageType);
@@ -88,7 +126,7 @@ protected:
   BilateralDepthRelaxFilter();
   ~BilateralDepthRelaxFilter() override = default;
 
-  /** Checks w, a and the number of iterations. */
+  /** Checks w, a (or J, when it was set last) and the steady tolerance. */
   void
   VerifyPreconditions() ITKv5_CONST override;
   /** Checks that the mask has the depth image's size, then the physical space as usual. */
@@ -112,11 +150,15 @@ protected:
   void
   VerifyDepthIsFinite() const;
 
-  /** The CPU relaxation: N Jacobi sweeps over rows split among the work units (one thread each). Float images
-   * within BilateralDepthRelaxKernel::MaximumDepthMagnitude run the vectorised kernel; anything else the generic
-   * loop. */
+  /** The CPU relaxation. Jacobi: N sweeps over rows split among the work units (one thread each); float images
+   * within BilateralDepthRelaxKernel::MaximumDepthMagnitude run the vectorised kernel, anything else the generic
+   * loop. Steady: BilateralDepthRelaxSteadySolver. */
   void
   RelaxOnHost();
+
+  /** The number of threads the CPU paths use: min(GetNumberOfWorkUnits(), the multi-threader's maximum). */
+  unsigned int
+  GetNumberOfHostThreads();
 
   void
   PrintSelf(std::ostream & os, Indent indent) const override;
@@ -129,13 +171,23 @@ private:
   /** Any pixel type: a row-parallel loop evaluating Eq. 1 in double through ITK's threader. */
   void
   RelaxOnHostGeneric();
+  /** The Steady solver, on the pixels as float. */
+  void
+  RelaxOnHostSteady();
 
-  double       m_Relaxation{ 1.0 };
-  double       m_Anisotropy{ 0.5 };
-  unsigned int m_NumberOfIterations{ 500 };
+  double                    m_Relaxation{ 1.0 };
+  double                    m_JumpThreshold{ DefaultJumpThreshold };
+  double                    m_Anisotropy{ 1.0 / (DefaultJumpThreshold * DefaultJumpThreshold) };
+  bool                      m_JumpThresholdWasSet{ true }; // which of J and a the user set last, for messages
+  unsigned int              m_NumberOfIterations{ 500 };
+  BilateralDepthRelaxSolver m_Solver{ BilateralDepthRelaxSolver::Jacobi };
+  double                    m_SteadyTolerance{ BilateralDepthRelaxSteadySolver::DefaultTolerance };
 
-  // The fast kernel's buffers, kept between updates: relaxing again for a new view allocates nothing.
-  BilateralDepthRelaxKernel::Workspace m_KernelWorkspace;
+  BilateralDepthRelaxSteadySolver::Report m_SteadyReport;
+
+  // The fast kernels' buffers, kept between updates: relaxing again for a new view allocates nothing.
+  BilateralDepthRelaxKernel::Workspace       m_KernelWorkspace;
+  BilateralDepthRelaxSteadySolver::Workspace m_SteadyWorkspace;
 };
 
 } // namespace itk

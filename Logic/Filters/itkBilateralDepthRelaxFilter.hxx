@@ -8,6 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -23,6 +26,34 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::BilateralDepthRelaxFilter()
 
 template<typename TImage, typename TMaskImage>
 void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::SetAnisotropy(double anisotropy)
+{
+  if (m_Anisotropy == anisotropy && !m_JumpThresholdWasSet) // NaN != NaN: a NaN always counts as a change
+  {
+    return;
+  }
+  m_Anisotropy = anisotropy;
+  m_JumpThreshold = anisotropy > 0.0 ? 1.0 / std::sqrt(anisotropy) : std::numeric_limits<double>::infinity();
+  m_JumpThresholdWasSet = false;
+  this->Modified();
+}
+
+template<typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::SetJumpThreshold(double jumpThreshold)
+{
+  if (m_JumpThreshold == jumpThreshold && m_JumpThresholdWasSet)
+  {
+    return;
+  }
+  m_JumpThreshold = jumpThreshold;
+  m_Anisotropy = 1.0 / (jumpThreshold * jumpThreshold);
+  m_JumpThresholdWasSet = true;
+  this->Modified();
+}
+
+template<typename TImage, typename TMaskImage>
+void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyPreconditions() ITKv5_CONST
 {
   Superclass::VerifyPreconditions();
@@ -30,9 +61,19 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::VerifyPreconditions() ITKv5_CONST
   {
     itkExceptionMacro(<< "Relaxation w = " << m_Relaxation << " is invalid: it must be a finite number in [0, 1]");
   }
+  if (m_JumpThresholdWasSet && !(std::isfinite(m_JumpThreshold) && m_JumpThreshold > 0.0))
+  {
+    itkExceptionMacro(<< "JumpThreshold J = " << m_JumpThreshold << " mm is invalid: it must be finite and > 0");
+  }
   if (!(std::isfinite(m_Anisotropy) && m_Anisotropy >= 0.0))
   {
-    itkExceptionMacro(<< "Anisotropy a = " << m_Anisotropy << " mm^-2 is invalid: it must be finite and >= 0");
+    itkExceptionMacro(<< "Anisotropy a = " << m_Anisotropy << " mm^-2 is invalid: it must be finite and >= 0"
+                      << (m_JumpThresholdWasSet ? " (from JumpThreshold J = " : "")
+                      << (m_JumpThresholdWasSet ? std::to_string(m_JumpThreshold) + " mm)" : ""));
+  }
+  if (!(std::isfinite(m_SteadyTolerance) && m_SteadyTolerance > 0.0))
+  {
+    itkExceptionMacro(<< "SteadyTolerance = " << m_SteadyTolerance << " mm is invalid: it must be finite and > 0");
   }
 }
 
@@ -109,9 +150,24 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GenerateData()
 }
 
 template<typename TImage, typename TMaskImage>
+unsigned int
+BilateralDepthRelaxFilter<TImage, TMaskImage>::GetNumberOfHostThreads()
+{
+  // ITK's pool threader hands out several work units per thread; the kernels' teams need real threads, one per
+  // core ITK uses, or their barriers would wait on threads that share a core.
+  return std::max(1u, std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads()));
+}
+
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHost()
 {
+  m_SteadyReport = BilateralDepthRelaxSteadySolver::Report();
+  if (m_Solver == BilateralDepthRelaxSolver::Steady)
+  {
+    this->RelaxOnHostSteady();
+    return;
+  }
   if constexpr (std::is_same<PixelType, float>::value)
   {
     const ImageType * depth = this->GetInput();
@@ -155,10 +211,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
     }
   }
 
-  // ITK's pool threader hands out several work units per thread; the kernel's team needs real threads, one per
-  // core ITK uses, or its barrier would wait on threads that share a core.
-  const unsigned int threads =
-    std::max(1u, std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads()));
+  const unsigned int threads = this->GetNumberOfHostThreads();
   const unsigned int iterations = m_NumberOfIterations;
   BilateralDepthRelaxKernel::Relax(
     depth->GetBufferPointer(),
@@ -259,12 +312,88 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
 
 template<typename TImage, typename TMaskImage>
 void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostSteady()
+{
+  const ImageType *     depth = this->GetInput();
+  const MaskImageType * mask = this->GetFixedMask();
+  ImageType *           output = this->GetOutput();
+  const auto            size = depth->GetLargestPossibleRegion().GetSize();
+  const std::size_t     count = depth->GetBufferedRegion().GetNumberOfPixels();
+
+  std::vector<unsigned char> fixed;
+  if (mask)
+  {
+    const auto * values = mask->GetBufferPointer();
+    fixed.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      fixed[k] = values[k] != 0 ? 1 : 0;
+    }
+  }
+  const PixelType *  in = depth->GetBufferPointer();
+  PixelType *        out = output->GetBufferPointer();
+  std::vector<float> copy;
+  const float *      values = nullptr;
+  std::vector<float> relaxed(count);
+  if constexpr (std::is_same<PixelType, float>::value)
+  {
+    values = in;
+  }
+  else
+  {
+    copy.assign(in, in + count);
+    values = copy.data();
+  }
+  auto progress = [this](double fraction)
+  {
+    this->UpdateProgress(static_cast<float>(fraction));
+    if (this->GetAbortGenerateData())
+    {
+      ProcessAborted aborted(__FILE__, __LINE__);
+      aborted.SetDescription("BilateralDepthRelaxFilter: the steady solve was aborted");
+      throw aborted;
+    }
+  };
+  try
+  {
+    m_SteadyReport = BilateralDepthRelaxSteadySolver::Solve(values,
+                                                            fixed.empty() ? nullptr : fixed.data(),
+                                                            relaxed.data(),
+                                                            size[0],
+                                                            size[1],
+                                                            m_Anisotropy,
+                                                            m_SteadyTolerance,
+                                                            this->GetNumberOfHostThreads(),
+                                                            progress,
+                                                            &m_SteadyWorkspace);
+  }
+  catch (const std::runtime_error & error)
+  {
+    itkExceptionMacro(<< error.what());
+  }
+  // Fixed pixels come from the input itself, bit for bit, whatever the pixel type.
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    out[k] = !fixed.empty() && fixed[k] ? in[k] : static_cast<PixelType>(relaxed[k]);
+  }
+}
+
+template<typename TImage, typename TMaskImage>
+void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Indent indent) const
 {
   Superclass::PrintSelf(os, indent);
   os << indent << "Relaxation (w): " << m_Relaxation << std::endl;
-  os << indent << "Anisotropy (a, mm^-2): " << m_Anisotropy << std::endl;
+  os << indent << "JumpThreshold (J, mm): " << m_JumpThreshold << std::endl;
+  os << indent << "Anisotropy (a = 1/J^2, mm^-2): " << m_Anisotropy << std::endl;
+  os << indent << "JumpThresholdWasSet: " << (m_JumpThresholdWasSet ? "yes (J set last)" : "no (a set last)")
+     << std::endl;
   os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
+  os << indent << "Solver: " << m_Solver << std::endl;
+  os << indent << "SteadyTolerance (mm): " << m_SteadyTolerance << std::endl;
+  os << indent << "SteadyReport: " << m_SteadyReport.OuterIterations << " outer iterations, " << m_SteadyReport.Cycles
+     << " V-cycles, residual " << m_SteadyReport.Residual << " mm" << std::endl;
+  os << indent << "KernelWorkspace, SteadyWorkspace: the fast paths' buffers, kept between updates" << std::endl;
 }
 
 } // namespace itk

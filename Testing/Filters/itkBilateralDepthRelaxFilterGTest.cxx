@@ -12,6 +12,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -311,6 +314,94 @@ TEST(BilateralDepthRelaxFilter, RejectsBadParameters)
   filter = ValidFilter();
   filter->SetAnisotropy(std::numeric_limits<double>::infinity());
   ExpectRejected(filter, { "Anisotropy", "inf" });
+
+  for (const double jump : { 0.0, -2.0, std::numeric_limits<double>::infinity(), std::nan("") })
+  {
+    filter = ValidFilter();
+    filter->SetJumpThreshold(jump);
+    std::ostringstream value;
+    value << jump;
+    ExpectRejected(filter, { "JumpThreshold", value.str(), "mm" });
+  }
+
+  filter = ValidFilter();
+  filter->SetSolver(itk::BilateralDepthRelaxSolver::Steady);
+  filter->SetSteadyTolerance(0.0);
+  ExpectRejected(filter, { "SteadyTolerance", "0" });
+}
+
+// The range kernel by meaning: J in mm and the paper's a = 1/J^2 are two views of one parameter; either setter sets
+// both, and the default is J = 3 mm.
+TEST(BilateralDepthRelaxFilter, JumpThresholdAndAnisotropyAreOneParameter)
+{
+  auto filter = FilterType::New();
+  EXPECT_EQ(filter->GetJumpThreshold(), 3.0);
+  EXPECT_DOUBLE_EQ(filter->GetAnisotropy(), 1.0 / 9.0);
+  filter->SetJumpThreshold(2.0);
+  EXPECT_EQ(filter->GetAnisotropy(), 0.25);
+  filter->SetAnisotropy(0.5);
+  EXPECT_DOUBLE_EQ(filter->GetJumpThreshold(), std::sqrt(2.0));
+  filter->SetAnisotropy(0.0);
+  EXPECT_EQ(filter->GetJumpThreshold(), std::numeric_limits<double>::infinity());
+
+  // The same relaxation either way: the row 0, 0, 2 of RangeWeightWorkedByHand with R(2) = 1/2, that is
+  // J = 2 / sqrt(ln 2) mm or a = ln 2 / 4 mm^-2.
+  const auto depth = MakeDepthImage(3, 1, { 0.0f, 0.0f, 2.0f });
+  auto       byJump = FilterType::New();
+  byJump->SetInput(depth);
+  byJump->SetJumpThreshold(2.0 / std::sqrt(std::log(2.0)));
+  byJump->SetNumberOfIterations(1);
+  byJump->Update();
+  EXPECT_NEAR(PixelsOf(byJump->GetOutput())[1], 2.0 / 3.0, Tolerance);
+  EXPECT_EQ(PixelsOf(byJump->GetOutput()), Relax(depth, nullptr, 1.0, std::log(2.0) / 4.0, 1));
+
+  // Setting a value equal to the current one changes nothing; switching parametrisation is a change.
+  const auto time = byJump->GetMTime();
+  byJump->SetJumpThreshold(2.0 / std::sqrt(std::log(2.0)));
+  EXPECT_EQ(byJump->GetMTime(), time);
+  byJump->SetAnisotropy(byJump->GetAnisotropy());
+  EXPECT_GT(byJump->GetMTime(), time);
+}
+
+// The steady solver through the filter: on the 3 x 3 cross worked by hand (IsotropicCentreIsTheMeanOfItsNeighbours
+// of the solver's suite) the centre is the mean of its neighbours; w and N change nothing; fixed pixels keep their
+// values; the filter reports what the solve did; a double image gives the same values.
+TEST(BilateralDepthRelaxFilter, SteadySolverGivesTheFixedPointWhateverWAndN)
+{
+  const auto         depth = MakeDepthImage(3, 3, { 0, 4, 0, 0, 9, 0, 0, 0, 0 });
+  const auto         mask = MakeMaskImage(3, 3, { 1, 1, 1, 1, 0, 1, 1, 1, 1 });
+  std::vector<float> first;
+  for (const auto & [w, n] : { std::pair<double, unsigned int>{ 1.0, 500 }, { 0.3, 1 }, { 0.0, 0 } })
+  {
+    auto filter = FilterType::New();
+    filter->SetInput(depth);
+    filter->SetFixedMask(mask);
+    filter->SetAnisotropy(0.0);
+    filter->SetRelaxation(w);
+    filter->SetNumberOfIterations(n);
+    filter->SetSolver(itk::BilateralDepthRelaxSolver::Steady);
+    filter->Update();
+    const auto relaxed = PixelsOf(filter->GetOutput());
+    EXPECT_NEAR(relaxed[4], 1.0, 1e-4) << "w = " << w << ", N = " << n;
+    EXPECT_EQ(relaxed[1], 4.0f);
+    EXPECT_LE(filter->GetSteadyReport().Residual, filter->GetSteadyTolerance());
+    first = first.empty() ? relaxed : first;
+    EXPECT_EQ(relaxed, first);
+  }
+
+  using DoubleImage = itk::Image<double, 2>;
+  auto doubleDepth = DoubleImage::New();
+  doubleDepth->SetRegions(depth->GetLargestPossibleRegion());
+  doubleDepth->Allocate();
+  std::copy_n(depth->GetBufferPointer(), 9, doubleDepth->GetBufferPointer());
+  auto generic = itk::BilateralDepthRelaxFilter<DoubleImage>::New();
+  generic->SetInput(doubleDepth);
+  generic->SetFixedMask(mask);
+  generic->SetAnisotropy(0.0);
+  generic->SetSolver(itk::BilateralDepthRelaxSolver::Steady);
+  generic->Update();
+  EXPECT_NEAR(generic->GetOutput()->GetBufferPointer()[4], 1.0, 1e-4);
+  EXPECT_EQ(generic->GetOutput()->GetBufferPointer()[1], 4.0);
 }
 
 TEST(BilateralDepthRelaxFilter, RejectsANonFiniteDepth)

@@ -530,8 +530,11 @@ TEST(OpenCLBilateralDepthRelax, PrintSelfNamesTheDeviceAndEveryParameter)
   std::ostringstream text;
   filter->Print(text);
   for (const char * expected : { "Relaxation (w)",
-                                 "Anisotropy (a, mm^-2)",
+                                 "JumpThreshold (J, mm)",
+                                 "Anisotropy (a = 1/J^2, mm^-2)",
                                  "NumberOfIterations (N)",
+                                 "Solver: Jacobi",
+                                 "SteadyTolerance (mm)",
                                  "DeviceRequest",
                                  "Device: ",
                                  "Kernel shape" })
@@ -539,5 +542,26 @@ TEST(OpenCLBilateralDepthRelax, PrintSelfNamesTheDeviceAndEveryParameter)
     EXPECT_NE(text.str().find(expected), std::string::npos) << expected;
   }
   EXPECT_NE(text.str().find(filter->GetDeviceLabel()), std::string::npos);
+}
+
+// The steady solver has no OpenCL kernel: the OpenCL filter relaxes on the CPU then, explicitly, and gives the CPU
+// filter's bits. It needs no device for it.
+TEST(OpenCLBilateralDepthRelax, SteadySolverRunsOnTheCPUWithTheCPUFiltersBits)
+{
+  const auto depth = vr::test::MakeRandomDepthImage(45, 33, 0.0f, 8.0f, 5);
+  const auto mask = vr::test::MakeRandomMaskImage(45, 33, 0.05, 6);
+  auto       cpu = itk::BilateralDepthRelaxFilter<vr::test::DepthImage>::New();
+  auto       opencl = OpenCLFilter::New();
+  for (itk::BilateralDepthRelaxFilter<vr::test::DepthImage> * filter :
+       { cpu.GetPointer(), static_cast<itk::BilateralDepthRelaxFilter<vr::test::DepthImage> *>(opencl.GetPointer()) })
+  {
+    filter->SetDepthInput(depth);
+    filter->SetFixedMask(mask);
+    filter->SetSolver(itk::BilateralDepthRelaxSolver::Steady);
+    filter->Update();
+  }
+  EXPECT_EQ(vr::test::PixelsOf(opencl->GetOutput()), vr::test::PixelsOf(cpu->GetOutput()));
+  EXPECT_GT(opencl->GetSteadyReport().OuterIterations, 0u);
+  EXPECT_EQ(opencl->GetDeviceLabel(), "") << "the steady solve must not have touched an OpenCL device";
 }
 } // namespace

@@ -1,12 +1,83 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "PlainBilateralDepthRelax.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace vr::test
 {
+namespace
+{
+/** R(x) = exp(-a x^2), 0 when a x^2 exceeds -ln(FLT_MIN). */
+double
+RangeWeight(double anisotropy, double x)
+{
+  static const double underflowExponent = -std::log(static_cast<double>(FLT_MIN));
+  const double        exponent = anisotropy * x * x;
+  return exponent > underflowExponent ? 0.0 : std::exp(-exponent);
+}
+
+/** One Jacobi pass of Eq. 1 from \a current into \a next. */
+void
+JacobiPass(const std::vector<double> &        current,
+           std::vector<double> &              next,
+           const std::vector<unsigned char> & fixed,
+           std::size_t                        width,
+           std::size_t                        height,
+           double                             relaxation,
+           double                             anisotropy)
+{
+  const long columns = static_cast<long>(width);
+  const long rows = static_cast<long>(height);
+  const long neighbourOffsets[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
+  for (long y = 0; y < rows; ++y)
+  {
+    for (long x = 0; x < columns; ++x)
+    {
+      const std::size_t p = static_cast<std::size_t>(y * columns + x);
+      const double      Dp = current[p];
+      if (!fixed.empty() && fixed[p] != 0)
+      {
+        next[p] = Dp;
+        continue;
+      }
+      double omega = 0.0;
+      double weightedNeighbours = 0.0;
+      double weights = 0.0;
+      for (const auto & offset : neighbourOffsets)
+      {
+        const long qx = x + offset[0];
+        const long qy = y + offset[1];
+        if (qx < 0 || qy < 0 || qx >= columns || qy >= rows)
+        {
+          continue;
+        }
+        const double Dq = current[static_cast<std::size_t>(qy * columns + qx)];
+        const double weight = RangeWeight(anisotropy, Dp - Dq);
+        omega += 1.0;
+        weightedNeighbours += weight * Dq;
+        weights += weight;
+      }
+      const double numerator = (1.0 - relaxation) * omega * Dp + relaxation * weightedNeighbours;
+      const double denominator = (1.0 - relaxation) * omega + relaxation * weights;
+      next[p] = denominator > 0.0 ? numerator / denominator : Dp;
+    }
+  }
+}
+
+void
+CheckSizes(std::size_t depth, std::size_t fixed, std::size_t width, std::size_t height, const char * who)
+{
+  if (depth != width * height || (fixed != 0 && fixed != depth))
+  {
+    throw std::invalid_argument(std::string(who) + ": depth or mask size does not match width x height");
+  }
+}
+} // namespace
+
 std::vector<double>
 PlainBilateralDepthRelax(const std::vector<float> &         depth,
                          const std::vector<unsigned char> & fixed,
@@ -16,58 +87,61 @@ PlainBilateralDepthRelax(const std::vector<float> &         depth,
                          double                             anisotropy,
                          unsigned int                       iterations)
 {
-  if (depth.size() != width * height || (!fixed.empty() && fixed.size() != depth.size()))
-  {
-    throw std::invalid_argument("PlainBilateralDepthRelax: depth or mask size does not match width x height");
-  }
-  const double underflowExponent = -std::log(static_cast<double>(FLT_MIN));
-  auto         R = [&](double x)
-  {
-    const double exponent = anisotropy * x * x;
-    return exponent > underflowExponent ? 0.0 : std::exp(-exponent);
-  };
-
+  CheckSizes(depth.size(), fixed.size(), width, height, "PlainBilateralDepthRelax");
   std::vector<double> current(depth.begin(), depth.end());
   std::vector<double> next(current.size());
-  const long          columns = static_cast<long>(width);
-  const long          rows = static_cast<long>(height);
-  const long          neighbourOffsets[4][2] = { { -1, 0 }, { 1, 0 }, { 0, -1 }, { 0, 1 } };
   for (unsigned int iteration = 0; iteration < iterations; ++iteration)
   {
-    for (long y = 0; y < rows; ++y)
-    {
-      for (long x = 0; x < columns; ++x)
-      {
-        const std::size_t p = static_cast<std::size_t>(y * columns + x);
-        const double      Dp = current[p];
-        if (!fixed.empty() && fixed[p] != 0)
-        {
-          next[p] = Dp;
-          continue;
-        }
-        double omega = 0.0;
-        double weightedNeighbours = 0.0;
-        double weights = 0.0;
-        for (const auto & offset : neighbourOffsets)
-        {
-          const long qx = x + offset[0];
-          const long qy = y + offset[1];
-          if (qx < 0 || qy < 0 || qx >= columns || qy >= rows)
-          {
-            continue;
-          }
-          const double Dq = current[static_cast<std::size_t>(qy * columns + qx)];
-          const double weight = R(Dp - Dq);
-          omega += 1.0;
-          weightedNeighbours += weight * Dq;
-          weights += weight;
-        }
-        const double numerator = (1.0 - relaxation) * omega * Dp + relaxation * weightedNeighbours;
-        const double denominator = (1.0 - relaxation) * omega + relaxation * weights;
-        next[p] = denominator > 0.0 ? numerator / denominator : Dp;
-      }
-    }
+    JacobiPass(current, next, fixed, width, height, relaxation, anisotropy);
     current.swap(next);
+  }
+  return current;
+}
+
+double
+PlainFixedPointResidual(const std::vector<double> &        depth,
+                        const std::vector<unsigned char> & fixed,
+                        std::size_t                        width,
+                        std::size_t                        height,
+                        double                             anisotropy)
+{
+  CheckSizes(depth.size(), fixed.size(), width, height, "PlainFixedPointResidual");
+  // D_p - (one Jacobi pass at w = 1)_p is exactly D_p - sum R D_q / sum R, and 0 where every weight vanishes.
+  std::vector<double> next(depth.size());
+  JacobiPass(depth, next, fixed, width, height, 1.0, anisotropy);
+  double largest = 0.0;
+  for (std::size_t k = 0; k < depth.size(); ++k)
+  {
+    largest = std::max(largest, std::abs(depth[k] - next[k]));
+  }
+  return largest;
+}
+
+std::vector<double>
+PlainJacobiToResidual(const std::vector<float> &         depth,
+                      const std::vector<unsigned char> & fixed,
+                      std::size_t                        width,
+                      std::size_t                        height,
+                      double                             anisotropy,
+                      double                             residual,
+                      unsigned int                       maximumIterations,
+                      unsigned int &                     iterations,
+                      unsigned int                       checkEvery)
+{
+  CheckSizes(depth.size(), fixed.size(), width, height, "PlainJacobiToResidual");
+  std::vector<double> current(depth.begin(), depth.end());
+  std::vector<double> next(current.size());
+  iterations = 0;
+  while (iterations < maximumIterations)
+  {
+    if (iterations % std::max(1u, checkEvery) == 0 &&
+        PlainFixedPointResidual(current, fixed, width, height, anisotropy) <= residual)
+    {
+      break;
+    }
+    JacobiPass(current, next, fixed, width, height, 1.0, anisotropy);
+    current.swap(next);
+    ++iterations;
   }
   return current;
 }

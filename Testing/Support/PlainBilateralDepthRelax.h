@@ -25,6 +25,31 @@ PlainBilateralDepthRelax(const std::vector<float> &         depth,
                          double                             relaxation,
                          double                             anisotropy,
                          unsigned int                       iterations);
+
+/** The fixed-point residual of a relaxed depth map, written independently of the solvers: the largest
+ * |D_p - sum_q R(D_p - D_q) D_q / sum_q R(D_p - D_q)| over free pixels p whose weights do not all vanish, in mm,
+ * with R(x) = exp(-a x^2) in double and R = 0 when a x^2 > -ln(FLT_MIN) (the filter's underflow rule). Where that
+ * residual is 0, D is a fixed point of Eq. 1 for every w. \a fixed may be empty. */
+double
+PlainFixedPointResidual(const std::vector<double> &        depth,
+                        const std::vector<unsigned char> & fixed,
+                        std::size_t                        width,
+                        std::size_t                        height,
+                        double                             anisotropy);
+
+/** Plain Jacobi passes of Eq. 1 (w = 1, in double, as PlainBilateralDepthRelax) until PlainFixedPointResidual()
+ * falls to \a residual mm, checked every \a checkEvery passes, or \a maximumIterations passes; the test reference
+ * for the steady solver. \return the depths; \a iterations receives the passes run. */
+std::vector<double>
+PlainJacobiToResidual(const std::vector<float> &         depth,
+                      const std::vector<unsigned char> & fixed,
+                      std::size_t                        width,
+                      std::size_t                        height,
+                      double                             anisotropy,
+                      double                             residual,
+                      unsigned int                       maximumIterations,
+                      unsigned int &                     iterations,
+                      unsigned int                       checkEvery = 50);
 } // namespace vr::test
 
 #endif

@@ -1,0 +1,1856 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "itkBilateralDepthRelaxSteadySolver.h"
+
+#include "itkThreadTeam.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace itk
+{
+namespace
+{
+/** Grids of this many points or fewer are solved directly. */
+constexpr long CoarsestPoints = 64;
+
+/** Levels with fewer points than this are worked by the calling thread alone: below it, handing out the work costs
+ * more than it saves. */
+constexpr long ParallelPoints = 1 << 14;
+
+/** Each outer iteration's conjugate gradients stop once the residual has fallen this much. */
+constexpr double InnerReduction = 0.1;
+
+/** Conjugate-gradient iterations per outer iteration at most; more than RebuildAfterCycles V-cycles in one outer
+ * iteration rebuild the hierarchy from the current weights before the next. */
+constexpr unsigned int MaximumInnerIterations = 40;
+constexpr unsigned int RebuildAfterCycles = 4;
+
+/** Partial sums per row: a fixed number of lanes, added in a fixed order, whatever the vector width or thread. */
+constexpr long Lanes = 16;
+
+/** Floats per padded row: a multiple of 16, with room for a ghost column on the left and two on the right. */
+long
+PaddedStride(long width)
+{
+  return (width + 3 + 15) / 16 * 16;
+}
+
+/** Values kept from one solve to the next; zero-filled when (re)sized, so ghost cells start at zero. */
+template<typename T>
+class Array
+{
+public:
+  T *
+  Reserve(std::size_t count, bool & fresh)
+  {
+    if (m_Values.size() != count)
+    {
+      m_Values.assign(count, T{});
+      fresh = true;
+    }
+    return m_Values.data();
+  }
+
+private:
+  std::vector<T> m_Values;
+};
+
+/** One grid of the multigrid hierarchy. Points (x, y), 0 <= x < Width, 0 <= y < Height, live at At(x, y) in
+ * padded arrays whose ghost border stays zero: coefficients, corrections and residuals all vanish outside the grid
+ * (every loop writes the grid's points only).
+ *
+ * The operator is a symmetric 9-point stencil (5-point on the finest level): (A v)_p = C_p v_p - sum_q w_pq v_q,
+ * with w_pq stored once per pair: E (p, p + (1, 0)), N (p, p + (0, 1)), NE (p, p + (1, 1)), NW (p, p + (-1, 1)).
+ * Inactive points (fixed pixels, floating regions, and coarse points above inactive ones) have C = 0 and no
+ * couplings; their correction stays 0.
+ *
+ * A coarse level also holds the interpolation from it to the next finer level, at its own points K = (I, J): the
+ * fine point (2I+1, 2J) takes XA times K's value and XB times K + (1, 0)'s; (2I, 2J+1) takes YA from K and YB from
+ * K + (0, 1); (2I+1, 2J+1) takes Q0, Q1, Q2, Q3 from K, K + (1, 0), K + (0, 1), K + (1, 1); (2I, 2J) takes K's. */
+struct Level
+{
+  long Width{ 0 };
+  long Height{ 0 };
+  long Stride{ 0 };
+  bool NinePoint{ false };
+
+  float * C{}, *Inverse{}, *E{}, *N{}, *NE{}, *NW{};
+  float * X{}, *B{}, *R{};
+  float * XA{}, *XB{}, *YA{}, *YB{}, *Q0{}, *Q1{}, *Q2{}, *Q3{};
+  float * Active{}; // coarse levels: 1 where the point is active (its fine C point is), else 0
+
+  std::vector<Array<float>> Storage;
+
+  long
+  At(long x, long y) const
+  {
+    return (y + 1) * Stride + x + 1;
+  }
+  std::size_t
+  Size() const
+  {
+    return static_cast<std::size_t>(Stride * (Height + 3));
+  }
+  bool
+  IsParallel() const
+  {
+    return Width * Height >= ParallelPoints;
+  }
+
+  /** Sizes the arrays (the finest level has no X, B, interpolation and activity arrays of its own). */
+  void
+  Allocate(long width, long height, bool coarse)
+  {
+    Width = width;
+    Height = height;
+    Stride = PaddedStride(width);
+    NinePoint = coarse;
+    Storage.resize(18);
+    std::size_t next = 0;
+    bool        fresh = false;
+    auto        take = [&]() { return Storage[next++].Reserve(Size(), fresh); };
+    C = take();
+    Inverse = take();
+    E = take();
+    N = take();
+    R = take();
+    if (coarse)
+    {
+      NE = take();
+      NW = take();
+      X = take();
+      B = take();
+      XA = take();
+      XB = take();
+      YA = take();
+      YB = take();
+      Q0 = take();
+      Q1 = take();
+      Q2 = take();
+      Q3 = take();
+      Active = take();
+    }
+  }
+
+  /** w(p, p + (DX, DY)). */
+  template<int DX, int DY>
+  float
+  Weight(long p) const
+  {
+    if constexpr (DY == 0)
+    {
+      return DX > 0 ? E[p] : E[p - 1];
+    }
+    else if constexpr (DX == 0)
+    {
+      return DY > 0 ? N[p] : N[p - Stride];
+    }
+    else if constexpr (DX == DY)
+    {
+      return DX > 0 ? NE[p] : NE[p - Stride - 1];
+    }
+    else
+    {
+      return DY > 0 ? NW[p] : NW[p - Stride + 1];
+    }
+  }
+};
+
+template<typename F, int... I>
+inline void
+ForEachOf(std::integer_sequence<int, I...>, F && f)
+{
+  (f(std::integral_constant<int, I>{}), ...);
+}
+using NineOffsets = std::make_integer_sequence<int, 9>;
+
+/** P(p, K) for the fine point p = 2K + (OX, OY), read from the coarse level \a c at K's index \a k. */
+template<int OX, int OY>
+inline float
+Interpolation(const Level & c, long k)
+{
+  const long s = c.Stride;
+  if constexpr (OX == 0 && OY == 0)
+  {
+    return c.Active[k];
+  }
+  else if constexpr (OY == 0)
+  {
+    return OX > 0 ? c.XA[k] : c.XB[k - 1];
+  }
+  else if constexpr (OX == 0)
+  {
+    return OY > 0 ? c.YA[k] : c.YB[k - s];
+  }
+  else if constexpr (OX > 0 && OY > 0)
+  {
+    return c.Q0[k];
+  }
+  else if constexpr (OX < 0 && OY > 0)
+  {
+    return c.Q1[k - 1];
+  }
+  else if constexpr (OX > 0 && OY < 0)
+  {
+    return c.Q2[k - s];
+  }
+  else
+  {
+    return c.Q3[k - s - 1];
+  }
+}
+
+/** A(p, p + (DX, DY)) on level \a f. */
+template<bool NinePoint, int DX, int DY>
+inline float
+OperatorEntry(const Level & f, long p)
+{
+  if constexpr (DX == 0 && DY == 0)
+  {
+    return f.C[p];
+  }
+  else if constexpr (!NinePoint && DX != 0 && DY != 0)
+  {
+    return 0.0f;
+  }
+  else
+  {
+    return -f.template Weight<DX, DY>(p);
+  }
+}
+
+/** The Galerkin coarse operator's entry A_c(K, K + (LX, LY)) = sum over fine p, q of P(p, K) A(p, q) P(q, K + L),
+ * p in K's 3 x 3 support, q a stencil neighbour of p in K + L's support. */
+template<bool NinePoint, int LX, int LY>
+inline double
+GalerkinEntry(const Level & f, const Level & c, long k, long p0)
+{
+  double     sum = 0.0;
+  const long kl = k + LX + LY * c.Stride;
+  ForEachOf(NineOffsets{},
+            [&](auto o)
+            {
+              constexpr int ox = decltype(o)::value % 3 - 1;
+              constexpr int oy = decltype(o)::value / 3 - 1;
+              const long    p = p0 + ox + oy * f.Stride;
+              const double  pk = Interpolation<ox, oy>(c, k);
+              double        row = 0.0;
+              ForEachOf(NineOffsets{},
+                        [&](auto d)
+                        {
+                          constexpr int dx = decltype(d)::value % 3 - 1;
+                          constexpr int dy = decltype(d)::value / 3 - 1;
+                          constexpr int qx = ox + dx - 2 * LX;
+                          constexpr int qy = oy + dy - 2 * LY;
+                          if constexpr ((NinePoint || dx == 0 || dy == 0) && qx >= -1 && qx <= 1 && qy >= -1 && qy <= 1)
+                          {
+                            row += static_cast<double>(OperatorEntry<NinePoint, dx, dy>(f, p)) *
+                                   Interpolation<qx, qy>(c, kl);
+                          }
+                        });
+              sum += pk * row;
+            });
+  return sum;
+}
+
+/** Interpolation weights of coarse row \a J from the operator of the finer level \a f, following the weights: a
+ * fine point between two coarse points along x collapses its stencil along y (its couplings above and below are
+ * taken as if to itself) and takes each side in proportion to its couplings to that side's column, divided by its
+ * collapsed diagonal, so that a point anchored by fixed neighbours interpolates less than all, and a point beside a
+ * depth jump takes nothing from across it; likewise along y. No weight goes to an inactive coarse point. */
+template<bool NinePoint>
+void
+BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
+{
+  const long cs = c.Stride;
+  for (long I = 0; I < c.Width; ++I)
+  {
+    const long k = c.At(I, J);
+    const long p = f.At(2 * I, 2 * J);
+    float      xa = 0.0f;
+    float      xb = 0.0f;
+    const long px = p + 1;
+    if (f.C[px] > 0.0f)
+    {
+      float toLeft = f.template Weight<-1, 0>(px);
+      float toRight = f.template Weight<1, 0>(px);
+      if constexpr (NinePoint)
+      {
+        toLeft += f.template Weight<-1, 1>(px) + f.template Weight<-1, -1>(px);
+        toRight += f.template Weight<1, 1>(px) + f.template Weight<1, -1>(px);
+      }
+      float denominator = f.C[px] - f.template Weight<0, 1>(px) - f.template Weight<0, -1>(px);
+      denominator = denominator > 0.0f ? denominator : toLeft + toRight;
+      if (denominator > 0.0f)
+      {
+        xa = toLeft / denominator;
+        xb = toRight / denominator;
+      }
+    }
+    float      ya = 0.0f;
+    float      yb = 0.0f;
+    const long py = p + f.Stride;
+    if (f.C[py] > 0.0f)
+    {
+      float toBelow = f.template Weight<0, -1>(py);
+      float toAbove = f.template Weight<0, 1>(py);
+      if constexpr (NinePoint)
+      {
+        toBelow += f.template Weight<1, -1>(py) + f.template Weight<-1, -1>(py);
+        toAbove += f.template Weight<1, 1>(py) + f.template Weight<-1, 1>(py);
+      }
+      float denominator = f.C[py] - f.template Weight<1, 0>(py) - f.template Weight<-1, 0>(py);
+      denominator = denominator > 0.0f ? denominator : toBelow + toAbove;
+      if (denominator > 0.0f)
+      {
+        ya = toBelow / denominator;
+        yb = toAbove / denominator;
+      }
+    }
+    c.XA[k] = xa * c.Active[k];
+    c.XB[k] = xb * c.Active[k + 1];
+    c.YA[k] = ya * c.Active[k];
+    c.YB[k] = yb * c.Active[k + cs];
+  }
+}
+
+/** The weights of the fine point in the middle of four coarse points: through its couplings to them (9-point
+ * levels) and to the four edge points just interpolated. Needs the edge weights of rows J and J + 1. */
+template<bool NinePoint>
+void
+BuildCentreInterpolationRow(const Level & f, Level & c, long J)
+{
+  const long s = c.Stride;
+  for (long I = 0; I < c.Width; ++I)
+  {
+    const long k = c.At(I, J);
+    const long p = f.At(2 * I + 1, 2 * J + 1);
+    if (!(f.C[p] > 0.0f))
+    {
+      c.Q0[k] = c.Q1[k] = c.Q2[k] = c.Q3[k] = 0.0f;
+      continue;
+    }
+    const float inverse = 1.0f / f.C[p];
+    const float left = f.template Weight<-1, 0>(p);
+    const float right = f.template Weight<1, 0>(p);
+    const float down = f.template Weight<0, -1>(p);
+    const float up = f.template Weight<0, 1>(p);
+    float       downLeft = 0.0f;
+    float       downRight = 0.0f;
+    float       upLeft = 0.0f;
+    float       upRight = 0.0f;
+    if constexpr (NinePoint)
+    {
+      downLeft = f.template Weight<-1, -1>(p);
+      downRight = f.template Weight<1, -1>(p);
+      upLeft = f.template Weight<-1, 1>(p);
+      upRight = f.template Weight<1, 1>(p);
+    }
+    // The left neighbour (2I, 2J+1) interpolates from K (YA) and K + (0, 1) (YB); the one below, (2I+1, 2J), from K
+    // (XA) and K + (1, 0) (XB); the right one from K + (1, 0) and K + (1, 1); the one above from K + (0, 1) and
+    // K + (1, 1).
+    c.Q0[k] = (downLeft + left * c.YA[k] + down * c.XA[k]) * inverse * c.Active[k];
+    c.Q1[k] = (downRight + right * c.YA[k + 1] + down * c.XB[k]) * inverse * c.Active[k + 1];
+    c.Q2[k] = (upLeft + left * c.YB[k] + up * c.XA[k + s]) * inverse * c.Active[k + s];
+    c.Q3[k] = (upRight + right * c.YB[k + 1] + up * c.XB[k + s]) * inverse * c.Active[k + s + 1];
+  }
+}
+
+template<bool NinePoint>
+void
+BuildGalerkinRow(const Level & f, Level & c, long J)
+{
+  for (long I = 0; I < c.Width; ++I)
+  {
+    const long k = c.At(I, J);
+    if (c.Active[k] == 0.0f)
+    {
+      c.C[k] = c.Inverse[k] = c.E[k] = c.N[k] = c.NE[k] = c.NW[k] = 0.0f;
+      continue;
+    }
+    const long   p0 = f.At(2 * I, 2 * J);
+    const double diagonal = GalerkinEntry<NinePoint, 0, 0>(f, c, k, p0);
+    c.C[k] = diagonal > 0.0 ? static_cast<float>(diagonal) : 0.0f;
+    c.Inverse[k] = diagonal > 0.0 ? static_cast<float>(1.0 / diagonal) : 0.0f;
+    c.E[k] = static_cast<float>(-GalerkinEntry<NinePoint, 1, 0>(f, c, k, p0));
+    c.N[k] = static_cast<float>(-GalerkinEntry<NinePoint, 0, 1>(f, c, k, p0));
+    c.NE[k] = static_cast<float>(-GalerkinEntry<NinePoint, 1, 1>(f, c, k, p0));
+    c.NW[k] = static_cast<float>(-GalerkinEntry<NinePoint, -1, 1>(f, c, k, p0));
+  }
+}
+
+// The row loops below take raw pointers and plain numbers only, so that the compiler sees unit strides, no aliasing
+// and loop-invariant bounds, and turns each into vector operations.
+
+/** Gauss-Seidel on every other point of a 5-point row from column \a first: x_p = (b_p + sum w_pq x_q) / C_p.
+ * The points updated are never each other's neighbours, so the row is one vector operation. */
+void
+SmoothRow5(float * __restrict x,
+           const float * __restrict above,
+           const float * __restrict below,
+           const float * __restrict b,
+           const float * __restrict e,
+           const float * __restrict n,
+           const float * __restrict nBelow,
+           const float * __restrict inverse,
+           long first,
+           long width)
+{
+  for (long i = first; i < width; i += 2)
+  {
+    const float sum = b[i] + e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i];
+    x[i] = sum * inverse[i];
+  }
+}
+
+/** The first colour of a Gauss-Seidel sweep that starts from x = 0: the neighbours are all 0, so x_p = b_p / C_p. */
+void
+SmoothRowFromZero(float * __restrict x,
+                  const float * __restrict b,
+                  const float * __restrict inverse,
+                  long first,
+                  long width)
+{
+  for (long i = first; i < width; i += 2)
+  {
+    x[i] = b[i] * inverse[i];
+  }
+}
+
+/** The same on a 9-point row; \a neBelow and \a nwBelow point at the row below's NE and NW (see Level). */
+void
+SmoothRow9(float * __restrict x,
+           const float * __restrict above,
+           const float * __restrict below,
+           const float * __restrict b,
+           const float * __restrict e,
+           const float * __restrict n,
+           const float * __restrict nBelow,
+           const float * __restrict ne,
+           const float * __restrict neBelow,
+           const float * __restrict nw,
+           const float * __restrict nwBelow,
+           const float * __restrict inverse,
+           long first,
+           long width)
+{
+  for (long i = first; i < width; i += 2)
+  {
+    const float sum = b[i] + e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i] +
+                      ne[i] * above[i + 1] + neBelow[i - 1] * below[i - 1] + nw[i] * above[i - 1] +
+                      nwBelow[i + 1] * below[i + 1];
+    x[i] = sum * inverse[i];
+  }
+}
+
+/** r = b - A x on a 5-point row. */
+void
+ResidualRow5(float * __restrict r,
+             const float * __restrict x,
+             const float * __restrict above,
+             const float * __restrict below,
+             const float * __restrict b,
+             const float * __restrict c,
+             const float * __restrict e,
+             const float * __restrict n,
+             const float * __restrict nBelow,
+             long width)
+{
+  for (long i = 0; i < width; ++i)
+  {
+    r[i] = b[i] - c[i] * x[i] + e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i];
+  }
+}
+
+/** r = b - A x on a 9-point row. */
+void
+ResidualRow9(float * __restrict r,
+             const float * __restrict x,
+             const float * __restrict above,
+             const float * __restrict below,
+             const float * __restrict b,
+             const float * __restrict c,
+             const float * __restrict e,
+             const float * __restrict n,
+             const float * __restrict nBelow,
+             const float * __restrict ne,
+             const float * __restrict neBelow,
+             const float * __restrict nw,
+             const float * __restrict nwBelow,
+             long width)
+{
+  for (long i = 0; i < width; ++i)
+  {
+    r[i] = b[i] - c[i] * x[i] + e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i] +
+           ne[i] * above[i + 1] + neBelow[i - 1] * below[i - 1] + nw[i] * above[i - 1] + nwBelow[i + 1] * below[i + 1];
+  }
+}
+
+/** q = A v on a 5-point row. */
+void
+ApplyRow5(float * __restrict q,
+          const float * __restrict v,
+          const float * __restrict above,
+          const float * __restrict below,
+          const float * __restrict c,
+          const float * __restrict e,
+          const float * __restrict n,
+          const float * __restrict nBelow,
+          long width)
+{
+  for (long i = 0; i < width; ++i)
+  {
+    q[i] = c[i] * v[i] - e[i] * v[i + 1] - e[i - 1] * v[i - 1] - n[i] * above[i] - nBelow[i] * below[i];
+  }
+}
+
+/** One coarse row of b_c = P^T r_f: \a r is the fine row 2J, \a rAbove row 2J + 1, \a rBelow row 2J - 1; the
+ * weights of the coarse row (and, for those stored a row lower, of the row below). */
+void
+RestrictRow(float * __restrict b,
+            const float * __restrict r,
+            const float * __restrict rAbove,
+            const float * __restrict rBelow,
+            const float * __restrict xa,
+            const float * __restrict xb,
+            const float * __restrict ya,
+            const float * __restrict ybBelow,
+            const float * __restrict q0,
+            const float * __restrict q1,
+            const float * __restrict q2Below,
+            const float * __restrict q3Below,
+            long width)
+{
+  for (long I = 0; I < width; ++I)
+  {
+    const long i = 2 * I;
+    b[I] = r[i] + xa[I] * r[i + 1] + xb[I - 1] * r[i - 1] + ya[I] * rAbove[i] + ybBelow[I] * rBelow[i] +
+           q0[I] * rAbove[i + 1] + q1[I - 1] * rAbove[i - 1] + q2Below[I] * rBelow[i + 1] +
+           q3Below[I - 1] * rBelow[i - 1];
+  }
+}
+
+/** One coarse row of x_f += P x_c: fine rows 2J (\a fine) and 2J + 1 (\a fineAbove) from coarse rows J (\a x) and
+ * J + 1 (\a xAbove). */
+void
+ProlongRow(float * __restrict fine,
+           float * __restrict fineAbove,
+           const float * __restrict x,
+           const float * __restrict xAbove,
+           const float * __restrict xa,
+           const float * __restrict xb,
+           const float * __restrict ya,
+           const float * __restrict yb,
+           const float * __restrict q0,
+           const float * __restrict q1,
+           const float * __restrict q2,
+           const float * __restrict q3,
+           long width)
+{
+  for (long I = 0; I < width; ++I)
+  {
+    const long i = 2 * I;
+    fine[i] += x[I];
+    fine[i + 1] += xa[I] * x[I] + xb[I] * x[I + 1];
+    fineAbove[i] += ya[I] * x[I] + yb[I] * xAbove[I];
+    fineAbove[i + 1] += q0[I] * x[I] + q1[I] * x[I + 1] + q2[I] * xAbove[I] + q3[I] * xAbove[I + 1];
+  }
+}
+
+/** Gauss-Seidel on every other point of row \a y of level \a l from column \a first. */
+template<bool NinePoint>
+void
+SmoothRow(const Level & l, long y, long first)
+{
+  const long s = l.Stride;
+  const long p = l.At(0, y);
+  if constexpr (NinePoint)
+  {
+    SmoothRow9(l.X + p,
+               l.X + p + s,
+               l.X + p - s,
+               l.B + p,
+               l.E + p,
+               l.N + p,
+               l.N + p - s,
+               l.NE + p,
+               l.NE + p - s,
+               l.NW + p,
+               l.NW + p - s,
+               l.Inverse + p,
+               first,
+               l.Width);
+  }
+  else
+  {
+    SmoothRow5(
+      l.X + p, l.X + p + s, l.X + p - s, l.B + p, l.E + p, l.N + p, l.N + p - s, l.Inverse + p, first, l.Width);
+  }
+}
+
+/** r = b - A x on rows [y0, y1) of level \a l. */
+template<bool NinePoint>
+void
+ResidualRows(const Level & l, long y0, long y1)
+{
+  const long s = l.Stride;
+  for (long y = y0; y < y1; ++y)
+  {
+    const long p = l.At(0, y);
+    if constexpr (NinePoint)
+    {
+      ResidualRow9(l.R + p,
+                   l.X + p,
+                   l.X + p + s,
+                   l.X + p - s,
+                   l.B + p,
+                   l.C + p,
+                   l.E + p,
+                   l.N + p,
+                   l.N + p - s,
+                   l.NE + p,
+                   l.NE + p - s,
+                   l.NW + p,
+                   l.NW + p - s,
+                   l.Width);
+    }
+    else
+    {
+      ResidualRow5(
+        l.R + p, l.X + p, l.X + p + s, l.X + p - s, l.B + p, l.C + p, l.E + p, l.N + p, l.N + p - s, l.Width);
+    }
+  }
+}
+
+/** b_c = P^T r_f on coarse rows [J0, J1). */
+void
+RestrictRows(const Level & f, const Level & c, long J0, long J1)
+{
+  const long fs = f.Stride;
+  const long cs = c.Stride;
+  for (long J = J0; J < J1; ++J)
+  {
+    const long k = c.At(0, J);
+    const long p = f.At(0, 2 * J);
+    RestrictRow(c.B + k,
+                f.R + p,
+                f.R + p + fs,
+                f.R + p - fs,
+                c.XA + k,
+                c.XB + k,
+                c.YA + k,
+                c.YB + k - cs,
+                c.Q0 + k,
+                c.Q1 + k,
+                c.Q2 + k - cs,
+                c.Q3 + k - cs,
+                c.Width);
+  }
+}
+
+/** x_f += P x_c on coarse rows [J0, J1) (fine rows 2 J0 to 2 J1). */
+void
+ProlongRows(const Level & c, const Level & f, long J0, long J1)
+{
+  const long fs = f.Stride;
+  const long cs = c.Stride;
+  for (long J = J0; J < J1; ++J)
+  {
+    const long k = c.At(0, J);
+    const long p = f.At(0, 2 * J);
+    ProlongRow(f.X + p,
+               f.X + p + fs,
+               c.X + k,
+               c.X + k + cs,
+               c.XA + k,
+               c.XB + k,
+               c.YA + k,
+               c.YB + k,
+               c.Q0 + k,
+               c.Q1 + k,
+               c.Q2 + k,
+               c.Q3 + k,
+               c.Width);
+  }
+}
+
+/** R = exp(-a x^2), 0 when a x^2 exceeds -ln(FLT_MIN) (BilateralDepthRelaxFilter::WeightUnderflowExponent), as
+ * 2^u with u = -(scale x)^2, scale = sqrt(a log2(e)): 2^u = 2^n 2^f, n the nearest integer, f in [-1/2, 1/2], 2^f
+ * by a degree-5 minimax polynomial (relative error below 3e-7), 2^n built in the exponent bits. Written without
+ * branches or library calls so that whole rows become vector operations. */
+inline float
+RangeWeight(float difference, float scale)
+{
+  const float     t = scale * difference;
+  const float     u = -(t * t);
+  const float     clamped = std::max(u, -126.0f);
+  constexpr float RoundingShifter = 12582912.0f; // 1.5 * 2^23: adding it rounds to an integer
+  const float     shifted = clamped + RoundingShifter;
+  const float     f = clamped - (shifted - RoundingShifter);
+  const float     power = __builtin_bit_cast(float, (__builtin_bit_cast(std::uint32_t, shifted) << 23) + 0x3F800000u);
+  float           p = f * 1.327647198e-3f + 9.675541334e-3f;
+  p = p * f + 5.550713274e-2f;
+  p = p * f + 2.402211972e-1f;
+  p = p * f + 6.931469671e-1f;
+  p = p * f + 1.000000072f;
+  const float weight = p * power;
+  return u >= -126.0f ? weight : 0.0f;
+}
+
+/** The range weights of a row's edges to the right (the last column has none) and, when \a below is not null, to
+ * the row below; returns a signature of the vanishing ones (their count and the sum of their columns). */
+std::uint64_t
+WeightRow(float * __restrict right,
+          float * __restrict down,
+          const double * __restrict d,
+          const double * __restrict below,
+          float scale,
+          bool  isotropic,
+          long  width)
+{
+  std::uint64_t signature = 0;
+  if (isotropic)
+  {
+    for (long x = 0; x + 1 < width; ++x)
+    {
+      right[x] = 1.0f;
+    }
+    for (long x = 0; x < width; ++x)
+    {
+      down[x] = below ? 1.0f : 0.0f;
+    }
+  }
+  else
+  {
+    for (long x = 0; x + 1 < width; ++x)
+    {
+      right[x] = RangeWeight(static_cast<float>(d[x + 1] - d[x]), scale);
+    }
+    if (below)
+    {
+      for (long x = 0; x < width; ++x)
+      {
+        down[x] = RangeWeight(static_cast<float>(below[x] - d[x]), scale);
+      }
+    }
+    else
+    {
+      for (long x = 0; x < width; ++x)
+      {
+        down[x] = 0.0f;
+      }
+    }
+  }
+  right[width - 1] = 0.0f;
+  // The count of vanishing edges and the sum of their columns, in 32-bit lanes the compiler can vectorise.
+  std::uint32_t count = 0;
+  std::uint32_t columns = 0;
+  for (long x = 0; x + 1 < width; ++x)
+  {
+    const std::uint32_t vanishes = right[x] == 0.0f ? 1u : 0u;
+    count += vanishes;
+    columns += vanishes * static_cast<std::uint32_t>(2 * x + 1);
+  }
+  if (below)
+  {
+    for (long x = 0; x < width; ++x)
+    {
+      const std::uint32_t vanishes = down[x] == 0.0f ? 1u : 0u;
+      count += vanishes;
+      columns += vanishes * static_cast<std::uint32_t>(2 * x + 2);
+    }
+  }
+  signature = (static_cast<std::uint64_t>(count) << 32) + columns;
+  return signature;
+}
+
+/** One row of the finest level's operator and residual (see SteadySolve::Assemble). A weight sum below FLT_MIN
+ * (every weight all but underflowing) is inverted as FLT_MIN, so that no inverse overflows. */
+void
+AssembleRow(float * __restrict c,
+            float * __restrict inverse,
+            float * __restrict e,
+            float * __restrict n,
+            float * __restrict residual,
+            const double * __restrict d,
+            const double * __restrict dAbove,
+            const double * __restrict dBelow,
+            const float * __restrict active,
+            const float * __restrict activeAbove,
+            const float * __restrict right,
+            const float * __restrict down,
+            const float * __restrict up,
+            long width)
+{
+  constexpr float Smallest = std::numeric_limits<float>::min();
+  for (long x = 0; x < width; ++x)
+  {
+    const float diagonal = ((right[x] + right[x - 1]) + (down[x] + up[x])) * active[x];
+    const float flux = right[x] * static_cast<float>(d[x + 1] - d[x]) +
+                       right[x - 1] * static_cast<float>(d[x - 1] - d[x]) +
+                       down[x] * static_cast<float>(dAbove[x] - d[x]) + up[x] * static_cast<float>(dBelow[x] - d[x]);
+    const float live = diagonal > 0.0f ? 1.0f : 0.0f;
+    c[x] = diagonal;
+    inverse[x] = live / std::max(diagonal, Smallest);
+    e[x] = right[x] * active[x] * active[x + 1];
+    n[x] = down[x] * active[x] * activeAbove[x];
+    residual[x] = flux * live;
+  }
+}
+
+/** delta += alpha v, r -= alpha q on a row. */
+void
+UpdateRow(float * __restrict delta,
+          float * __restrict r,
+          const float * __restrict v,
+          const float * __restrict q,
+          float alpha,
+          long  width)
+{
+  for (long x = 0; x < width; ++x)
+  {
+    delta[x] += alpha * v[x];
+    r[x] -= alpha * q[x];
+  }
+}
+
+/** v = z + beta v on a row. */
+void
+DirectionRow(float * __restrict v, const float * __restrict z, float beta, long width)
+{
+  for (long x = 0; x < width; ++x)
+  {
+    v[x] = z[x] + beta * v[x];
+  }
+}
+
+/** depth += delta on a row, kept within [low, high]: the fixed point lies within the range of the input (each free
+ * pixel a weighted mean of its neighbours), so a correction that leaves it, as one can in a mode the weights all
+ * but decouple, is cut back to it. */
+void
+AddRow(double * __restrict depth, const float * __restrict delta, double low, double high, long width)
+{
+  for (long x = 0; x < width; ++x)
+  {
+    const double moved = depth[x] + static_cast<double>(delta[x]);
+    depth[x] = std::min(std::max(moved, low), high);
+  }
+}
+
+/** Union-find over row runs, for the regions of pixels connected through non-zero weights. */
+class Regions
+{
+public:
+  std::int32_t
+  Find(std::int32_t a)
+  {
+    while (m_Parent[a] != a)
+    {
+      m_Parent[a] = m_Parent[m_Parent[a]];
+      a = m_Parent[a];
+    }
+    return a;
+  }
+  void
+  Unite(std::int32_t a, std::int32_t b)
+  {
+    a = Find(a);
+    b = Find(b);
+    if (a != b)
+    {
+      m_Parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  std::int32_t
+  Add()
+  {
+    m_Parent.push_back(static_cast<std::int32_t>(m_Parent.size()));
+    return m_Parent.back();
+  }
+  void
+  Clear()
+  {
+    m_Parent.clear();
+  }
+  std::size_t
+  Size() const
+  {
+    return m_Parent.size();
+  }
+
+private:
+  std::vector<std::int32_t> m_Parent;
+};
+
+/** A run of pixels of one row, [Begin, End), joined by non-zero weights, and its region. */
+struct RowRun
+{
+  long         Begin;
+  long         End;
+  std::int32_t Region;
+};
+
+/** Everything a solve allocates. */
+struct SolverBuffers
+{
+  std::vector<Level>         Levels;
+  Array<double>              Depth;
+  Array<float>               WeightRight, WeightDown, Fixed, Active;
+  Array<float>               Residual, Z, Delta, Direction, Product;
+  std::vector<double>        RowSums;
+  std::vector<std::uint64_t> RowSignatures;
+  std::vector<double>        RowMaxima;
+  std::vector<RowRun>        Runs;
+  std::vector<long>          RowRunStart;
+  Regions                    RunRegions;
+  std::vector<char>          RegionAnchored;
+  std::vector<double>        RegionSum, RegionPixels;
+  std::vector<double>        CoarseFactor;
+  std::vector<long>          CoarseIndex;
+  std::vector<char>          CoarseDropped;
+  std::vector<double>        CoarseVector;
+};
+
+/** sum of a[i] b[i] over a row, in Lanes partial sums added in a fixed order: the same bits on any machine. */
+inline double
+RowDot(const float * __restrict a, const float * __restrict b, long count)
+{
+  double lanes[Lanes] = {};
+  long   i = 0;
+  for (; i + Lanes <= count; i += Lanes)
+  {
+    for (long j = 0; j < Lanes; ++j)
+    {
+      lanes[j] += static_cast<double>(a[i + j]) * b[i + j];
+    }
+  }
+  for (long j = 0; i < count; ++i, ++j)
+  {
+    lanes[j] += static_cast<double>(a[i]) * b[i];
+  }
+  double sum = 0.0;
+  for (long j = 0; j < Lanes; ++j)
+  {
+    sum += lanes[j];
+  }
+  return sum;
+}
+
+/** max |r[i]| s[i] over a row, in Lanes partial maxima. */
+inline float
+RowMaximum(const float * __restrict r, const float * __restrict s, long count)
+{
+  float lanes[Lanes] = {};
+  long  i = 0;
+  for (; i + Lanes <= count; i += Lanes)
+  {
+    for (long j = 0; j < Lanes; ++j)
+    {
+      const float value = std::abs(r[i + j]) * s[i + j];
+      lanes[j] = lanes[j] > value ? lanes[j] : value;
+    }
+  }
+  for (long j = 0; i < count; ++i, ++j)
+  {
+    const float value = std::abs(r[i]) * s[i];
+    lanes[j] = lanes[j] > value ? lanes[j] : value;
+  }
+  float largest = 0.0f;
+  for (long j = 0; j < Lanes; ++j)
+  {
+    largest = largest > lanes[j] ? largest : lanes[j];
+  }
+  return largest;
+}
+} // namespace
+
+struct BilateralDepthRelaxSteadySolver::Workspace::Buffers : SolverBuffers
+{
+};
+
+BilateralDepthRelaxSteadySolver::Workspace::Workspace()
+  : m_Buffers(std::make_unique<Buffers>())
+{
+}
+
+BilateralDepthRelaxSteadySolver::Workspace::~Workspace() = default;
+
+namespace
+{
+/** The whole solve, on the buffers of a workspace. */
+class SteadySolve
+{
+public:
+  SteadySolve(SolverBuffers & buffers, long width, long height, double anisotropy, unsigned int threads)
+    : m_Buffers(buffers)
+    , m_Team(std::max(1u, std::min<unsigned int>(threads, static_cast<unsigned int>(std::max(1L, height / 8)))))
+    , m_Width(width)
+    , m_Height(height)
+    , m_Stride(PaddedStride(width))
+    , m_Scale(static_cast<float>(anisotropy > 0.0 ? std::sqrt(anisotropy / std::log(2.0)) : 0.0))
+    , m_Isotropic(anisotropy == 0.0)
+  {
+    const std::size_t size = static_cast<std::size_t>(m_Stride * (height + 3));
+    bool              fresh = false;
+    m_Depth = buffers.Depth.Reserve(size, fresh);
+    m_WeightRight = buffers.WeightRight.Reserve(size, fresh);
+    m_WeightDown = buffers.WeightDown.Reserve(size, fresh);
+    m_Fixed = buffers.Fixed.Reserve(size, fresh);
+    m_Active = buffers.Active.Reserve(size, fresh);
+    m_Residual = buffers.Residual.Reserve(size, fresh);
+    m_Z = buffers.Z.Reserve(size, fresh);
+    m_Delta = buffers.Delta.Reserve(size, fresh);
+    m_Direction = buffers.Direction.Reserve(size, fresh);
+    m_Product = buffers.Product.Reserve(size, fresh);
+    buffers.RowSums.assign(static_cast<std::size_t>(height), 0.0);
+    buffers.RowSignatures.assign(static_cast<std::size_t>(height), 0);
+    buffers.RowMaxima.assign(static_cast<std::size_t>(height), 0.0);
+    buffers.Levels.resize(std::max<std::size_t>(1, buffers.Levels.size()));
+    Level & finest = buffers.Levels[0];
+    finest.Allocate(width, height, false);
+    // The finest level's right-hand side and correction are the conjugate gradients' residual and preconditioned
+    // residual.
+    finest.B = m_Residual;
+    finest.X = m_Z;
+  }
+
+  long
+  At(long x, long y) const
+  {
+    return (y + 1) * m_Stride + x + 1;
+  }
+
+  /** Runs \a job on bands of rows [0, rows), in parallel when \a parallel. */
+  template<typename TJob>
+  void
+  ForRows(long rows, bool parallel, const TJob & job)
+  {
+    m_Team.ForBands(
+      static_cast<std::size_t>(rows),
+      [&](std::size_t begin, std::size_t end) { job(static_cast<long>(begin), static_cast<long>(end)); },
+      parallel);
+  }
+
+  void
+  Load(const float * depth, const unsigned char * fixed)
+  {
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const float * in = depth + y * m_Width;
+                const long    row = At(0, y);
+                for (long x = 0; x < m_Width; ++x)
+                {
+                  m_Depth[row + x] = in[x];
+                  m_Fixed[row + x] = fixed && fixed[y * m_Width + x] ? 1.0f : 0.0f;
+                }
+              }
+            });
+    const auto range = std::minmax_element(depth, depth + m_Width * m_Height);
+    m_Lowest = *range.first;
+    m_Highest = *range.second;
+  }
+
+  void
+  Store(const float * depth, const unsigned char * fixed, float * relaxed)
+  {
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const long row = At(0, y);
+                for (long x = 0; x < m_Width; ++x)
+                {
+                  const long k = y * m_Width + x;
+                  relaxed[k] = fixed && fixed[k] ? depth[k] : static_cast<float>(m_Depth[row + x]);
+                }
+              }
+            });
+  }
+
+  /** The weight of every edge at the current depths (0 across the image border), and a signature of the pattern
+   * of vanishing weights, to notice when regions may have changed. */
+  std::uint64_t
+  ComputeWeights()
+  {
+    std::vector<std::uint64_t> & signatures = m_Buffers.RowSignatures;
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const long row = At(0, y);
+                signatures[static_cast<std::size_t>(y)] =
+                  WeightRow(m_WeightRight + row,
+                            m_WeightDown + row,
+                            m_Depth + row,
+                            y + 1 < m_Height ? m_Depth + row + m_Stride : nullptr,
+                            m_Scale,
+                            m_Isotropic,
+                            m_Width);
+              }
+            });
+    std::uint64_t signature = 0;
+    for (const std::uint64_t value : signatures)
+    {
+      signature = signature * 0x9E3779B97F4A7C15ull + value;
+    }
+    return signature;
+  }
+
+  /** Marks the free pixels of regions without a fixed pixel (regions connected through non-zero weights), gives
+   * each such region its mean depth, and marks every other free pixel active. Works on runs of pixels joined
+   * within their row, united with the runs they touch through a non-zero weight in the next row. Returns the
+   * floating pixel count; \a changed tells whether any pixel's activity changed. */
+  std::size_t
+  ClassifyRegions(bool & changed)
+  {
+    Regions &             regions = m_Buffers.RunRegions;
+    std::vector<RowRun> & runs = m_Buffers.Runs;
+    std::vector<long> &   rowStart = m_Buffers.RowRunStart;
+    regions.Clear();
+    runs.clear();
+    rowStart.assign(static_cast<std::size_t>(m_Height + 1), 0);
+    for (long y = 0; y < m_Height; ++y)
+    {
+      rowStart[static_cast<std::size_t>(y)] = static_cast<long>(runs.size());
+      const float * right = m_WeightRight + At(0, y);
+      long          begin = 0;
+      for (long x = 0; x < m_Width; ++x)
+      {
+        if (x + 1 == m_Width || right[x] == 0.0f)
+        {
+          runs.push_back({ begin, x + 1, regions.Add() });
+          begin = x + 1;
+        }
+      }
+    }
+    rowStart[static_cast<std::size_t>(m_Height)] = static_cast<long>(runs.size());
+    for (long y = 0; y + 1 < m_Height; ++y)
+    {
+      const float *     down = m_WeightDown + At(0, y);
+      std::size_t       a = static_cast<std::size_t>(rowStart[static_cast<std::size_t>(y)]);
+      std::size_t       b = static_cast<std::size_t>(rowStart[static_cast<std::size_t>(y + 1)]);
+      const std::size_t aEnd = b;
+      const std::size_t bEnd = static_cast<std::size_t>(rowStart[static_cast<std::size_t>(y + 2)]);
+      while (a < aEnd && b < bEnd)
+      {
+        const long begin = std::max(runs[a].Begin, runs[b].Begin);
+        const long end = std::min(runs[a].End, runs[b].End);
+        if (std::any_of(down + begin, down + end, [](float weight) { return weight > 0.0f; }))
+        {
+          regions.Unite(runs[a].Region, runs[b].Region);
+        }
+        runs[a].End < runs[b].End ? ++a : ++b;
+      }
+    }
+    const std::size_t   count = regions.Size();
+    std::vector<char> & anchored = m_Buffers.RegionAnchored;
+    anchored.assign(count, 0);
+    for (long y = 0; y < m_Height; ++y)
+    {
+      const float * fixed = m_Fixed + At(0, y);
+      for (long k = rowStart[static_cast<std::size_t>(y)]; k < rowStart[static_cast<std::size_t>(y + 1)]; ++k)
+      {
+        RowRun & run = runs[static_cast<std::size_t>(k)];
+        run.Region = regions.Find(run.Region);
+        if (std::any_of(fixed + run.Begin, fixed + run.End, [](float value) { return value != 0.0f; }))
+        {
+          anchored[static_cast<std::size_t>(run.Region)] = 1;
+        }
+      }
+    }
+    // The mean depth of each floating region, over its free pixels (a floating region has no fixed ones).
+    std::vector<double> & sum = m_Buffers.RegionSum;
+    std::vector<double> & pixels = m_Buffers.RegionPixels;
+    sum.assign(count, 0.0);
+    pixels.assign(count, 0.0);
+    for (long y = 0; y < m_Height; ++y)
+    {
+      const double * depth = m_Depth + At(0, y);
+      for (long k = rowStart[static_cast<std::size_t>(y)]; k < rowStart[static_cast<std::size_t>(y + 1)]; ++k)
+      {
+        const RowRun & run = runs[static_cast<std::size_t>(k)];
+        if (!anchored[static_cast<std::size_t>(run.Region)])
+        {
+          for (long x = run.Begin; x < run.End; ++x)
+          {
+            sum[static_cast<std::size_t>(run.Region)] += depth[x];
+          }
+          pixels[static_cast<std::size_t>(run.Region)] += static_cast<double>(run.End - run.Begin);
+        }
+      }
+    }
+    std::size_t floating = 0;
+    std::size_t changes = 0;
+    for (long y = 0; y < m_Height; ++y)
+    {
+      const long    row = At(0, y);
+      const float * fixed = m_Fixed + row;
+      float *       active = m_Active + row;
+      double *      depth = m_Depth + row;
+      for (long k = rowStart[static_cast<std::size_t>(y)]; k < rowStart[static_cast<std::size_t>(y + 1)]; ++k)
+      {
+        const RowRun &    run = runs[static_cast<std::size_t>(k)];
+        const std::size_t region = static_cast<std::size_t>(run.Region);
+        if (anchored[region])
+        {
+          for (long x = run.Begin; x < run.End; ++x)
+          {
+            const float now = 1.0f - fixed[x];
+            changes += now != active[x];
+            active[x] = now;
+          }
+        }
+        else
+        {
+          const double mean = sum[region] / pixels[region];
+          for (long x = run.Begin; x < run.End; ++x)
+          {
+            changes += active[x] != 0.0f;
+            active[x] = 0.0f;
+            depth[x] = mean;
+          }
+          floating += static_cast<std::size_t>(run.End - run.Begin);
+        }
+      }
+    }
+    changed = changes > 0;
+    return floating;
+  }
+
+  /** The finest level's operator from the weights (C = the pixel's weight sum, couplings between active pixels)
+   * and the residual sum R (D_q - D_p) as the conjugate gradients' right-hand side. Returns max |residual| / C over
+   * active pixels: the fixed-point residual |D_p - sum R D_q / sum R| in mm. */
+  double
+  Assemble()
+  {
+    Level &               l = m_Buffers.Levels[0];
+    std::vector<double> & maxima = m_Buffers.RowMaxima;
+    const long            s = m_Stride;
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const long row = At(0, y);
+                AssembleRow(l.C + row,
+                            l.Inverse + row,
+                            l.E + row,
+                            l.N + row,
+                            m_Residual + row,
+                            m_Depth + row,
+                            m_Depth + row + s,
+                            m_Depth + row - s,
+                            m_Active + row,
+                            m_Active + row + s,
+                            m_WeightRight + row,
+                            m_WeightDown + row,
+                            m_WeightDown + row - s,
+                            m_Width);
+                maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, m_Width);
+              }
+            });
+    return *std::max_element(maxima.begin(), maxima.end());
+  }
+
+  void
+  BuildHierarchy()
+  {
+    std::vector<Level> & levels = m_Buffers.Levels;
+    std::size_t          count = 1;
+    while (levels[count - 1].Width * levels[count - 1].Height > CoarsestPoints)
+    {
+      if (levels.size() <= count)
+      {
+        levels.emplace_back();
+      }
+      const Level & f = levels[count - 1];
+      Level &       c = levels[count];
+      c.Allocate((f.Width + 1) / 2, (f.Height + 1) / 2, true);
+      const bool parallel = c.IsParallel();
+      ForRows(c.Height,
+              parallel,
+              [&](long J0, long J1)
+              {
+                for (long J = J0; J < J1; ++J)
+                {
+                  for (long I = 0; I < c.Width; ++I)
+                  {
+                    c.Active[c.At(I, J)] = f.C[f.At(2 * I, 2 * J)] > 0.0f ? 1.0f : 0.0f;
+                  }
+                }
+              });
+      ForRows(c.Height,
+              parallel,
+              [&](long J0, long J1)
+              {
+                for (long J = J0; J < J1; ++J)
+                {
+                  f.NinePoint ? BuildEdgeInterpolationRow<true>(f, c, J) : BuildEdgeInterpolationRow<false>(f, c, J);
+                }
+              });
+      ForRows(c.Height,
+              parallel,
+              [&](long J0, long J1)
+              {
+                for (long J = J0; J < J1; ++J)
+                {
+                  f.NinePoint ? BuildCentreInterpolationRow<true>(f, c, J)
+                              : BuildCentreInterpolationRow<false>(f, c, J);
+                }
+              });
+      // Row J's coarse operator reads the interpolation of rows J - 1 to J + 1: all of it must be done first.
+      ForRows(c.Height,
+              parallel,
+              [&](long J0, long J1)
+              {
+                for (long J = J0; J < J1; ++J)
+                {
+                  f.NinePoint ? BuildGalerkinRow<true>(f, c, J) : BuildGalerkinRow<false>(f, c, J);
+                }
+              });
+      ++count;
+    }
+    m_LevelCount = count;
+    FactorCoarsest();
+  }
+
+  /** Dense Cholesky of the coarsest operator, in double. A pivot that vanishes (a point whose region is all but
+   * cut off) drops the point from the coarse correction. */
+  void
+  FactorCoarsest()
+  {
+    const Level &       c = m_Buffers.Levels[m_LevelCount - 1];
+    std::vector<long> & index = m_Buffers.CoarseIndex;
+    index.clear();
+    for (long y = 0; y < c.Height; ++y)
+    {
+      for (long x = 0; x < c.Width; ++x)
+      {
+        if (c.C[c.At(x, y)] > 0.0f)
+        {
+          index.push_back(c.At(x, y));
+        }
+      }
+    }
+    const std::size_t     m = index.size();
+    std::vector<double> & a = m_Buffers.CoarseFactor;
+    a.assign(m * m, 0.0);
+    const long s = c.Stride;
+    // Each coupling is stored at the pair's point in the lower row (or, within a row, the left one).
+    auto entry = [&](long p, long q) -> double
+    {
+      const long d = q - p;
+      const long lower = std::min(p, q);
+      if (d == 0)
+      {
+        return c.C[p];
+      }
+      if (d == 1 || d == -1)
+      {
+        return -c.E[lower];
+      }
+      if (d == s || d == -s)
+      {
+        return -c.N[lower];
+      }
+      if (c.NinePoint && (d == s + 1 || d == -s - 1))
+      {
+        return -c.NE[lower];
+      }
+      if (c.NinePoint && (d == s - 1 || d == -s + 1))
+      {
+        return -c.NW[lower];
+      }
+      return 0.0;
+    };
+    for (std::size_t i = 0; i < m; ++i)
+    {
+      for (std::size_t j = 0; j < m; ++j)
+      {
+        a[i * m + j] = entry(index[i], index[j]);
+      }
+    }
+    std::vector<char> & dropped = m_Buffers.CoarseDropped;
+    dropped.assign(m, 0);
+    for (std::size_t k = 0; k < m; ++k)
+    {
+      double pivot = a[k * m + k];
+      for (std::size_t j = 0; j < k; ++j)
+      {
+        pivot -= a[k * m + j] * a[k * m + j];
+      }
+      if (!(pivot > 1e-9 * c.C[index[k]]))
+      {
+        dropped[k] = 1;
+        for (std::size_t i = k; i < m; ++i)
+        {
+          a[i * m + k] = 0.0;
+        }
+        a[k * m + k] = 1.0;
+        continue;
+      }
+      pivot = std::sqrt(pivot);
+      a[k * m + k] = pivot;
+      for (std::size_t i = k + 1; i < m; ++i)
+      {
+        double value = a[i * m + k];
+        for (std::size_t j = 0; j < k; ++j)
+        {
+          value -= a[i * m + j] * a[k * m + j];
+        }
+        a[i * m + k] = value / pivot;
+      }
+    }
+  }
+
+  void
+  SolveCoarsest()
+  {
+    Level &                     c = m_Buffers.Levels[m_LevelCount - 1];
+    const std::vector<long> &   index = m_Buffers.CoarseIndex;
+    const std::vector<double> & a = m_Buffers.CoarseFactor;
+    const std::vector<char> &   dropped = m_Buffers.CoarseDropped;
+    std::vector<double> &       v = m_Buffers.CoarseVector;
+    const std::size_t           m = index.size();
+    v.assign(m, 0.0);
+    for (std::size_t i = 0; i < m; ++i)
+    {
+      double value = c.B[index[i]];
+      for (std::size_t j = 0; j < i; ++j)
+      {
+        value -= a[i * m + j] * v[j];
+      }
+      v[i] = dropped[i] ? 0.0 : value / a[i * m + i];
+    }
+    for (std::size_t i = m; i-- > 0;)
+    {
+      double value = v[i];
+      for (std::size_t j = i + 1; j < m; ++j)
+      {
+        value -= a[j * m + i] * v[j];
+      }
+      v[i] = dropped[i] ? 0.0 : value / a[i * m + i];
+    }
+    for (long y = 0; y < c.Height; ++y)
+    {
+      std::fill(c.X + c.At(0, y), c.X + c.At(0, y) + c.Width, 0.0f);
+    }
+    for (std::size_t i = 0; i < m; ++i)
+    {
+      c.X[index[i]] = static_cast<float>(v[i]);
+    }
+  }
+
+  /** One Gauss-Seidel sweep of level \a l: red-black on the 5-point finest level (exact Gauss-Seidel), four
+   * colours on 9-point levels (no two points of a colour are neighbours), so any split of the rows among threads
+   * gives the same bits. A forward pre-sweep and a backward post-sweep keep the V-cycle symmetric, as the conjugate
+   * gradients need. */
+  void
+  Smooth(const Level & l, bool forward)
+  {
+    const bool parallel = l.IsParallel();
+    if (!l.NinePoint)
+    {
+      SmoothRedBlack(l, forward ? 0 : 1, false);
+      return;
+    }
+    for (int step = 0; step < 4; ++step)
+    {
+      const int colour = forward ? step : 3 - step;
+      const int rowParity = colour >> 1;
+      ForRows((l.Height + 1 - rowParity) / 2,
+              parallel,
+              [&](long h0, long h1)
+              {
+                for (long h = h0; h < h1; ++h)
+                {
+                  SmoothRow<true>(l, 2 * h + rowParity, colour & 1);
+                }
+              });
+    }
+  }
+
+  /** A red-black Gauss-Seidel sweep of the 5-point level \a l in one pass over memory: colour \a first on row y,
+   * then the other colour on row y - 1, whose neighbours of the first colour (rows y - 2 to y) are then done. The
+   * second colour's rows at the edges of each band wait for the neighbouring band, in a second step. With
+   * \a fromZero, the sweep starts from x = 0 (and need not clear x first). Colour c holds the points with
+   * (x + y) % 2 == c. */
+  void
+  SmoothRedBlack(const Level & l, int first, bool fromZero)
+  {
+    const int  second = 1 - first;
+    const long s = l.Stride;
+    auto       colourRow = [&](int colour, long y, bool zero)
+    {
+      const long p = l.At(0, y);
+      if (zero)
+      {
+        SmoothRowFromZero(l.X + p, l.B + p, l.Inverse + p, (y + colour) & 1, l.Width);
+      }
+      else
+      {
+        SmoothRow5(l.X + p,
+                   l.X + p + s,
+                   l.X + p - s,
+                   l.B + p,
+                   l.E + p,
+                   l.N + p,
+                   l.N + p - s,
+                   l.Inverse + p,
+                   (y + colour) & 1,
+                   l.Width);
+      }
+    };
+    const bool parallel = l.IsParallel();
+    ForRows(l.Height,
+            parallel,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                colourRow(first, y, fromZero);
+                if (y - 1 > y0)
+                {
+                  colourRow(second, y - 1, false);
+                }
+              }
+            });
+    ForRows(l.Height,
+            parallel,
+            [&](long y0, long y1)
+            {
+              colourRow(second, y0, false);
+              if (y1 - 1 > y0)
+              {
+                colourRow(second, y1 - 1, false);
+              }
+            });
+  }
+
+  /** b_c = P^T (b_f - A_f x_f): the residual of fine rows 2J and 2J + 1 and at once the restriction of coarse row
+   * J, which also needs fine row 2J - 1; a band's first coarse row waits for the band below, in a second step. */
+  void
+  ResidualAndRestrict(const Level & f, const Level & c)
+  {
+    const bool parallel = f.IsParallel();
+    auto       residual = [&](long y)
+    {
+      if (y < f.Height)
+      {
+        f.NinePoint ? ResidualRows<true>(f, y, y + 1) : ResidualRows<false>(f, y, y + 1);
+      }
+    };
+    ForRows(c.Height,
+            parallel,
+            [&](long J0, long J1)
+            {
+              for (long J = J0; J < J1; ++J)
+              {
+                residual(2 * J);
+                residual(2 * J + 1);
+                if (J > J0)
+                {
+                  RestrictRows(f, c, J, J + 1);
+                }
+              }
+            });
+    ForRows(c.Height, parallel, [&](long J0, long) { RestrictRows(f, c, J0, J0 + 1); });
+  }
+
+  /** One V(1,1)-cycle from level \a k down: x_k = M^-1 b_k, x_k starting at 0. */
+  void
+  Cycle(std::size_t k)
+  {
+    std::vector<Level> & levels = m_Buffers.Levels;
+    const Level &        f = levels[k];
+    if (k + 1 == m_LevelCount)
+    {
+      SolveCoarsest();
+      return;
+    }
+    const Level & c = levels[k + 1];
+    const bool    parallel = f.IsParallel();
+    if (f.NinePoint)
+    {
+      ForRows(f.Height,
+              parallel,
+              [&](long y0, long y1)
+              {
+                for (long y = y0; y < y1; ++y)
+                {
+                  std::fill(f.X + f.At(0, y), f.X + f.At(0, y) + f.Width, 0.0f);
+                }
+              });
+      Smooth(f, true);
+    }
+    else
+    {
+      SmoothRedBlack(f, 0, true);
+    }
+    ResidualAndRestrict(f, c);
+    Cycle(k + 1);
+    ForRows(c.Height, parallel, [&](long J0, long J1) { ProlongRows(c, f, J0, J1); });
+    Smooth(f, false);
+  }
+
+  /** z = M^-1 r: one V-cycle on the finest level, whose right-hand side is r and whose correction is z. */
+  void
+  Precondition()
+  {
+    Cycle(0);
+    ++m_Cycles;
+  }
+
+  /** sum over rows of \a rowSum(y), each row's sum formed independently and the rows added in order. */
+  template<typename TRowSum>
+  double
+  SumRows(const TRowSum & rowSum)
+  {
+    std::vector<double> & rows = m_Buffers.RowSums;
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                rows[static_cast<std::size_t>(y)] = rowSum(y);
+              }
+            });
+    double sum = 0.0;
+    for (const double value : rows)
+    {
+      sum += value;
+    }
+    return sum;
+  }
+
+  /** Conjugate gradients on the finest level, preconditioned by V-cycles, until max |r| / C falls below
+   * \a target. Adds the correction to the depths; returns the V-cycles spent. */
+  unsigned int
+  SolveCorrection(double target)
+  {
+    const Level &         l = m_Buffers.Levels[0];
+    const long            s = m_Stride;
+    const long            width = m_Width;
+    const unsigned int    cyclesBefore = m_Cycles;
+    std::vector<double> & maxima = m_Buffers.RowMaxima;
+    Precondition();
+    double rz = SumRows(
+      [&](long y)
+      {
+        const long row = At(0, y);
+        std::copy(m_Z + row, m_Z + row + width, m_Direction + row);
+        std::fill(m_Delta + row, m_Delta + row + width, 0.0f);
+        return RowDot(m_Residual + row, m_Z + row, width);
+      });
+    for (unsigned int iteration = 0; iteration < MaximumInnerIterations; ++iteration)
+    {
+      const double curvature = SumRows(
+        [&](long y)
+        {
+          const long row = At(0, y);
+          ApplyRow5(m_Product + row,
+                    m_Direction + row,
+                    m_Direction + row + s,
+                    m_Direction + row - s,
+                    l.C + row,
+                    l.E + row,
+                    l.N + row,
+                    l.N + row - s,
+                    width);
+          return RowDot(m_Direction + row, m_Product + row, width);
+        });
+      if (!(curvature > 0.0) || !(rz > 0.0))
+      {
+        break;
+      }
+      const float alpha = static_cast<float>(rz / curvature);
+      ForRows(m_Height,
+              true,
+              [&](long y0, long y1)
+              {
+                for (long y = y0; y < y1; ++y)
+                {
+                  const long row = At(0, y);
+                  UpdateRow(m_Delta + row, m_Residual + row, m_Direction + row, m_Product + row, alpha, width);
+                  maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, width);
+                }
+              });
+      if (*std::max_element(maxima.begin(), maxima.end()) <= target)
+      {
+        break;
+      }
+      Precondition();
+      const double rzNext = SumRows(
+        [&](long y)
+        {
+          const long row = At(0, y);
+          return RowDot(m_Residual + row, m_Z + row, width);
+        });
+      const float beta = static_cast<float>(rzNext / rz);
+      rz = rzNext;
+      ForRows(m_Height,
+              true,
+              [&](long y0, long y1)
+              {
+                for (long y = y0; y < y1; ++y)
+                {
+                  DirectionRow(m_Direction + At(0, y), m_Z + At(0, y), beta, width);
+                }
+              });
+    }
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                AddRow(m_Depth + At(0, y), m_Delta + At(0, y), m_Lowest, m_Highest, width);
+              }
+            });
+    return m_Cycles - cyclesBefore;
+  }
+
+  BilateralDepthRelaxSteadySolver::Report
+  Run(double tolerance, const BilateralDepthRelaxSteadySolver::ProgressCallback & progress)
+  {
+    BilateralDepthRelaxSteadySolver::Report report;
+    std::uint64_t                           signature = ComputeWeights();
+    bool                                    changed = false;
+    report.FloatingPixels = ClassifyRegions(changed);
+    if (report.FloatingPixels > 0)
+    {
+      signature = ComputeWeights();
+    }
+    bool   rebuild = true;
+    double first = 0.0;
+    double done = 0.0;
+    for (unsigned int outer = 0;; ++outer)
+    {
+      if (outer > 0)
+      {
+        const std::uint64_t next = ComputeWeights();
+        if (next != signature)
+        {
+          signature = next;
+          report.FloatingPixels = ClassifyRegions(changed);
+          if (changed)
+          {
+            // Floating regions took their mean, or former ones joined anchored regions: new weights, new hierarchy.
+            signature = ComputeWeights();
+            rebuild = true;
+          }
+        }
+      }
+      const double residual = Assemble();
+      report.Residual = residual;
+      report.OuterIterations = outer;
+      if (outer == 0)
+      {
+        first = residual;
+      }
+      if (progress)
+      {
+        // The residual need not fall at every outer iteration; the progress never goes back.
+        const double fraction =
+          residual <= tolerance ? 1.0 : std::clamp(std::log(first / residual) / std::log(first / tolerance), 0.0, 1.0);
+        done = std::max(done, fraction);
+        progress(done);
+      }
+      if (residual <= tolerance)
+      {
+        break;
+      }
+      if (outer == BilateralDepthRelaxSteadySolver::MaximumOuterIterations)
+      {
+        throw std::runtime_error("BilateralDepthRelaxSteadySolver: the residual is still " + std::to_string(residual) +
+                                 " mm after " + std::to_string(outer) + " outer iterations");
+      }
+      if (rebuild)
+      {
+        BuildHierarchy();
+        ++report.HierarchyBuilds;
+        rebuild = false;
+      }
+      const unsigned int cycles = SolveCorrection(std::max(InnerReduction * residual, 0.5 * tolerance));
+      rebuild = cycles > RebuildAfterCycles;
+    }
+    report.Cycles = m_Cycles;
+    return report;
+  }
+
+private:
+  SolverBuffers &    m_Buffers;
+  detail::ThreadTeam m_Team;
+  long               m_Width;
+  long               m_Height;
+  long               m_Stride;
+  float              m_Scale;
+  bool               m_Isotropic;
+  std::size_t        m_LevelCount{ 1 };
+  unsigned int       m_Cycles{ 0 };
+
+  double * m_Depth;
+  float *  m_WeightRight;
+  float *  m_WeightDown;
+  float *  m_Fixed;
+  float *  m_Active;
+  float *  m_Residual;
+  double   m_Lowest{ 0.0 };
+  double   m_Highest{ 0.0 };
+  float *  m_Z;
+  float *  m_Delta;
+  float *  m_Direction;
+  float *  m_Product;
+};
+} // namespace
+
+BilateralDepthRelaxSteadySolver::Report
+BilateralDepthRelaxSteadySolver::Solve(const float *            depth,
+                                       const unsigned char *    fixed,
+                                       float *                  relaxed,
+                                       std::size_t              width,
+                                       std::size_t              height,
+                                       double                   anisotropy,
+                                       double                   tolerance,
+                                       unsigned int             threads,
+                                       const ProgressCallback & progress,
+                                       Workspace *              workspace)
+{
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+  {
+    throw std::invalid_argument("BilateralDepthRelaxSteadySolver: tolerance " + std::to_string(tolerance) +
+                                " mm must be finite and > 0");
+  }
+  Report report;
+  if (width == 0 || height == 0)
+  {
+    return report;
+  }
+  Workspace       ownWorkspace;
+  SolverBuffers & buffers = *(workspace ? workspace : &ownWorkspace)->m_Buffers;
+  SteadySolve     solve(buffers, static_cast<long>(width), static_cast<long>(height), anisotropy, threads);
+  solve.Load(depth, fixed);
+  report = solve.Run(tolerance, progress);
+  solve.Store(depth, fixed, relaxed);
+  return report;
+}
+
+} // namespace itk

@@ -1,0 +1,125 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef itkBilateralDepthRelaxSteadySolver_h
+#define itkBilateralDepthRelaxSteadySolver_h
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+
+namespace itk
+{
+
+/** \class BilateralDepthRelaxSteadySolver
+ * \brief The steady state of BilateralDepthRelaxFilter's relaxation: the fixed point of Eq. 1, computed directly.
+ *
+ * N Jacobi passes of Eq. 1 (Kretschmer, Preim, Stamminger, EuroVis 2014) spread smoothing about sqrt(N) pixels,
+ * so their result depends on N and on the pixel count. This solver computes where those passes lead instead: a
+ * depth map in which every free pixel p equals the R-weighted mean of its 4-neighbours, the weights taken at the
+ * solution,
+ *
+ * \f[ D_p = \frac{\sum_{q \in \Omega(p)} R(D_p - D_q)\, D_q}{\sum_{q \in \Omega(p)} R(D_p - D_q)}, \qquad
+ *     R(x) = e^{-a x^2}, \f]
+ *
+ * to a maximum residual |D_p - sum R D_q / sum R| below Tolerance mm. The relaxation w only damps Jacobi and does
+ * not move this fixed point, so it is no parameter here. Fixed pixels keep their input value bit for bit.
+ *
+ * The equation is the stationary condition of the robust (Welsch) energy
+ * E(D) = sum over 4-neighbour edges of (1 - R(D_p - D_q)) / (2a), and Jacobi's passes descend it. The solver
+ * descends it too, by lagged weights (iteratively reweighted least squares, a majorise-minimise scheme, so E never
+ * rises): each outer iteration takes the weights R at the current depths and solves the weighted graph Laplacian
+ * with the fixed pixels as Dirichlet values, approximately, by conjugate gradients preconditioned with a
+ * multigrid V-cycle, until the residual of the outer iteration has fallen tenfold. From the same start it reaches
+ * the fixed point Jacobi approaches; it does not jump to another one, as the steps of both follow the weights.
+ *
+ * The multigrid is a black-box multigrid (Dendy, "Black box multigrid", J. Comput. Phys. 48, 1982): coarse points
+ * on every other row and column, interpolation that follows the weights (a pixel beside a depth jump interpolates
+ * from its own side only), Galerkin coarse operators (9-point stencils), red-black Gauss-Seidel smoothing on the
+ * 5-point finest level and four-colour Gauss-Seidel on the 9-point coarse ones, a dense Cholesky solve on the
+ * coarsest (at most 64 points). Its cost per cycle is proportional to the pixel count and its convergence rate does
+ * not depend on the image's diameter, so a whole solve costs a few tens of passes over the image. The hierarchy
+ * is built from the first weights and rebuilt only when the conjugate gradients slow down (the preconditioner may
+ * lag the weights; the operator never does).
+ *
+ * Where the Laplacian is singular, the fixed point is not unique; the solver decides:
+ * - A pixel whose every weight underflows (a x^2 above -ln FLT_MIN for all its neighbours) is isolated and keeps its
+ *   value, as in Jacobi.
+ * - A region of free pixels that no fixed pixel reaches through non-zero weights ("floating"; for instance every
+ *   region of a map without any fixed pixel) has every constant as a fixed point. The solver gives it its mean
+ *   input depth: constant, and the value the relaxation preserves there. Regions are found on the input and again
+ *   whenever the pattern of vanishing weights changes.
+ *
+ * Depths are held in double between outer iterations, corrections and weights are float. Every pixel is computed
+ * by the same code whatever thread runs its row, and sums are formed per row and then added in row order, so the
+ * result is bit-identical for any number of threads.
+ *
+ * \sa BilateralDepthRelaxFilter, BilateralDepthRelaxKernel
+ * \ingroup VesselReformation
+ */
+class BilateralDepthRelaxSteadySolver
+{
+public:
+  /** Called by the calling thread after each outer iteration with the fraction of the way done (from the
+   * logarithm of the residual); may throw (for instance to abort), which stops the solve and is rethrown. */
+  using ProgressCallback = std::function<void(double fraction)>;
+
+  /** The default residual tolerance, in mm: a tenth of the 1e-3 mm the filter promises, as a margin for the
+   * float arithmetic of the solver. */
+  static constexpr double DefaultTolerance = 1e-4;
+
+  /** What a solve did. */
+  struct Report
+  {
+    /** Outer (reweighting) iterations, each with its own weights. */
+    unsigned int OuterIterations{ 0 };
+    /** Multigrid V-cycles, over all outer iterations. */
+    unsigned int Cycles{ 0 };
+    /** Times the multigrid hierarchy was built. */
+    unsigned int HierarchyBuilds{ 0 };
+    /** Pixels that no fixed pixel reaches and that took their region's mean (isolated pixels included). */
+    std::size_t FloatingPixels{ 0 };
+    /** max |D_p - sum R D_q / sum R| over free pixels with non-zero weights at the end, in mm (float weights). */
+    double Residual{ 0.0 };
+  };
+
+  /** Buffers kept from one solve to the next (about 60 bytes per pixel): reusing one spares allocating and first
+   * touching them. One solve at a time per workspace. */
+  class Workspace
+  {
+  public:
+    Workspace();
+    ~Workspace();
+    Workspace(const Workspace &) = delete;
+    Workspace &
+    operator=(const Workspace &) = delete;
+
+  private:
+    friend class BilateralDepthRelaxSteadySolver;
+    struct Buffers;
+    std::unique_ptr<Buffers> m_Buffers;
+  };
+
+  /** Solves for the fixed point of \a depth (row-major \a width x \a height, finite values, in mm) into
+   * \a relaxed (same layout; may be the same buffer). \a fixed (row-major, non-zero = fixed) may be null.
+   * \a anisotropy is a >= 0 in mm^-2 (0: the harmonic interpolation of the fixed pixels). \a tolerance is the
+   * residual to reach, in mm (> 0). \a threads (>= 1) work on bands of rows. Throws std::runtime_error when the
+   * residual has not fallen below \a tolerance after MaximumOuterIterations (which a descent of the energy makes
+   * very unlikely), std::invalid_argument for a bad tolerance. */
+  static Report
+  Solve(const float *            depth,
+        const unsigned char *    fixed,
+        float *                  relaxed,
+        std::size_t              width,
+        std::size_t              height,
+        double                   anisotropy,
+        double                   tolerance = DefaultTolerance,
+        unsigned int             threads = 1,
+        const ProgressCallback & progress = ProgressCallback(),
+        Workspace *              workspace = nullptr);
+
+  /** The most outer iterations a solve may take. */
+  static constexpr unsigned int MaximumOuterIterations = 1000;
+};
+
+} // namespace itk
+
+#endif
