@@ -21,6 +21,7 @@ namespace vr
  * change invalidates (DESIGN 3.7).
  *
  * \sa VesselReformationLogic
+ * \ingroup VesselReformation
  */
 struct ReformationParameters
 {
@@ -81,7 +82,9 @@ struct ReformationParameters
   ToViewSpecification() const;
 };
 
-/** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto". */
+/** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto".
+ * \ingroup VesselReformation
+ */
 struct UpAxisChoice
 {
   bool                   Automatic{ false };

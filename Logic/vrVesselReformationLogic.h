@@ -20,7 +20,9 @@ class vtkPolyData;
 
 namespace vr
 {
-/** Seconds each stage took in the most recent Update(); 0 for a stage that Update() did not need to run. */
+/** Seconds each stage took in the most recent Update(); 0 for a stage that Update() did not need to run.
+ * \ingroup VesselReformation
+ */
 struct StageTimes
 {
   /** Nodes to ITK images and the centerline tree. */
@@ -36,7 +38,9 @@ struct StageTimes
 };
 
 /** How many times each stage has run since the logic was made (DESIGN 3.7's recompute rules are tested on
- * these). */
+ * these).
+ * \ingroup VesselReformation
+ */
 struct StageCounts
 {
   unsigned int Conversion{ 0 };
@@ -52,7 +56,9 @@ struct StageCounts
 
 /** What a reformation returns: output nodes as a platform takes them. The 2D images are one-slice volume nodes
  * lying on the view plane, their view in the "CPR_*" attributes (see vrNodeConversion.h); the surface is in RAS.
- * A node object is replaced only when its stage reruns. */
+ * A node object is replaced only when its stage reruns.
+ * \ingroup VesselReformation
+ */
 struct ReformationOutputs
 {
   vtkSmartPointer<VolumeNode> Depth;
@@ -94,6 +100,7 @@ struct ReformationOutputs
  *
  * \sa ReformationParameters, VolumeNode, CenterlineNode, itk::CPRDepthImageFilter,
  * itk::BilateralDepthRelaxFilter, itk::CPRResampleImageFilter
+ * \ingroup VesselReformation
  */
 class VesselReformationLogic
 {

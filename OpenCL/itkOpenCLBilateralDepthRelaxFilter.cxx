@@ -411,6 +411,8 @@ OpenCLBilateralDepthRelaxFilter::PrintSelf(std::ostream & os, Indent indent) con
 {
   Superclass::PrintSelf(os, indent);
   os << indent << "DeviceRequest: \"" << m_DeviceRequest << "\"" << std::endl;
+  os << indent << "ForcedVectorWidth: " << m_ForcedVectorWidth << " (0 = the device's preferred width)" << std::endl;
+  os << indent << "ForcedGPULayout: " << (m_ForcedGPULayout ? "On" : "Off") << std::endl;
   if (m_DeviceState)
   {
     const KernelShape & shape = m_DeviceState->Shape;

@@ -8,7 +8,9 @@
 namespace vr
 {
 /** Bad input from a user: a file, a field, a flag or a parameter. The message names what is wrong and where,
- * ready to show as it is. */
+ * ready to show as it is.
+ * \ingroup VesselReformation
+ */
 class InputError : public std::runtime_error
 {
 public:

@@ -36,6 +36,7 @@ namespace itk
  * non-finite depth) raise an itk::ExceptionObject naming the parameter and its value.
  *
  * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel
+ * \ingroup VesselReformation
  */
 template<typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
 class ITK_TEMPLATE_EXPORT BilateralDepthRelaxFilter : public ImageToImageFilter<TImage, TImage>

@@ -265,6 +265,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Inde
   os << indent << "Relaxation (w): " << m_Relaxation << std::endl;
   os << indent << "Anisotropy (a, mm^-2): " << m_Anisotropy << std::endl;
   os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
+  os << indent << "KernelWorkspace: the fast kernel's buffers, kept between updates" << std::endl;
 }
 
 } // namespace itk

@@ -9,7 +9,9 @@
 namespace itk::detail
 {
 
-/** A depth map with its fixed mask and owner labels, row-major W x H. */
+/** A depth map with its fixed mask and owner labels, row-major W x H.
+ * \ingroup VesselReformation
+ */
 struct CPRDepthAssignment
 {
   std::vector<float>         Depth;
