@@ -353,13 +353,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       }
       state.Queue.finish();
       this->UpdateProgress(static_cast<float>(iteration) / static_cast<float>(iterations));
-      if (this->GetAbortGenerateData())
-      {
-        ProcessAborted aborted(__FILE__, __LINE__);
-        aborted.SetDescription("OpenCLBilateralDepthRelaxFilter aborted after " + std::to_string(iteration) + " of " +
-                               std::to_string(iterations) + " iterations");
-        throw aborted;
-      }
+      this->ThrowIfAborted(iteration);
     }
     // One download of both planes; the depth is high + low.
     std::vector<float>               lowPlane(width * height);

@@ -31,6 +31,13 @@ struct CLIParameter
   bool                     HasConstraints{ false };
   double                   Minimum{ 0.0 };
   double                   Maximum{ 0.0 };
+
+  /** \return "--flag" for a flag, "<name>" for a positional parameter: how messages name it. */
+  std::string
+  Spelling() const
+  {
+    return LongFlag.empty() ? "<" + Name + ">" : "--" + LongFlag;
+  }
 };
 
 /** \class CLIModuleDescription

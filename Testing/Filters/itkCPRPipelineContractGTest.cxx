@@ -96,8 +96,7 @@ struct Pipeline
   void
   Update()
   {
-    Resample->GetOutput()->SetRequestedRegionToLargestPossibleRegion();
-    Resample->Update();
+    Resample->UpdateLargestPossibleRegion();
   }
 
   /** How many of (depth, relax, resample) ran during \a change followed by an update. */
