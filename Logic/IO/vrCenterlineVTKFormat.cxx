@@ -41,7 +41,7 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
   vtkSmartPointer<vtkPolyData> polyData;
   CoordinateSpace              headerSpace = CoordinateSpace::Auto;
   {
-    VTKErrorCapture capture;
+    detail::VTKErrorCapture capture;
     if (HasExtension(path, ".vtp"))
     {
       report.Format = "VTK XML PolyData (.vtp)";
@@ -115,7 +115,7 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
 {
   const CoordinateSpace        used = space == CoordinateSpace::LPS ? CoordinateSpace::LPS : CoordinateSpace::RAS;
   vtkSmartPointer<vtkPolyData> polyData = PolyDataFromCenterlineTree(tree, used);
-  VTKErrorCapture              capture;
+  detail::VTKErrorCapture      capture;
   int                          written = 0;
   if (HasExtension(finalPath, ".vtp"))
   {
