@@ -14,7 +14,7 @@ main()
 {
   using Volume = itk::Image<float, 3>;
   using Depth = itk::Image<float, 2>;
-  auto           volume = Volume::New();
+  auto             volume = Volume::New();
   Volume::SizeType size{ { 40, 40, 60 } };
   volume->SetRegions(Volume::RegionType(size));
   volume->Allocate();
@@ -75,7 +75,6 @@ main()
       ++checked;
     }
   }
-  std::cout << "CPR " << extent << ", " << checked << " pixels inside the volume equal the analytic value"
-            << std::endl;
+  std::cout << "CPR " << extent << ", " << checked << " pixels inside the volume equal the analytic value" << std::endl;
   return checked > 100 ? 0 : 1;
 }

@@ -42,8 +42,9 @@ main(int argc, char * argv[])
   const Image * image = reader->GetOutput();
   const auto    size = image->GetLargestPossibleRegion().GetSize();
   const bool    geometry = size[0] == 2 && size[1] == 3 && size[2] == 4 && image->GetSpacing()[0] == 0.5 &&
-                        image->GetSpacing()[1] == 0.75 && image->GetSpacing()[2] == 2.0 && image->GetOrigin()[0] == 10.0 &&
-                        image->GetOrigin()[1] == -20.0 && image->GetOrigin()[2] == 30.0;
+                        image->GetSpacing()[1] == 0.75 && image->GetSpacing()[2] == 2.0 &&
+                        image->GetOrigin()[0] == 10.0 && image->GetOrigin()[1] == -20.0 &&
+                        image->GetOrigin()[2] == 30.0;
   if (!geometry)
   {
     std::cerr << "wrong geometry: size " << size << ", spacing " << image->GetSpacing() << ", origin "
