@@ -36,6 +36,7 @@ namespace itk
  * message names the call and the status).
  *
  * \sa BilateralDepthRelaxFilter, vr::ListOpenCLDevices, vr::CreateRelaxFilter
+ * \ingroup VesselReformation
  */
 class OpenCLBilateralDepthRelaxFilter : public BilateralDepthRelaxFilter<Image<float, 2>>
 {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -28,28 +29,29 @@ template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::SetAnisotropy(double anisotropy)
 {
-  if (m_Anisotropy == anisotropy && !m_JumpThresholdWasSet) // NaN != NaN: a NaN always counts as a change
-  {
-    return;
-  }
+  // An equal value changes nothing (reruns nothing); which parametrisation was set last only words the messages.
+  const bool changed = !(m_Anisotropy == anisotropy); // NaN != NaN: a NaN always counts as a change
+  m_JumpThresholdWasSet = false;
   m_Anisotropy = anisotropy;
   m_JumpThreshold = anisotropy > 0.0 ? 1.0 / std::sqrt(anisotropy) : std::numeric_limits<double>::infinity();
-  m_JumpThresholdWasSet = false;
-  this->Modified();
+  if (changed)
+  {
+    this->Modified();
+  }
 }
 
 template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::SetJumpThreshold(double jumpThreshold)
 {
-  if (m_JumpThreshold == jumpThreshold && m_JumpThresholdWasSet)
-  {
-    return;
-  }
+  const bool changed = !(m_JumpThreshold == jumpThreshold);
+  m_JumpThresholdWasSet = true;
   m_JumpThreshold = jumpThreshold;
   m_Anisotropy = 1.0 / (jumpThreshold * jumpThreshold);
-  m_JumpThresholdWasSet = true;
-  this->Modified();
+  if (changed)
+  {
+    this->Modified();
+  }
 }
 
 template<typename TImage, typename TMaskImage>
@@ -223,7 +225,11 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
     m_Anisotropy,
     iterations,
     threads,
-    [this, iterations](unsigned int done) { this->UpdateProgress(static_cast<float>(done) / iterations); },
+    [this, iterations](unsigned int done)
+    {
+      this->UpdateProgress(static_cast<float>(done) / iterations);
+      this->ThrowIfAborted(done);
+    },
     &m_KernelWorkspace);
 }
 
@@ -306,6 +312,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
     threader->ParallelizeArray(0, height, relaxRow, nullptr);
     std::swap(current, next);
     this->UpdateProgress(static_cast<float>(iteration + 1) / m_NumberOfIterations);
+    this->ThrowIfAborted(iteration + 1);
   }
   std::copy(current.begin(), current.end(), output->GetBufferPointer());
 }
@@ -350,7 +357,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostSteady()
     if (this->GetAbortGenerateData())
     {
       ProcessAborted aborted(__FILE__, __LINE__);
-      aborted.SetDescription("BilateralDepthRelaxFilter: the steady solve was aborted");
+      aborted.SetDescription(std::string(this->GetNameOfClass()) + ": aborted during the steady solve");
       throw aborted;
     }
   };
@@ -375,6 +382,21 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostSteady()
   for (std::size_t k = 0; k < count; ++k)
   {
     out[k] = !fixed.empty() && fixed[k] ? in[k] : static_cast<PixelType>(relaxed[k]);
+  }
+}
+
+template<typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::ThrowIfAborted(unsigned int completedIterations) const
+{
+  if (this->GetAbortGenerateData())
+  {
+    ProcessAborted     aborted(__FILE__, __LINE__);
+    std::ostringstream description;
+    description << this->GetNameOfClass() << ": aborted after " << completedIterations << " of " << m_NumberOfIterations
+                << " iterations";
+    aborted.SetDescription(description.str());
+    throw aborted;
   }
 }
 
