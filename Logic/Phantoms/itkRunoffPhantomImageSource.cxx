@@ -2,7 +2,7 @@
 #include "itkRunoffPhantomImageSource.h"
 
 #include "itkCPRVectorHelpers.h"
-#include "itkImageRegionIterator.h"
+#include "itkPhantomRendering.h"
 
 #include <algorithm>
 #include <array>
@@ -14,6 +14,8 @@ namespace itk
 namespace
 {
 using PointType = Point<double, 3>;
+using detail::Capsule;
+using detail::MakeCapsule;
 
 constexpr double TopOfFieldOfView = 10.0;
 constexpr double BottomOfFieldOfView = -1010.0;
@@ -44,10 +46,7 @@ struct VesselDefinition
   std::vector<ControlPoint> controls;
 };
 
-/** The view angle (degrees about superior) at which the vessels of each leg lie within a few mm of each other
- * in depth, so that the scanline depth map there has small seams inside each leg and a large jump between the
- * legs. */
-constexpr double DesignAngleInDegrees = 30.0;
+constexpr double DesignAngleInDegrees = RunoffPhantomImageSource::DesignAngleInDegrees;
 
 /** Anterior-posterior course of the leg vessels (z, y at scale 1): anterior in the thigh, behind the knee. */
 double
@@ -187,16 +186,6 @@ PlaqueDefinitions()
   return plaques;
 }
 
-PointType
-MakePoint(double x, double y, double z)
-{
-  PointType p;
-  p[0] = x;
-  p[1] = y;
-  p[2] = z;
-  return p;
-}
-
 /** Uniform Catmull-Rom through the control points (ends repeated), sampled about every 2 mm. */
 CenterlineBranch
 SampleBranch(int id, const std::vector<ControlPoint> & controls, double side, double scale)
@@ -206,98 +195,10 @@ SampleBranch(int id, const std::vector<ControlPoint> & controls, double side, do
   for (const auto & c : controls)
   {
     const double y = c.inLegFrame ? LegVesselY(side, c.x, c.z, c.y) : c.y;
-    knots.push_back(MakePoint(side * c.x * scale, y * scale, c.z * scale));
+    knots.push_back(detail::MakePhantomPoint(side * c.x * scale, y * scale, c.z * scale));
     radii.push_back(c.radius * scale);
   }
-  CenterlineBranch branch;
-  branch.Id = id;
-  const std::size_t spans = knots.size() - 1;
-  for (std::size_t s = 0; s < spans; ++s)
-  {
-    const PointType & p0 = knots[s == 0 ? 0 : s - 1];
-    const PointType & p1 = knots[s];
-    const PointType & p2 = knots[s + 1];
-    const PointType & p3 = knots[std::min(s + 2, spans)];
-    const int         samples = std::max(2, static_cast<int>(std::ceil(p1.EuclideanDistanceTo(p2) / (2.0 * scale))));
-    for (int k = 0; k < samples; ++k)
-    {
-      const double t = static_cast<double>(k) / samples;
-      const double t2 = t * t;
-      const double t3 = t2 * t;
-      PointType    point;
-      for (unsigned int axis = 0; axis < 3; ++axis)
-      {
-        point[axis] = 0.5 * (2.0 * p1[axis] + (-p0[axis] + p2[axis]) * t +
-                             (2.0 * p0[axis] - 5.0 * p1[axis] + 4.0 * p2[axis] - p3[axis]) * t2 +
-                             (-p0[axis] + 3.0 * p1[axis] - 3.0 * p2[axis] + p3[axis]) * t3);
-      }
-      branch.Points.push_back(point);
-      branch.Radii.push_back(radii[s] + t * (radii[s + 1] - radii[s]));
-    }
-  }
-  branch.Points.push_back(knots.back());
-  branch.Radii.push_back(radii.back());
-  return branch;
-}
-
-/** A capsule with radii varying linearly from a to b. */
-struct Capsule
-{
-  PointType a, b;
-  double    outerA, outerB;
-  double    innerA, innerB;
-  float     innerHU;
-  double    zMin, zMax;
-};
-
-Capsule
-MakeCapsule(const PointType & a,
-            const PointType & b,
-            double            outerA,
-            double            outerB,
-            double            innerA,
-            double            innerB,
-            float             innerHU)
-{
-  const double reach = std::max(outerA, outerB);
-  return { a, b, outerA, outerB, innerA, innerB, innerHU, std::min(a[2], b[2]) - reach, std::max(a[2], b[2]) + reach };
-}
-
-/** Distance from p to segment ab and the segment parameter of the nearest point. */
-double
-DistanceToSegment(const PointType & p, const PointType & a, const PointType & b, double & t)
-{
-  const Vector<double, 3> ab = b - a;
-  const double            lengthSquared = ab.GetSquaredNorm();
-  t = lengthSquared > 0.0 ? std::min(1.0, std::max(0.0, ((p - a) * ab) / lengthSquared)) : 0.0;
-  return (p - (a + ab * t)).GetNorm();
-}
-
-/** Fraction of a voxel of size h inside a surface at signed distance (distance - radius): partial volume. */
-double
-Coverage(double distance, double radius, double h)
-{
-  return std::min(1.0, std::max(0.0, 0.5 - (distance - radius) / h));
-}
-
-/** A reproducible, roughly Gaussian number (sum of three uniforms) from a voxel index and a seed. */
-double
-NoiseSample(uint64_t i, uint64_t j, uint64_t k, uint64_t seed)
-{
-  uint64_t state = (i * 0x9E3779B97F4A7C15ull) ^ (j * 0xC2B2AE3D27D4EB4Full) ^ (k * 0x165667B19E3779F9ull) ^
-                   (seed * 0xD6E8FEB86659FD93ull);
-  double sum = 0.0;
-  for (int n = 0; n < 3; ++n)
-  {
-    state ^= state >> 33;
-    state *= 0xFF51AFD7ED558CCDull;
-    state ^= state >> 33;
-    state *= 0xC4CEB9FE1A85EC53ull;
-    state ^= state >> 33;
-    sum += static_cast<double>(state >> 11) * (1.0 / 9007199254740992.0) - 0.5;
-    state += 0x9E3779B97F4A7C15ull;
-  }
-  return sum * 2.0; // variance of the sum of three U(-0.5, 0.5) is 1/4
+  return detail::SampleCatmullRomBranch(id, knots, radii, 2.0 * scale);
 }
 
 double
@@ -422,27 +323,22 @@ SoftTissue(const BodySection & body, double x, double y, double z)
   return static_cast<float>((MuscleHU + texture) * (1.0 - septumWeight) + (FatHU + 20.0) * septumWeight);
 }
 
-struct PhantomGeometry
-{
-  std::vector<Capsule> vessels;
-  std::vector<Capsule> bones;
-  std::vector<Capsule> plaques;
-  std::vector<float>   vesselHU;
-};
-
-PhantomGeometry
+detail::PhantomLayers
 BuildGeometry(const CenterlineTree & tree, double scale)
 {
-  PhantomGeometry geometry;
+  detail::PhantomLayers geometry;
+  geometry.CorticalBoneHU = CorticalBoneHU;
+  geometry.CalcificationHU = CalcificationHU;
+  geometry.AirHU = AirHU;
   for (const auto & branch : tree.GetBranches())
   {
     for (std::size_t p = 0; p + 1 < branch.Points.size(); ++p)
     {
-      geometry.vessels.push_back(
+      geometry.Vessels.push_back(
         MakeCapsule(branch.Points[p], branch.Points[p + 1], branch.Radii[p], branch.Radii[p + 1], 0.0, 0.0, 0.0f));
       // Contrast fades distally: about 390 HU in the aorta, 310 HU at the ankle.
       const double height = 0.5 * (branch.Points[p][2] + branch.Points[p + 1][2]) / scale;
-      geometry.vesselHU.push_back(static_cast<float>(390.0 + 0.08 * std::max(-1000.0, std::min(0.0, height))));
+      geometry.VesselHU.push_back(static_cast<float>(390.0 + 0.08 * std::max(-1000.0, std::min(0.0, height))));
     }
   }
   for (const auto & bone : BoneDefinitions())
@@ -453,9 +349,9 @@ BuildGeometry(const CenterlineTree & tree, double scale)
       {
         continue;
       }
-      const PointType a = MakePoint(side * bone.a[0] * scale, bone.a[1] * scale, bone.a[2] * scale);
-      const PointType b = MakePoint(side * bone.b[0] * scale, bone.b[1] * scale, bone.b[2] * scale);
-      geometry.bones.push_back(MakeCapsule(a,
+      const PointType a = detail::MakePhantomPoint(side * bone.a[0] * scale, bone.a[1] * scale, bone.a[2] * scale);
+      const PointType b = detail::MakePhantomPoint(side * bone.b[0] * scale, bone.b[1] * scale, bone.b[2] * scale);
+      geometry.Bones.push_back(MakeCapsule(a,
                                            b,
                                            bone.outerRadius * scale,
                                            bone.outerRadius * scale,
@@ -489,7 +385,7 @@ BuildGeometry(const CenterlineTree & tree, double scale)
     const double            radius = branch->Radii[p];
     const PointType center = branch->Points[p] + (across * std::cos(angle) + other * std::sin(angle)) * (0.9 * radius);
     const double    plaqueRadius = std::max(1.2 * scale, 0.45 * radius);
-    geometry.plaques.push_back(MakeCapsule(center, center, plaqueRadius, plaqueRadius, 0.0, 0.0, 0.0f));
+    geometry.Calcifications.push_back(MakeCapsule(center, center, plaqueRadius, plaqueRadius, 0.0, 0.0, 0.0f));
   }
   return geometry;
 }
@@ -593,141 +489,15 @@ void
 RunoffPhantomImageSource::DynamicThreadedGenerateData(const OutputImageRegionType & region)
 {
   // Cheap to rebuild per work unit, and it keeps the source free of mutable caches.
-  const CenterlineTree  tree = this->GetCenterlineTree();
-  const PhantomGeometry geometry = BuildGeometry(tree, m_Scale);
-  ImageType *           output = this->GetOutput();
-  const double          h = m_Spacing;
-  const double          scale = m_Scale;
-
-  const auto start = region.GetIndex();
-  const auto size = region.GetSize();
-  const long width = static_cast<long>(size[0]);
-  const long height = static_cast<long>(size[1]);
-  PointType  corner;
-  output->TransformIndexToPhysicalPoint(start, corner);
-
-  std::vector<float>  slice(static_cast<std::size_t>(width * height));
-  std::vector<double> boneOuter(slice.size());
-  std::vector<double> boneInner(slice.size());
-  std::vector<float>  marrowHU(slice.size());
-  std::vector<double> vesselCoverage(slice.size());
-  std::vector<float>  vesselValue(slice.size());
-  std::vector<double> plaqueCoverage(slice.size());
-
-  // Loops over the voxels of this slice within reach of a capsule.
-  auto forEachVoxelNear = [&](const Capsule & capsule, double z, auto && visit)
+  const CenterlineTree        tree = this->GetCenterlineTree();
+  const detail::PhantomLayers layers = BuildGeometry(tree, m_Scale);
+  const double                scale = m_Scale;
+  auto                        tissueAtHeight = [scale](double z)
   {
-    const double reach = std::max(capsule.outerA, capsule.outerB) + h;
-    const double xLow = std::min(capsule.a[0], capsule.b[0]) - reach;
-    const double xHigh = std::max(capsule.a[0], capsule.b[0]) + reach;
-    const double yLow = std::min(capsule.a[1], capsule.b[1]) - reach;
-    const double yHigh = std::max(capsule.a[1], capsule.b[1]) + reach;
-    const long   i0 = std::max(0L, static_cast<long>(std::floor((xLow - corner[0]) / h)));
-    const long   i1 = std::min(width - 1, static_cast<long>(std::ceil((xHigh - corner[0]) / h)));
-    const long   j0 = std::max(0L, static_cast<long>(std::floor((yLow - corner[1]) / h)));
-    const long   j1 = std::min(height - 1, static_cast<long>(std::ceil((yHigh - corner[1]) / h)));
-    for (long j = j0; j <= j1; ++j)
-    {
-      for (long i = i0; i <= i1; ++i)
-      {
-        const PointType p = MakePoint(corner[0] + i * h, corner[1] + j * h, z);
-        double          t = 0.0;
-        const double    distance = DistanceToSegment(p, capsule.a, capsule.b, t);
-        visit(static_cast<std::size_t>(j * width + i), distance, t);
-      }
-    }
-  };
-
-  for (SizeValueType k = 0; k < size[2]; ++k)
-  {
-    const double      z = corner[2] + k * h;
     const BodySection body = BodyAt(z / scale);
-    for (long j = 0; j < height; ++j)
-    {
-      for (long i = 0; i < width; ++i)
-      {
-        slice[j * width + i] = SoftTissue(body, (corner[0] + i * h) / scale, (corner[1] + j * h) / scale, z / scale);
-      }
-    }
-    std::fill(boneOuter.begin(), boneOuter.end(), 0.0);
-    std::fill(boneInner.begin(), boneInner.end(), 0.0);
-    std::fill(vesselCoverage.begin(), vesselCoverage.end(), 0.0);
-    std::fill(plaqueCoverage.begin(), plaqueCoverage.end(), 0.0);
-
-    for (const auto & bone : geometry.bones)
-    {
-      if (z < bone.zMin - h || z > bone.zMax + h)
-      {
-        continue;
-      }
-      forEachVoxelNear(bone,
-                       z,
-                       [&](std::size_t v, double distance, double t)
-                       {
-                         const double outer = Coverage(distance, bone.outerA + t * (bone.outerB - bone.outerA), h);
-                         const double inner = Coverage(distance, bone.innerA + t * (bone.innerB - bone.innerA), h);
-                         boneOuter[v] = std::max(boneOuter[v], outer);
-                         if (inner > boneInner[v])
-                         {
-                           boneInner[v] = inner;
-                           marrowHU[v] = bone.innerHU;
-                         }
-                       });
-    }
-    for (std::size_t c = 0; c < geometry.vessels.size(); ++c)
-    {
-      const Capsule & vessel = geometry.vessels[c];
-      if (z < vessel.zMin - h || z > vessel.zMax + h)
-      {
-        continue;
-      }
-      forEachVoxelNear(vessel,
-                       z,
-                       [&](std::size_t v, double distance, double t)
-                       {
-                         const double coverage =
-                           Coverage(distance, vessel.outerA + t * (vessel.outerB - vessel.outerA), h);
-                         if (coverage > vesselCoverage[v])
-                         {
-                           vesselCoverage[v] = coverage;
-                           vesselValue[v] = geometry.vesselHU[c];
-                         }
-                       });
-    }
-    for (const auto & plaque : geometry.plaques)
-    {
-      if (z < plaque.zMin - h || z > plaque.zMax + h)
-      {
-        continue;
-      }
-      forEachVoxelNear(plaque,
-                       z,
-                       [&](std::size_t v, double distance, double)
-                       { plaqueCoverage[v] = std::max(plaqueCoverage[v], Coverage(distance, plaque.outerA, h)); });
-    }
-
-    for (long j = 0; j < height; ++j)
-    {
-      for (long i = 0; i < width; ++i)
-      {
-        const std::size_t v = static_cast<std::size_t>(j * width + i);
-        double            value = slice[v];
-        value = value * (1.0 - boneOuter[v]) + CorticalBoneHU * (boneOuter[v] - boneInner[v]) +
-                (boneInner[v] > 0.0 ? marrowHU[v] * boneInner[v] : 0.0);
-        value = value * (1.0 - vesselCoverage[v]) + vesselValue[v] * vesselCoverage[v];
-        value = value * (1.0 - plaqueCoverage[v]) + CalcificationHU * plaqueCoverage[v];
-        if (value > AirHU + 1.0 && m_NoiseStandardDeviation > 0.0)
-        {
-          value += m_NoiseStandardDeviation * NoiseSample(static_cast<uint64_t>(start[0] + i),
-                                                          static_cast<uint64_t>(start[1] + j),
-                                                          static_cast<uint64_t>(start[2] + k),
-                                                          m_Seed);
-        }
-        ImageType::IndexType index = { { start[0] + i, start[1] + j, start[2] + static_cast<IndexValueType>(k) } };
-        output->SetPixel(index, static_cast<float>(value));
-      }
-    }
-  }
+    return [body, z, scale](double x, double y) { return SoftTissue(body, x / scale, y / scale, z / scale); };
+  };
+  detail::RenderPhantomRegion(this->GetOutput(), region, layers, tissueAtHeight, m_NoiseStandardDeviation, m_Seed);
 }
 
 void

@@ -42,6 +42,11 @@ public:
   itkNewMacro(Self);
   itkTypeMacro(RunoffPhantomImageSource, ImageSource);
 
+  /** The view angle (degrees about superior) the phantom was designed for: there the vessels of each leg lie within a
+   * few mm of each other in depth, so the scanline depth map has small seams inside each leg and a large jump between
+   * the legs. */
+  static constexpr double DesignAngleInDegrees = 30.0;
+
   /** Isotropic voxel spacing, in mm. */
   itkSetMacro(Spacing, double);
   itkGetConstMacro(Spacing, double);
