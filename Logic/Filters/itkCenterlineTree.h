@@ -29,6 +29,18 @@ struct CenterlineBranch
   {
     return !Radii.empty();
   }
+
+  /** Exact equality of id, points and radii. */
+  bool
+  operator==(const CenterlineBranch & other) const
+  {
+    return Id == other.Id && Points == other.Points && Radii == other.Radii;
+  }
+  bool
+  operator!=(const CenterlineBranch & other) const
+  {
+    return !(*this == other);
+  }
 };
 
 /** \class CenterlineTree
@@ -90,6 +102,18 @@ public:
    * differs from the point count. */
   void
   Validate() const;
+
+  /** Exact equality, branch by branch (what SimpleDataObjectDecorator<CenterlineTree>::Set compares). */
+  bool
+  operator==(const CenterlineTree & other) const
+  {
+    return m_Branches == other.m_Branches;
+  }
+  bool
+  operator!=(const CenterlineTree & other) const
+  {
+    return !(*this == other);
+  }
 
   /** Tube spatial objects (one per branch, id = branch id) under a group; positions in world (LPS) space. */
   GroupType::Pointer
