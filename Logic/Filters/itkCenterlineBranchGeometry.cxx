@@ -1,8 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkCenterlineBranchGeometry.h"
 
-#include "itkLinearInterpolateImageFunction.h"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -139,8 +137,6 @@ ResamplePolyline(const std::vector<Vector3> & points, double spacing)
 
 namespace
 {
-using InterpolatorType = LinearInterpolateImageFunction<CenterlineForeground::DistanceImageType, double>;
-
 /** The voxel size across a direction: the spacing seen in the plane normal to the unit vector \a tangent (index
  * axes). Isotropic voxels of size h give h. */
 double
@@ -175,29 +171,15 @@ Tangents(const std::vector<Vector3> & points)
   return tangents;
 }
 
-/** Interpolated distance to the background at a position (mm, the index frame scaled by the spacing); 0 outside. */
-double
-DistanceAt(const InterpolatorType * interpolator, const Vector3 & position, const std::array<double, 3> & spacing)
-{
-  ContinuousIndex<double, 3> index;
-  for (unsigned int axis = 0; axis < 3; ++axis)
-  {
-    index[axis] = position[axis] / spacing[axis];
-  }
-  return interpolator->IsInsideBuffer(index) ? interpolator->EvaluateAtContinuousIndex(index) : 0.0;
-}
-
 /** Moves \a point, in the plane normal to \a tangent, to the centre of the ridge of the distance map: the centroid
  * of the part of a small square of that plane (two voxels each way) where the interpolated distance lies within one
  * voxel of its highest value there. Near the ridge the distance is a cone around the true axis, so that part is a
  * disc centred on it; the interpolation between voxel centres leaves the disc's centre in place even when the axis
  * runs between them, where a voxel path cannot follow it. */
 Vector3
-CentreOnRidge(const Vector3 &               point,
-              const Vector3 &               tangent,
-              const InterpolatorType *      interpolator,
-              const std::array<double, 3> & spacing)
+CentreOnRidge(const Vector3 & point, const Vector3 & tangent, const CenterlineForeground & foreground)
 {
+  const auto & spacing = foreground.Spacing;
   // Two unit vectors spanning the normal plane.
   Vector3 helper{ 1.0, 0.0, 0.0 };
   if (std::abs(tangent[0]) > 0.9)
@@ -230,7 +212,7 @@ CentreOnRidge(const Vector3 &               point,
       {
         sample[axis] = point[axis] + a * step * n1[axis] + b * step * n2[axis];
       }
-      const double value = DistanceAt(interpolator, sample, spacing);
+      const double value = foreground.InterpolatedDistance(sample);
       samples[(a + steps) * (2 * steps + 1) + (b + steps)] = value;
       top = std::max(top, value);
     }
@@ -260,17 +242,15 @@ CentreOnRidge(const Vector3 &               point,
 } // namespace
 
 std::vector<CenterlineBranch>
-MakeCenterlineBranches(const SkeletonTree &                            skeleton,
-                       const CenterlineForeground &                    foreground,
-                       const CenterlineForeground::DistanceImageType * distance,
-                       const BranchGeometryParameters &                parameters,
-                       int                                             firstId)
+MakeCenterlineBranches(const SkeletonTree &                        skeleton,
+                       const CenterlineForeground &                foreground,
+                       const CenterlineForeground::MaskImageType * grid,
+                       const BranchGeometryParameters &            parameters,
+                       int                                         firstId)
 {
   const auto &      spacing = foreground.Spacing;
   const double      diagonal = std::sqrt(spacing[0] * spacing[0] + spacing[1] * spacing[1] + spacing[2] * spacing[2]);
   const std::size_t branchCount = skeleton.Branches.size();
-  auto              interpolator = InterpolatorType::New();
-  interpolator->SetInputImage(distance);
 
   // Positions (mm, the index frame scaled by the spacing): the voxel path smoothed, then centred on the ridge of
   // the distance map. Also each branch's median radius and smoothing width.
@@ -300,7 +280,7 @@ MakeCenterlineBranches(const SkeletonTree &                            skeleton,
       const std::vector<Vector3> tangents = Tangents(smoothed);
       for (std::size_t k = 0; k < smoothed.size(); ++k)
       {
-        positions[b][k] = CentreOnRidge(smoothed[k], tangents[k], interpolator, spacing);
+        positions[b][k] = CentreOnRidge(smoothed[k], tangents[k], foreground);
       }
     }
     if (branch.Parent >= 0)
@@ -365,7 +345,7 @@ MakeCenterlineBranches(const SkeletonTree &                            skeleton,
     std::vector<std::array<double, 1>> radii(resampled.size());
     for (std::size_t k = 0; k < resampled.size(); ++k)
     {
-      radii[k][0] = std::max(0.0, DistanceAt(interpolator, resampled[k], spacing)) +
+      radii[k][0] = foreground.InterpolatedDistance(resampled[k]) +
                     parameters.RadiusCorrection * VoxelSizeAcross(tangents[k], spacing);
     }
     radii = SmoothAlongArc(ArcLengths(resampled), radii, sigma[b]);
@@ -380,7 +360,7 @@ MakeCenterlineBranches(const SkeletonTree &                            skeleton,
         index[axis] = resampled[k][axis] / spacing[axis];
       }
       CenterlineBranch::PointType point;
-      distance->TransformContinuousIndexToPhysicalPoint(index, point);
+      grid->TransformContinuousIndexToPhysicalPoint(index, point);
       branch.Points.push_back(point);
       branch.Radii.push_back(std::max(0.0, radii[k][0]));
     }

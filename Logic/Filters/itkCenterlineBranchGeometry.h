@@ -2,6 +2,7 @@
 #ifndef itkCenterlineBranchGeometry_h
 #define itkCenterlineBranchGeometry_h
 
+#include "itkCenterlineForeground.h"
 #include "itkCenterlineSkeleton.h"
 #include "itkCenterlineTree.h"
 
@@ -36,17 +37,17 @@ SmoothPolyline(const std::vector<std::array<double, 3>> & points, double sigma);
 std::vector<std::array<double, 3>>
 ResamplePolyline(const std::vector<std::array<double, 3>> & points, double spacing);
 
-/** Turns the voxel branches of \a skeleton into centerline branches: smoothed (junctions shared by the branches
- * that meet there, placed on the smoothed path of the parent and its widest child), resampled, mapped to LPS
- * through \a distance's origin, spacing and direction, with the lumen radius at each point from \a distance (the
- * distance to the nearest background voxel centre in mm, on the same grid as \a foreground). Ids count up from
- * \a firstId in the skeleton's branch order. */
+/** Turns the voxel branches of \a skeleton into centerline branches: smoothed, centred on the ridge of the
+ * foreground's distance to the background, smoothed again (junctions shared by the branches that meet there, placed
+ * on the smoothed path of the parent and its widest child), resampled, mapped to LPS through \a grid's origin,
+ * spacing and direction (the mask \a foreground was made from), with the lumen radius at each point from the
+ * interpolated distance. Ids count up from \a firstId in the skeleton's branch order. */
 std::vector<CenterlineBranch>
-MakeCenterlineBranches(const SkeletonTree &                            skeleton,
-                       const CenterlineForeground &                    foreground,
-                       const CenterlineForeground::DistanceImageType * distance,
-                       const BranchGeometryParameters &                parameters,
-                       int                                             firstId);
+MakeCenterlineBranches(const SkeletonTree &                        skeleton,
+                       const CenterlineForeground &                foreground,
+                       const CenterlineForeground::MaskImageType * grid,
+                       const BranchGeometryParameters &            parameters,
+                       int                                         firstId);
 } // namespace detail
 } // namespace itk
 

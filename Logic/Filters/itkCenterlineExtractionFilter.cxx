@@ -3,7 +3,6 @@
 
 #include "itkCenterlineBranchGeometry.h"
 #include "itkCenterlineSkeleton.h"
-#include "itkSignedMaurerDistanceMapImageFilter.h"
 
 #include <algorithm>
 #include <limits>
@@ -15,26 +14,6 @@ namespace detail
 namespace
 {
 using MaskImageType = CenterlineForeground::MaskImageType;
-using DistanceImageType = CenterlineForeground::DistanceImageType;
-
-/** The distance (mm) from every voxel to the nearest background voxel centre: the Maurer map of the background
- * (BackgroundValue 1 makes the background the object), positive outside it, i.e. on the foreground. */
-DistanceImageType::Pointer
-DistanceToBackground(const MaskImageType * mask, int workUnits)
-{
-  using MaurerType = SignedMaurerDistanceMapImageFilter<MaskImageType, DistanceImageType>;
-  auto maurer = MaurerType::New();
-  maurer->SetInput(mask);
-  maurer->SetBackgroundValue(1);
-  maurer->SetInsideIsPositive(false);
-  maurer->SetSquaredDistance(false);
-  maurer->SetUseImageSpacing(true);
-  maurer->SetNumberOfWorkUnits(static_cast<ThreadIdType>(std::max(1, workUnits)));
-  maurer->Update();
-  DistanceImageType::Pointer distance = maurer->GetOutput();
-  distance->DisconnectPipeline();
-  return distance;
-}
 
 /** The foreground voxel nearest to \a point (LPS mm), and its distance. */
 std::pair<uint32_t, double>
@@ -64,12 +43,10 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
                       const CenterlineExtractionSettings & settings,
                       const std::function<void(double)> &  progress)
 {
-  const auto &                     spacing = paddedMask->GetSpacing();
-  const double                     smallestSpacing = std::min({ spacing[0], spacing[1], spacing[2] });
-  const double                     largestSpacing = std::max({ spacing[0], spacing[1], spacing[2] });
-  const DistanceImageType::Pointer distance = DistanceToBackground(paddedMask, settings.NumberOfWorkUnits);
-  progress(0.3);
-  const CenterlineForeground               foreground = MakeCenterlineForeground(paddedMask, distance);
+  const auto &                             spacing = paddedMask->GetSpacing();
+  const double                             smallestSpacing = std::min({ spacing[0], spacing[1], spacing[2] });
+  const double                             largestSpacing = std::max({ spacing[0], spacing[1], spacing[2] });
+  const CenterlineForeground               foreground = MakeCenterlineForeground(paddedMask);
   const std::vector<std::vector<uint32_t>> components = FindForegroundComponents(foreground);
   progress(0.4);
 
@@ -88,14 +65,15 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
     const auto [voxel, gap] = NearestForegroundVoxel(foreground, paddedMask, settings.RootPoints[k]);
     if (gap > settings.RootPointTolerance)
     {
-      itkGenericExceptionMacro(<< "root point " << k + 1 << " " << settings.RootPoints[k] << " (LPS, mm) lies " << gap
+      itkGenericExceptionMacro(<< "CenterlineExtractionFilter: root point " << k + 1 << " " << settings.RootPoints[k]
+                               << " (LPS, mm) lies " << gap
                                << " mm from the nearest foreground voxel, more than the tolerance of "
                                << settings.RootPointTolerance << " mm; is it in the wrong coordinate system?");
     }
     int64_t & assigned = rootVoxel[componentOf[voxel]];
     if (assigned >= 0)
     {
-      itkGenericExceptionMacro(<< "root point " << k + 1 << " " << settings.RootPoints[k]
+      itkGenericExceptionMacro(<< "CenterlineExtractionFilter: root point " << k + 1 << " " << settings.RootPoints[k]
                                << " (LPS, mm) lies in the same connected component as an earlier root point; give "
                                   "at most one per component");
     }
@@ -123,7 +101,7 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
       ++outcome.NumberOfComponentsWithoutCenterline;
     }
     const int firstId = static_cast<int>(outcome.Tree.GetNumberOfBranches()) + 1;
-    for (auto & branch : MakeCenterlineBranches(skeleton, foreground, distance, geometryParameters, firstId))
+    for (auto & branch : MakeCenterlineBranches(skeleton, foreground, paddedMask, geometryParameters, firstId))
     {
       outcome.Tree.AddBranch(std::move(branch));
     }
@@ -136,8 +114,8 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
   }
   if (outcome.Tree.GetNumberOfBranches() == 0)
   {
-    itkGenericExceptionMacro(<< "no centerline: none of the segmentation's " << components.size()
-                             << " connected components (largest " << components.front().size()
+    itkGenericExceptionMacro(<< "CenterlineExtractionFilter: no centerline: none of the segmentation's "
+                             << components.size() << " connected components (largest " << components.front().size()
                              << " voxels) is elongated enough to have one; a vessel must be longer than it is wide");
   }
   outcome.Tree.Validate();

@@ -48,6 +48,16 @@ RotationMatrix(double x, double y, double z, double degrees)
 
 namespace
 {
+PointType
+P3(double x, double y, double z)
+{
+  PointType p;
+  p[0] = x;
+  p[1] = y;
+  p[2] = z;
+  return p;
+}
+
 /** Distance from p to segment ab and the segment parameter of the nearest point. */
 double
 DistanceToSegment(const PointType & p, const PointType & a, const PointType & b, double & t)
@@ -158,6 +168,56 @@ SegmentPoints(const PointType & a, const PointType & b, double step)
     points.push_back(a + (b - a) * (static_cast<double>(k) / count));
   }
   return points;
+}
+
+itk::CenterlineTree
+MakeBranchingTree(unsigned int size, unsigned int generations)
+{
+  struct Sprout
+  {
+    PointType              Start;
+    itk::Vector<double, 3> Direction;
+    double                 Length;
+    double                 Radius;
+    unsigned int           Generation;
+  };
+  itk::CenterlineTree    tree;
+  const double           s = static_cast<double>(size);
+  itk::Vector<double, 3> up;
+  up[0] = 0.0;
+  up[1] = 0.0;
+  up[2] = 1.0;
+  std::vector<Sprout> sprouts{ { P3(0.5 * s, 0.5 * s, 0.04 * s), up, 0.3 * s, s / 25.0, 0 } };
+  int                 id = 1;
+  for (std::size_t next = 0; next < sprouts.size(); ++next)
+  {
+    const Sprout    sprout = sprouts[next];
+    const PointType end = sprout.Start + sprout.Direction * sprout.Length;
+    tree.AddBranch(TubeBranch(id++, SegmentPoints(sprout.Start, end, 0.5), sprout.Radius));
+    if (sprout.Generation == generations)
+    {
+      continue;
+    }
+    // Turn about an axis across the parent, alternating between two such axes.
+    itk::Vector<double, 3> across = sprout.Generation % 2 == 0
+                                      ? itk::CrossProduct(sprout.Direction, up)
+                                      : itk::CrossProduct(sprout.Direction, itk::CrossProduct(sprout.Direction, up));
+    if (across.GetNorm() < 1e-6)
+    {
+      across[0] = 1.0;
+      across[1] = 0.0;
+      across[2] = 0.0;
+    }
+    across.Normalize();
+    for (const double sign : { -1.0, 1.0 })
+    {
+      const auto             rotation = RotationMatrix(across[0], across[1], across[2], sign * 32.0);
+      itk::Vector<double, 3> direction = rotation * sprout.Direction;
+      direction.Normalize();
+      sprouts.push_back({ end, direction, 0.75 * sprout.Length, 0.72 * sprout.Radius, sprout.Generation + 1 });
+    }
+  }
+  return tree;
 }
 
 itk::CenterlineBranch

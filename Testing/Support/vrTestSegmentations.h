@@ -42,6 +42,13 @@ ArcPoints(const PointType &              center,
           double                         to,
           double                         step);
 
+/** A branching tree of tubes filling a cube of \a size voxels of 1 mm (origin 0, identity direction): a trunk of radius
+ * size/25 rising from the bottom face divides \a generations times, each child 0.72 times as wide and 0.75 times as
+ * long as its parent, turned 32 degrees away from it and alternately about two axes. Branches are tube centerlines
+ * (points every 0.5 mm, a radius each), ids 1, 2, ... parents first; children start at their parent's end. */
+itk::CenterlineTree
+MakeBranchingTree(unsigned int size, unsigned int generations);
+
 /** Points every \a step mm on the segment from \a a to \a b, both ends included. */
 std::vector<PointType>
 SegmentPoints(const PointType & a, const PointType & b, double step);
