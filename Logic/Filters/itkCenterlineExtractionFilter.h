@@ -54,9 +54,11 @@ ExtractCenterlineTree(const Image<unsigned char, 3> *      paddedMask,
  * written into one label map combine) is cropped to its bounding box plus a one-voxel margin; the rest of the grid
  * is never visited. On it:
  *
- * 1. The distance D from each foreground voxel to the nearest background voxel centre, in mm, by
- *    itk::SignedMaurerDistanceMapImageFilter (the spacing honoured, so anisotropic voxels are measured right).
- * 2. The 26-connected components of the foreground, from a compact list of its voxels.
+ * 1. A compact list of the foreground voxels and the distance D from each to the nearest background voxel centre,
+ *    in mm (the spacing honoured, so anisotropic voxels are measured right): the exact Euclidean distance transform,
+ *    the one itk::SignedMaurerDistanceMapImageFilter gives (a test compares them), computed along only the lines
+ *    of the box that cross the foreground, so that its cost grows with the vessels rather than with their box.
+ * 2. The 26-connected components of the foreground, by a search over that list.
  * 3. Per component, the TEASAR skeleton (Sato et al., "TEASAR: tree-structure extraction algorithm for accurate
  *    and robust skeletons", Pacific Graphics 2000, as in kimimaro): one Dijkstra sweep from the root over the
  *    component, a unit of length through a voxel costing (Dmax / D)^2 (a minimal path of the speed D^2, which keeps
@@ -80,6 +82,9 @@ ExtractCenterlineTree(const Image<unsigned char, 3> *      paddedMask,
  * itk::CenterlineTree (LPS mm, a radius per point, ids >= 1); GetCenterlineTree() returns it after Update().
  * A segmentation without foreground, or without a component elongated enough to have a centerline (a speck, a
  * blob), raises an itk::ExceptionObject that says so.
+ *
+ * Memory: over the bounding box, the mask (1 byte a voxel) and the compact index (4 bytes); over the foreground,
+ * a few arrays. One thread: a 256^3 tree of 63 sections takes about 0.2 s (Testing/Benchmarks).
  *
  * \sa CenterlineTree, CPRDepthImageFilter
  * \ingroup VesselReformation
