@@ -19,6 +19,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
 
 #include <algorithm>
 #include <cmath>
@@ -376,6 +377,33 @@ TEST(CenterlineRoundTrip, VTKFilesInLPSCarryTheirSpace)
     EXPECT_EQ(report.FileSpace, CoordinateSpace::LPS) << name;
   }
   EXPECT_NE(vr::test::ReadTextFile(folder.File("lps.vtk")).find("SPACE=LPS"), std::string::npos);
+}
+
+TEST(CenterlineRoundTrip, VTKFilesNameTheRadiusAsVMTKAndSlicerDo)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const itk::CenterlineTree       tree = MakeYTree();
+  const std::string               path = folder.File("tree.vtp");
+  vr::WriteCenterlines(tree, path);
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPointData * points = reader->GetOutput()->GetPointData();
+  vtkDataArray * vmtk = points->GetArray("MaximumInscribedSphereRadius");
+  vtkDataArray * slicer = points->GetArray("Radius");
+  ASSERT_NE(vmtk, nullptr);
+  ASSERT_NE(slicer, nullptr);
+  ASSERT_EQ(vmtk->GetNumberOfTuples(), static_cast<vtkIdType>(tree.GetNumberOfPoints()));
+  std::size_t k = 0;
+  for (const auto & branch : tree.GetBranches())
+  {
+    for (const double radius : branch.Radii)
+    {
+      EXPECT_EQ(vmtk->GetTuple1(static_cast<vtkIdType>(k)), radius);
+      EXPECT_EQ(slicer->GetTuple1(static_cast<vtkIdType>(k)), radius);
+      ++k;
+    }
+  }
 }
 
 TEST(CenterlineRoundTrip, MarkupsCurvesPassThroughEveryWrittenPoint)
