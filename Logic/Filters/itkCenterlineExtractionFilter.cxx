@@ -5,6 +5,7 @@
 #include "itkCenterlineSkeleton.h"
 
 #include <algorithm>
+#include <sstream>
 #include <limits>
 
 namespace itk
@@ -14,6 +15,13 @@ namespace detail
 namespace
 {
 using MaskImageType = CenterlineForeground::MaskImageType;
+
+/** Throws the message as it is; the filter adds its name. */
+[[noreturn]] void
+Fail(const std::string & message)
+{
+  throw ExceptionObject(__FILE__, __LINE__, message, "ExtractCenterlineTree");
+}
 
 /** The foreground voxel nearest to \a point (LPS mm), and its distance. */
 std::pair<uint32_t, double>
@@ -65,17 +73,20 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
     const auto [voxel, gap] = NearestForegroundVoxel(foreground, paddedMask, settings.RootPoints[k]);
     if (gap > settings.RootPointTolerance)
     {
-      itkGenericExceptionMacro(<< "CenterlineExtractionFilter: root point " << k + 1 << " " << settings.RootPoints[k]
-                               << " (LPS, mm) lies " << gap
-                               << " mm from the nearest foreground voxel, more than the tolerance of "
-                               << settings.RootPointTolerance << " mm; is it in the wrong coordinate system?");
+      std::ostringstream message;
+      message << "root point " << k + 1 << " " << settings.RootPoints[k] << " (LPS, mm) lies " << gap
+              << " mm from the nearest foreground voxel, more than the tolerance of " << settings.RootPointTolerance
+              << " mm; is it in the wrong coordinate system?";
+      Fail(message.str());
     }
     int64_t & assigned = rootVoxel[componentOf[voxel]];
     if (assigned >= 0)
     {
-      itkGenericExceptionMacro(<< "CenterlineExtractionFilter: root point " << k + 1 << " " << settings.RootPoints[k]
-                               << " (LPS, mm) lies in the same connected component as an earlier root point; give "
-                                  "at most one per component");
+      std::ostringstream message;
+      message << "root point " << k + 1 << " " << settings.RootPoints[k]
+              << " (LPS, mm) lies in the same connected component as an earlier root point; give at most one per "
+                 "component";
+      Fail(message.str());
     }
     assigned = voxel;
   }
@@ -114,9 +125,9 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
   }
   if (outcome.Tree.GetNumberOfBranches() == 0)
   {
-    itkGenericExceptionMacro(<< "CenterlineExtractionFilter: no centerline: none of the segmentation's "
-                             << components.size() << " connected components (largest " << components.front().size()
-                             << " voxels) is elongated enough to have one; a vessel must be longer than it is wide");
+    Fail("no centerline: none of the segmentation's " + std::to_string(components.size()) +
+         " connected components (the largest " + std::to_string(components.front().size()) +
+         " voxels) is elongated enough to have one; a vessel must be longer than it is wide");
   }
   outcome.Tree.Validate();
   return outcome;

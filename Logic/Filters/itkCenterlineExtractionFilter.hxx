@@ -255,19 +255,29 @@ CenterlineExtractionFilter<TLabelImage>::GenerateData()
   settings.InvalidationScale = m_InvalidationScale;
   settings.PointSpacing = m_PointSpacing;
   settings.NumberOfWorkUnits = static_cast<int>(this->GetNumberOfWorkUnits());
-  detail::CenterlineExtractionOutcome outcome =
-    detail::ExtractCenterlineTree(mask,
-                                  settings,
-                                  [this](double fraction)
-                                  {
-                                    this->UpdateProgress(static_cast<float>(0.05 + 0.95 * fraction));
-                                    if (this->GetAbortGenerateData())
-                                    {
-                                      ProcessAborted aborted(__FILE__, __LINE__);
-                                      aborted.SetDescription("CenterlineExtractionFilter: aborted");
-                                      throw aborted;
-                                    }
-                                  });
+  const auto progress = [this](double fraction)
+  {
+    this->UpdateProgress(static_cast<float>(0.05 + 0.95 * fraction));
+    if (this->GetAbortGenerateData())
+    {
+      ProcessAborted aborted(__FILE__, __LINE__);
+      aborted.SetDescription("CenterlineExtractionFilter: aborted");
+      throw aborted;
+    }
+  };
+  detail::CenterlineExtractionOutcome outcome;
+  try
+  {
+    outcome = detail::ExtractCenterlineTree(mask, settings, progress);
+  }
+  catch (const ProcessAborted &)
+  {
+    throw;
+  }
+  catch (const ExceptionObject & exception)
+  {
+    itkExceptionMacro(<< exception.GetDescription()); // with the filter's name
+  }
   m_ParentBranchIds = std::move(outcome.ParentBranchIds);
   m_NumberOfComponents = outcome.NumberOfComponents;
   m_NumberOfComponentsWithoutCenterline = outcome.NumberOfComponentsWithoutCenterline;

@@ -648,6 +648,7 @@ TEST(CenterlineExtractionFilter, SegmentationWithoutAnElongatedComponentIsAClear
   auto filter = FilterType::New();
   filter->SetInput(image);
   const std::string message = ErrorOf([&] { filter->Update(); });
+  EXPECT_NE(message.find("CenterlineExtractionFilter(0x"), std::string::npos);
   EXPECT_NE(message.find("no centerline"), std::string::npos);
   EXPECT_NE(message.find("longer than it is wide"), std::string::npos);
 }
