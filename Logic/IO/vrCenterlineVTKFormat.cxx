@@ -133,8 +133,8 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
     vmtkRadius->SetName(VMTKRadiusArrayName);
     polyData->GetPointData()->AddArray(vmtkRadius);
   }
-  VTKErrorCapture              capture;
-  int                          written = 0;
+  VTKErrorCapture capture;
+  int             written = 0;
   if (IsXMLPath(finalPath))
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
