@@ -99,6 +99,24 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
                        ")");
     }
   }
+  else if (tag == "point")
+  {
+    // Three coordinates "x,y,z", as 3D Slicer passes a point (in the XML's coordinateSystem).
+    std::istringstream stream(value);
+    std::string        part;
+    int                count = 0;
+    bool               valid = !value.empty() && value.back() != ',';
+    while (valid && std::getline(stream, part, ','))
+    {
+      double number = 0.0;
+      valid = ParseWholeDouble(part, number);
+      ++count;
+    }
+    if (!valid || count != 3)
+    {
+      throw InputError(what + ": expected a point as three comma-separated numbers x,y,z (" + parameter.Label + ")");
+    }
+  }
   else if (tag == "string-enumeration")
   {
     for (const auto & element : parameter.Elements)
