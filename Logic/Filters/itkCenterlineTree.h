@@ -14,6 +14,7 @@ namespace itk
 /** \class CenterlineBranch
  * \brief One vessel section: an ordered polyline in LPS millimetres, an optional lumen radius per point (mm),
  * and an integer id >= 1 that labels the pixels it owns in the reformation.
+ * \ingroup VesselReformation
  */
 struct CenterlineBranch
 {
@@ -30,7 +31,7 @@ struct CenterlineBranch
     return !Radii.empty();
   }
 
-  /** Exact equality of id, points and radii. */
+  /** Same id, points and radii, exactly. */
   bool
   operator==(const CenterlineBranch & other) const
   {
@@ -51,6 +52,7 @@ struct CenterlineBranch
  * TubeTK's .tre files hold.
  *
  * \sa CPRDepthImageFilter, CPRViewGeometry
+ * \ingroup VesselReformation
  */
 class CenterlineTree
 {
@@ -103,7 +105,15 @@ public:
   void
   Validate() const;
 
-  /** Exact equality, branch by branch (what SimpleDataObjectDecorator<CenterlineTree>::Set compares). */
+  /** Tube spatial objects (one per branch, id = branch id) under a group; positions in world (LPS) space. */
+  GroupType::Pointer
+  ToSpatialObject() const;
+  /** Reads every itk::TubeSpatialObject below \a group, in world space. Radii are kept when any is non-zero. */
+  static CenterlineTree
+  FromSpatialObject(const GroupType * group);
+
+  /** Same branches in the same order, exactly (filters compare trees so that setting the same one again changes
+   * nothing). */
   bool
   operator==(const CenterlineTree & other) const
   {
@@ -114,13 +124,6 @@ public:
   {
     return !(*this == other);
   }
-
-  /** Tube spatial objects (one per branch, id = branch id) under a group; positions in world (LPS) space. */
-  GroupType::Pointer
-  ToSpatialObject() const;
-  /** Reads every itk::TubeSpatialObject below \a group, in world space. Radii are kept when any is non-zero. */
-  static CenterlineTree
-  FromSpatialObject(const GroupType * group);
 
 private:
   BranchContainer m_Branches;

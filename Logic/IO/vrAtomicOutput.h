@@ -12,6 +12,7 @@ namespace vr
  *
  * The temporary name keeps the final extension (".name.tmp-<pid>-<n>.nrrd") so ITK and VTK writers still
  * pick the format from it. Without Commit() the destructor removes the temporary file.
+ * \ingroup VesselReformation
  */
 class AtomicOutput
 {

@@ -18,6 +18,7 @@ namespace vr
  * the computation), written under a temporary name beside its final path, and renamed into place only when every
  * output has been written. On any error before CommitAll() the temporary files are removed: no output appears
  * and an existing file of the same name is left as it was.
+ * \ingroup VesselReformation
  */
 class StagedOutputs
 {

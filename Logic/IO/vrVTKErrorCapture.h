@@ -18,6 +18,7 @@ namespace vr
  * one that records what it is given, and Observe() adds ErrorEvent/WarningEvent observers to an algorithm (and,
  * for XML readers, to their parser), so a caller can turn the first message into a vr::InputError that names
  * the file. Captures are serialised by a process-wide lock because the output window is global.
+ * \ingroup VesselReformation
  */
 class VTKErrorCapture
 {
