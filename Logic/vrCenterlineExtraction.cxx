@@ -3,6 +3,7 @@
 
 #include "vrCoordinateFrames.h"
 #include "vrITKMessages.h"
+#include "vrParameterName.h"
 #include "vrInputError.h"
 
 #include "itkCenterlineExtractionFilter.h"
@@ -122,7 +123,8 @@ CenterlineExtractionParameters::Validate() const
   {
     if (!(std::isfinite(label) && label >= 0.0 && label == std::round(label) && label < 16777216.0))
     {
-      throw InputError("labels: " + FormatNumber(label) + " is not a label; labels are whole numbers from 0");
+      throw InputError("vessel labels: " + FormatNumber(label) + " is not a label; labels are whole numbers from 0",
+                       ParameterName::VesselLabels);
     }
   }
   for (std::size_t k = 0; k < RootPointsRAS.size(); ++k)
@@ -130,16 +132,19 @@ CenterlineExtractionParameters::Validate() const
     const auto & point = RootPointsRAS[k];
     if (!(std::isfinite(point[0]) && std::isfinite(point[1]) && std::isfinite(point[2])))
     {
-      throw InputError("root point " + std::to_string(k + 1) + ": its coordinates must be finite numbers");
+      throw InputError("root point " + std::to_string(k + 1) + ": its coordinates must be finite numbers",
+                       ParameterName::RootPoint);
     }
   }
   if (!(std::isfinite(RootPointTolerance) && RootPointTolerance > 0.0))
   {
-    throw InputError("root point tolerance " + FormatNumber(RootPointTolerance) + " mm: must be a number > 0");
+    throw InputError("root point tolerance = " + FormatNumber(RootPointTolerance) + " mm: must be finite and > 0",
+                     ParameterName::RootPointTolerance);
   }
   if (!(std::isfinite(MinimumBranchLength) && MinimumBranchLength >= 0.0))
   {
-    throw InputError("minimum branch length " + FormatNumber(MinimumBranchLength) + " mm: must be a number >= 0");
+    throw InputError("minimum branch length = " + FormatNumber(MinimumBranchLength) + " mm: must be finite and >= 0",
+                     ParameterName::MinimumBranchLength);
   }
 }
 
@@ -224,7 +229,7 @@ ReadSegmentation(const std::vector<std::string> & paths,
         what += (paths.size() == 1 ? " " : (k == 0 ? " " : "; ") + FileName(paths[k]) + ": ") + reports[k].Values;
       }
     }
-    throw InputError(what);
+    throw InputError(what, labels.empty() ? std::string() : ParameterName::VesselLabels);
   }
   return segmentation;
 }
@@ -251,7 +256,7 @@ ExtractCenterlineTree(const SegmentationMaskType *                              
       message << "root point " << k + 1 << " (" << ras[0] << ", " << ras[1] << ", " << ras[2] << ") RAS lies " << gap
               << " mm from the nearest vessel voxel of segmentation " << name << ", more than "
               << parameters.RootPointTolerance << " mm; is it in LPS (x and y negated)?";
-      throw InputError(message.str());
+      throw InputError(message.str(), ParameterName::RootPoint);
     }
   }
   using FilterType = itk::CenterlineExtractionFilter<SegmentationMaskType>;

@@ -8,6 +8,7 @@
 #include "vrCenterlineIO.h"
 #include "vrInputError.h"
 #include "vrModuleExport.h"
+#include "vrParameterName.h"
 #include "vrStagedOutputs.h"
 
 #include <chrono>
@@ -19,6 +20,13 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
+/** The logic's parameters by meaning -> this module's XML parameters. */
+const vr::CLIParameterMap ParameterFlags = {
+  { vr::ParameterName::VesselLabels, "labels" },
+  { vr::ParameterName::RootPoint, "root" },
+  { vr::ParameterName::MinimumBranchLength, "minimumBranchLength" },
+};
+
 /** "1,2,3" -> {1, 2, 3}; the parser has checked the numbers. */
 std::vector<double>
 NumbersOf(const std::string & text)
@@ -40,15 +48,6 @@ RunExtractCenterlines(const vr::CLIArguments & arguments, vr::CLIProgress & prog
   if (arguments.Given("labels"))
   {
     parameters.Labels = NumbersOf(arguments.String("labels"));
-    for (const double label : parameters.Labels)
-    {
-      if (label < 0.0)
-      {
-        std::ostringstream message;
-        message << "--labels " << arguments.String("labels") << ": label " << label << " is negative";
-        throw vr::InputError(message.str());
-      }
-    }
   }
   if (arguments.Given("root"))
   {
@@ -132,5 +131,6 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "ExtractCenterlines",
                           "Centerline tree with radii from a vessel segmentation",
-                          RunExtractCenterlines);
+                          RunExtractCenterlines,
+                          ParameterFlags);
 }

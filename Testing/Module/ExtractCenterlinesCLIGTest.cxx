@@ -408,7 +408,7 @@ TEST(ExtractCenterlinesModule, RootPointInRASTurnsTheTree)
   // The same numbers taken as LPS would lie 30 mm away: an error that asks about the frame.
   run = RunModule({ "--root", "15,15,4", (folder / "tube.nrrd").string(), (folder / "wrong.csv").string() });
   EXPECT_EQ(run.ExitCode, 1);
-  EXPECT_TRUE(Contains(run.Err, "root point 1 (15, 15, 4) RAS lies")) << run.Err;
+  EXPECT_TRUE(Contains(run.Err, "error: --root: root point 1 (15, 15, 4) RAS lies")) << run.Err;
   EXPECT_TRUE(Contains(run.Err, "is it in LPS")) << run.Err;
   EXPECT_FALSE(fs::exists(folder / "wrong.csv"));
 }
@@ -488,8 +488,9 @@ TEST_F(ExtractCenterlinesBadInput, NoForegroundInTheChosenLabels)
 {
   WriteTestImage(TwoVessels().GetPointer(), m_Folder / "labels.nrrd");
   ExpectRejected({ "--labels", "3,9", (m_Folder / "labels.nrrd").string() },
-                 { "labels.nrrd", "no voxel with label 3, 9", "the values present are 0 2 7" });
-  ExpectRejected({ "--labels", "-2", (m_Folder / "labels.nrrd").string() }, { "--labels", "-2", "negative" });
+                 { "--labels: ", "labels.nrrd", "no voxel with label 3, 9", "the values present are 0 2 7" });
+  ExpectRejected({ "--labels", "-2", (m_Folder / "labels.nrrd").string() },
+                 { "--labels: vessel labels: -2 is not a label" });
 }
 
 TEST_F(ExtractCenterlinesBadInput, TwoDimensionalImage)
