@@ -234,13 +234,11 @@ ReadSegmentation(const std::vector<std::string> & paths,
   return segmentation;
 }
 
-itk::CenterlineTree
-ExtractCenterlineTree(const SegmentationMaskType *                                            mask,
-                      const std::string &                                                     name,
-                      const CenterlineExtractionParameters &                                  parameters,
-                      const std::function<void(double fraction, const std::string & stage)> & progress,
-                      std::vector<std::string> &                                              warnings,
-                      CenterlineExtractionReport *                                            report)
+void
+ConfigureCenterlineExtraction(CenterlineExtractionFilterType *       filter,
+                              const SegmentationMaskType *           mask,
+                              const std::string &                    name,
+                              const CenterlineExtractionParameters & parameters)
 {
   parameters.Validate();
   // Root points: RAS in, LPS to the filter; one far from every vessel is said in the user's frame here.
@@ -254,17 +252,28 @@ ExtractCenterlineTree(const SegmentationMaskType *                              
       std::ostringstream message;
       const auto &       ras = parameters.RootPointsRAS[k];
       message << "root point " << k + 1 << " (" << ras[0] << ", " << ras[1] << ", " << ras[2] << ") RAS lies " << gap
-              << " mm from the nearest vessel voxel of segmentation " << name << ", more than "
-              << parameters.RootPointTolerance << " mm; is it in LPS (x and y negated)?";
+              << " mm from the nearest vessel voxel of " << name << ", more than " << parameters.RootPointTolerance
+              << " mm; is it in LPS (x and y negated)?";
       throw InputError(message.str(), ParameterName::RootPoint);
     }
   }
-  using FilterType = itk::CenterlineExtractionFilter<SegmentationMaskType>;
-  auto filter = FilterType::New();
-  filter->SetInput(mask);
   filter->SetRootPoints(rootPoints);
   filter->SetRootPointTolerance(parameters.RootPointTolerance);
   filter->SetMinimumBranchLength(parameters.MinimumBranchLength);
+}
+
+itk::CenterlineTree
+ExtractCenterlineTree(const SegmentationMaskType *                                            mask,
+                      const std::string &                                                     name,
+                      const CenterlineExtractionParameters &                                  parameters,
+                      const std::function<void(double fraction, const std::string & stage)> & progress,
+                      std::vector<std::string> &                                              warnings,
+                      CenterlineExtractionReport *                                            report)
+{
+  using FilterType = CenterlineExtractionFilterType;
+  auto filter = FilterType::New();
+  filter->SetInput(mask);
+  ConfigureCenterlineExtraction(filter, mask, name, parameters);
   if (progress)
   {
     FilterType * raw = filter;
@@ -277,12 +286,11 @@ ExtractCenterlineTree(const SegmentationMaskType *                              
   }
   catch (const itk::ExceptionObject & exception)
   {
-    throw InputError("segmentation " + name + ": " + detail::CondenseITKMessage(exception));
+    throw InputError(name + ": " + detail::CondenseITKMessage(exception));
   }
   if (filter->GetNumberOfComponentsWithoutCenterline() > 0)
   {
-    warnings.push_back("segmentation " + name + ": " +
-                       std::to_string(filter->GetNumberOfComponentsWithoutCenterline()) + " of its " +
+    warnings.push_back(name + ": " + std::to_string(filter->GetNumberOfComponentsWithoutCenterline()) + " of its " +
                        std::to_string(filter->GetNumberOfComponents()) +
                        " connected components are too small or too round to have a centerline; left out");
   }

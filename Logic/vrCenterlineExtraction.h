@@ -2,6 +2,7 @@
 #ifndef vrCenterlineExtraction_h
 #define vrCenterlineExtraction_h
 
+#include "itkCenterlineExtractionFilter.h"
 #include "itkCenterlineTree.h"
 #include "vrSegmentationIO.h"
 
@@ -78,9 +79,26 @@ struct CenterlineExtractionReport
   std::vector<int> ParentBranchIds;
 };
 
-/** Extracts the centerline tree of a vessel mask with itk::CenterlineExtractionFilter (the logic's one entry to it).
+/** The extraction filter the logic runs: on a vessel mask (1 = vessel). */
+using CenterlineExtractionFilterType = itk::CenterlineExtractionFilter<SegmentationMaskType>;
+
+/** Passes \a parameters to \a filter: root points converted from RAS to LPS (the one place this extraction meets
+ * RAS) and the minimum branch length; the filter's setters change nothing when a value is the same, so ITK reruns it
+ * only on a change. Throws vr::InputError naming the parameter when \a parameters are out of range or a root point
+ * lies farther than their tolerance from every vessel voxel of \a mask (said in RAS, with a hint about LPS).
+ * \param filter the filter, its input already \a mask.
+ * \param mask the vessel mask.
+ * \param name how messages name the segmentation ("segmentation aorta.nii.gz"). */
+void
+ConfigureCenterlineExtraction(CenterlineExtractionFilterType *       filter,
+                              const SegmentationMaskType *           mask,
+                              const std::string &                    name,
+                              const CenterlineExtractionParameters & parameters);
+
+/** Extracts the centerline tree of a vessel mask with itk::CenterlineExtractionFilter, once (the ExtractCenterlines
+ * module; VesselReformationLogic keeps a filter of its own).
  * \param mask 1 = vessel, LPS.
- * \param name how messages name the segmentation (its file names).
+ * \param name how messages name the segmentation ("segmentation aorta.nii.gz").
  * \param parameters root points (RAS; converted to LPS here, the one place this extraction meets RAS) and the
  *        minimum branch length (Labels are the reader's business and ignored here).
  * \param progress called with a fraction in [0, 1] and "centerlines"; may be empty; it may throw to cancel.

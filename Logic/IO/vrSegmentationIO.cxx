@@ -58,74 +58,13 @@ DescribeValues(const float * values, std::size_t count)
 } // namespace
 
 SegmentationMaskType::Pointer
-ReadSegmentationMask(const std::string & path, const std::vector<double> & labels, SegmentationReadReport * report)
+MakeSegmentationMask(const itk::Image<float, 3> * values,
+                     const std::vector<double> &  labels,
+                     const std::string &          where,
+                     SegmentationReadReport *     report)
 {
-  namespace fs = std::filesystem;
-  const std::string where = "segmentation " + path;
-  std::error_code   error;
-  if (!fs::exists(path, error))
-  {
-    throw InputError(where + ": no such file");
-  }
-  if (fs::is_directory(path, error))
-  {
-    throw InputError(where + ": is a folder; a segmentation is one image file (NIfTI, NRRD, MetaImage)");
-  }
-  if (fs::file_size(path, error) == 0 && !error)
-  {
-    throw InputError(where + ": is empty");
-  }
-  itk::ImageIOBase::Pointer io =
-    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
-  if (io.IsNull())
-  {
-    throw InputError(where + ": no ITK reader recognises this file (NIfTI, NRRD or MetaImage are expected)");
-  }
-  try
-  {
-    io->SetFileName(path);
-    io->ReadImageInformation();
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
-  }
-  // A NIfTI or NRRD with a third axis of one slice is still a 2D image.
-  const unsigned int dimensions = io->GetNumberOfDimensions();
-  if (dimensions < 3 || (dimensions == 3 && io->GetDimensions(2) < 2))
-  {
-    std::ostringstream size;
-    for (unsigned int axis = 0; axis < dimensions; ++axis)
-    {
-      size << (axis == 0 ? "" : " x ") << io->GetDimensions(axis);
-    }
-    throw InputError(where + ": a 2D image (" + size.str() + " pixels); a segmentation must be 3D");
-  }
-  if (dimensions > 3)
-  {
-    throw InputError(where + ": the image has " + std::to_string(dimensions) +
-                     " dimensions; a segmentation must be 3D");
-  }
-  if (io->GetNumberOfComponents() != 1)
-  {
-    throw InputError(where + ": " + std::to_string(io->GetNumberOfComponents()) +
-                     " components per voxel; a segmentation must be one label or value per voxel");
-  }
-  // float holds every label below 2^24 exactly, and level sets and probabilities as they are.
-  auto reader = itk::ImageFileReader<FloatVolume>::New();
-  reader->SetImageIO(io);
-  reader->SetFileName(path);
-  try
-  {
-    reader->Update();
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(where + ": the voxel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
-  }
-  const FloatVolume * values = reader->GetOutput();
-  const std::size_t   count = values->GetBufferedRegion().GetNumberOfPixels();
-  const float *       buffer = values->GetBufferPointer();
+  const std::size_t count = values->GetBufferedRegion().GetNumberOfPixels();
+  const float *     buffer = values->GetBufferPointer();
 
   bool  whole = true;
   float smallest = buffer[0];
@@ -210,5 +149,74 @@ ReadSegmentationMask(const std::string & path, const std::vector<double> & label
     *report = found;
   }
   return mask;
+}
+
+SegmentationMaskType::Pointer
+ReadSegmentationMask(const std::string & path, const std::vector<double> & labels, SegmentationReadReport * report)
+{
+  namespace fs = std::filesystem;
+  const std::string where = "segmentation " + path;
+  std::error_code   error;
+  if (!fs::exists(path, error))
+  {
+    throw InputError(where + ": no such file");
+  }
+  if (fs::is_directory(path, error))
+  {
+    throw InputError(where + ": is a folder; a segmentation is one image file (NIfTI, NRRD, MetaImage)");
+  }
+  if (fs::file_size(path, error) == 0 && !error)
+  {
+    throw InputError(where + ": is empty");
+  }
+  itk::ImageIOBase::Pointer io =
+    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+  if (io.IsNull())
+  {
+    throw InputError(where + ": no ITK reader recognises this file (NIfTI, NRRD or MetaImage are expected)");
+  }
+  try
+  {
+    io->SetFileName(path);
+    io->ReadImageInformation();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
+  }
+  // A NIfTI or NRRD with a third axis of one slice is still a 2D image.
+  const unsigned int dimensions = io->GetNumberOfDimensions();
+  if (dimensions < 3 || (dimensions == 3 && io->GetDimensions(2) < 2))
+  {
+    std::ostringstream size;
+    for (unsigned int axis = 0; axis < dimensions; ++axis)
+    {
+      size << (axis == 0 ? "" : " x ") << io->GetDimensions(axis);
+    }
+    throw InputError(where + ": a 2D image (" + size.str() + " pixels); a segmentation must be 3D");
+  }
+  if (dimensions > 3)
+  {
+    throw InputError(where + ": the image has " + std::to_string(dimensions) +
+                     " dimensions; a segmentation must be 3D");
+  }
+  if (io->GetNumberOfComponents() != 1)
+  {
+    throw InputError(where + ": " + std::to_string(io->GetNumberOfComponents()) +
+                     " components per voxel; a segmentation must be one label or value per voxel");
+  }
+  // float holds every label below 2^24 exactly, and level sets and probabilities as they are.
+  auto reader = itk::ImageFileReader<FloatVolume>::New();
+  reader->SetImageIO(io);
+  reader->SetFileName(path);
+  try
+  {
+    reader->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError(where + ": the voxel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
+  }
+  return MakeSegmentationMask(reader->GetOutput(), labels, where, report);
 }
 } // namespace vr

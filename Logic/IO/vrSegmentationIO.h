@@ -3,6 +3,7 @@
 #define vrSegmentationIO_h
 
 #include "itkImage.h"
+#include "vrImageTypes.h"
 
 #include <string>
 #include <vector>
@@ -11,7 +12,7 @@ namespace vr
 {
 /** A vessel mask on the grid of the segmentation it was read from (LPS: origin, spacing and direction kept):
  * 1 = vessel, 0 = background. */
-using SegmentationMaskType = itk::Image<unsigned char, 3>;
+using SegmentationMaskType = LabelMapVolumeType;
 
 /** What a segmentation file held and how it was read. */
 struct SegmentationReadReport
@@ -23,6 +24,20 @@ struct SegmentationReadReport
   /** The distinct values of the file (up to 12, ascending, e.g. "0 1 2"), or their range ("-3.2 to 48.1"). */
   std::string Values;
 };
+
+/** The vessel mask of segmentation values already in memory (a platform's label map node), by the rules of
+ * ReadSegmentationMask.
+ * \param values the segmentation's values (LPS; origin, spacing and direction are copied to the mask).
+ * \param labels the labels to take from a label map; empty: every non-zero voxel.
+ * \param where how messages name the segmentation ("segmentation aorta.nii.gz").
+ * \param report receives what it held; may be null.
+ * \return the mask. Throws vr::InputError beginning with \a where on NaN, values that are neither labels, a level
+ * set nor probabilities, or labels chosen in a level set or probability map. */
+SegmentationMaskType::Pointer
+MakeSegmentationMask(const itk::Image<float, 3> * values,
+                     const std::vector<double> &  labels,
+                     const std::string &          where,
+                     SegmentationReadReport *     report = nullptr);
 
 /** Reads a vessel segmentation file (NIfTI, NRRD, MetaImage, ...: what TotalSegmentator, nnU-Net, 3D Slicer and
  * VMTK write) as a mask on its own grid.

@@ -75,7 +75,7 @@ RunExtractCenterlines(const vr::CLIArguments & arguments, vr::CLIProgress & prog
   vr::CenterlineExtractionReport report;
   const itk::CenterlineTree      tree = vr::ExtractCenterlineTree(
     segmentation.Mask,
-    segmentation.Name,
+    "segmentation " + segmentation.Name,
     parameters,
     [&progress](double fraction, const std::string & stage)
     {
