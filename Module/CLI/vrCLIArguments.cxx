@@ -217,7 +217,26 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
   {
     return arguments;
   }
-  const auto expected = description.Positionals();
+  // A positional parameter whose XML gives a <default> may be left out: with fewer arguments than positional
+  // parameters, such ones are skipped, first ones first, and the arguments fill the others in order.
+  const auto                        declared = description.Positionals();
+  std::vector<const CLIParameter *> expected = declared;
+  const std::size_t                 optional = static_cast<std::size_t>(
+    std::count_if(declared.begin(), declared.end(), [](const CLIParameter * p) { return p->HasDefault; }));
+  if (positionals.size() < declared.size() && declared.size() - positionals.size() <= optional)
+  {
+    std::size_t skip = declared.size() - positionals.size();
+    expected.clear();
+    for (const CLIParameter * parameter : declared)
+    {
+      if (skip > 0 && parameter->HasDefault)
+      {
+        --skip;
+        continue;
+      }
+      expected.push_back(parameter);
+    }
+  }
   if (positionals.size() > expected.size())
   {
     throw InputError("unexpected argument \"" + positionals[expected.size()] + "\": this module takes " +
@@ -276,7 +295,7 @@ CLIArguments::Usage(const CLIModuleDescription & description, const std::string 
   usage << description.Title << "\n\nUsage: " << program << " [flags]";
   for (const CLIParameter * positional : description.Positionals())
   {
-    usage << " <" << positional->Name << ">";
+    usage << (positional->HasDefault ? " [<" : " <") << positional->Name << (positional->HasDefault ? ">]" : ">");
   }
   usage << "\n\nArguments:\n";
   for (const CLIParameter * positional : description.Positionals())

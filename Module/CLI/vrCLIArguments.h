@@ -24,9 +24,11 @@ public:
   /** Parses argv[1..] against \a description.
    *
    * Flags are "--flag value" or "--flag=value"; a boolean parameter is a bare flag (true when present, as 3D Slicer
-   * passes it). Positional parameters fill the indices in order. Values are checked by type: whole numbers for
-   * integer, finite numbers for float and double, comma lists of numbers for the vectors, three numbers for a point,
-   * one of the elements (any case) for string-enumeration; numbers must lie within the XML's constraints.
+   * passes it). Positional parameters fill the indices in order; one whose XML gives a <default> may be left out
+   * (with fewer arguments than indices, such ones are skipped, first ones first), as when another flag stands in
+   * for it. Values are checked by type: whole numbers for integer, finite numbers for float and double, comma lists of
+   * numbers for the vectors, three numbers for a point, one of the elements (any case) for string-enumeration;
+   * numbers must lie within the XML's constraints.
    *
    * \param description the module's description (kept by reference).
    * \param argc, argv the command line; argv[0] is the program.

@@ -505,6 +505,7 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
                                  "slabThickness",
                                  "slabMode",
                                  "centerlineSpace",
+                                 "segmentation",
                                  "outputDepth",
                                  "outputRelaxedDepth",
                                  "outputMask",
