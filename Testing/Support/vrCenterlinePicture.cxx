@@ -47,9 +47,9 @@ WriteCenterlinePicture(const itk::Image<unsigned char, 3> * segmentation,
   const auto &       spacing = segmentation->GetSpacing();
   std::array<int, 3> order{ 0, 1, 2 };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return high[a] - low[a] > high[b] - low[b]; });
-  // At least 800 pixels down, at most 2000: small segmentations are magnified, large ones shown whole.
+  // 1600 pixels down, whatever the segmentation's size.
   const double extent = high[order[0]] - low[order[0]] + 10.0;
-  const double pixel = std::max(extent / 2000.0, std::min({ spacing[0], spacing[1], spacing[2], extent / 800.0 }));
+  const double pixel = extent / 1600.0;
   const int    rowAxis = order[0];    // down the picture
   const int    columnAxis = order[1]; // across
   const double margin = 5.0;
