@@ -48,11 +48,11 @@ WriteCenterlinePicture(const itk::Image<unsigned char, 3> * segmentation,
   std::array<int, 3> order{ 0, 1, 2 };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return high[a] - low[a] > high[b] - low[b]; });
   // 1600 pixels down, whatever the segmentation's size.
-  const double extent = high[order[0]] - low[order[0]] + 10.0;
-  const double pixel = extent / 1600.0;
-  const int    rowAxis = order[0];    // down the picture
-  const int    columnAxis = order[1]; // across
-  const double margin = 5.0;
+  const double       extent = high[order[0]] - low[order[0]] + 10.0;
+  const double       pixel = extent / 1600.0;
+  const int          rowAxis = order[0];    // down the picture
+  const int          columnAxis = order[1]; // across
+  const double       margin = 5.0;
   const unsigned int width = static_cast<unsigned int>((high[columnAxis] - low[columnAxis] + 2 * margin) / pixel) + 1;
   const unsigned int height = static_cast<unsigned int>((high[rowAxis] - low[rowAxis] + 2 * margin) / pixel) + 1;
   std::vector<unsigned> counts(static_cast<std::size_t>(width) * height, 0);
