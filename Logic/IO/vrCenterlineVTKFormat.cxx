@@ -43,7 +43,7 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
   vtkSmartPointer<vtkPolyData> polyData;
   CoordinateSpace              headerSpace = CoordinateSpace::Auto;
   {
-    VTKErrorCapture capture;
+    detail::VTKErrorCapture capture;
     if (HasExtension(path, ".vtp"))
     {
       report.Format = "VTK XML PolyData (.vtp)";
@@ -126,8 +126,8 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
     vmtkRadius->SetName(VMTKRadiusArrayName);
     polyData->GetPointData()->AddArray(vmtkRadius);
   }
-  VTKErrorCapture capture;
-  int             written = 0;
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
   if (HasExtension(finalPath, ".vtp"))
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();

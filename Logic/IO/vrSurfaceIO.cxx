@@ -47,9 +47,9 @@ WriteSurfaceIn(vtkPolyData * surface, const std::string & path, CoordinateSpace 
     marked->SetFieldData(fieldData);
   }
 
-  AtomicOutput    output(path);
-  VTKErrorCapture capture;
-  int             written = 0;
+  AtomicOutput            output(path);
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
   if (xml)
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
