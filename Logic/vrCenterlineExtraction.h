@@ -69,7 +69,10 @@ ReadSegmentation(const std::vector<std::string> & paths,
                  const std::vector<double> &      labels,
                  std::vector<std::string> &       warnings);
 
-/** What an extraction found. */
+/** \class CenterlineExtractionReport
+ * \brief What an extraction found.
+ * \ingroup VesselReformation
+ */
 struct CenterlineExtractionReport
 {
   /** Connected components of the vessel mask, and those too small or round to have a centerline. */

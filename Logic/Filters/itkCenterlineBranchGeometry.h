@@ -13,7 +13,10 @@ namespace itk
 {
 namespace detail
 {
-/** Settings of the smooth centerline made from a voxel skeleton. Lengths in mm. */
+/** \class BranchGeometryParameters
+ * \brief Settings of the smooth centerline made from a voxel skeleton. Lengths in mm.
+ * \ingroup VesselReformation
+ */
 struct BranchGeometryParameters
 {
   /** Distance between consecutive output points along a branch (mm), > 0. */

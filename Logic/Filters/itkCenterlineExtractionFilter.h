@@ -14,7 +14,10 @@ namespace itk
 {
 namespace detail
 {
-/** What the non-template part of CenterlineExtractionFilter needs (see the filter's parameters). */
+/** \class CenterlineExtractionSettings
+ * \brief What the non-template part of CenterlineExtractionFilter needs (see the filter's parameters).
+ * \ingroup VesselReformation
+ */
 struct CenterlineExtractionSettings
 {
   std::vector<Point<double, 3>> RootPoints;
@@ -26,7 +29,10 @@ struct CenterlineExtractionSettings
   int                           NumberOfWorkUnits{ 1 };
 };
 
-/** What it found. */
+/** \class CenterlineExtractionOutcome
+ * \brief What it found: the tree, each branch's parent, the components.
+ * \ingroup VesselReformation
+ */
 struct CenterlineExtractionOutcome
 {
   CenterlineTree   Tree;

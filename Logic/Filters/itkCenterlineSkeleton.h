@@ -13,7 +13,10 @@ namespace itk
 {
 namespace detail
 {
-/** Settings of the TEASAR skeleton (Sato et al. 2000). Lengths in mm, ratios dimensionless. */
+/** \class SkeletonParameters
+ * \brief Settings of the TEASAR skeleton (Sato et al. 2000). Lengths in mm, ratios dimensionless.
+ * \ingroup VesselReformation
+ */
 struct SkeletonParameters
 {
   /** The cost of a unit of path length through a voxel is (Dmax / D)^PenaltyExponent, D its distance to the
@@ -34,8 +37,11 @@ struct SkeletonParameters
   double MinimumBranchLength{ 0.0 };
 };
 
-/** A centerline tree as chains of foreground voxels. Each branch runs from its parent's end (the junction voxel,
- * shared) or the root to a junction or a free end. */
+/** \class SkeletonTree
+ * \brief A centerline tree as chains of foreground voxels. Each branch runs from its parent's end (the junction
+ * voxel, shared) or the root to a junction or a free end.
+ * \ingroup VesselReformation
+ */
 struct SkeletonTree
 {
   struct Branch

@@ -14,7 +14,10 @@ namespace vr
  * 1 = vessel, 0 = background. */
 using SegmentationMaskType = LabelMapVolumeType;
 
-/** What a segmentation file held and how it was read. */
+/** \class SegmentationReadReport
+ * \brief What a segmentation file held and how it was read.
+ * \ingroup VesselReformation
+ */
 struct SegmentationReadReport
 {
   /** "label map", "level set (inside where < 0)" or "probability map (inside where >= 0.5)". */
