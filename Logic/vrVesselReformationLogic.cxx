@@ -698,18 +698,24 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
                                         const MaskImageType *         mask,
                                         const ReformationParameters & parameters,
                                         const ProgressCallback &      progress,
-                                        std::vector<std::string> &    warnings)
+                                        std::vector<std::string> &    warnings,
+                                        std::string *                 backendUsed)
 {
   parameters.Validate();
   if (depth == nullptr)
   {
     throw InputError("relaxation: no depth image given");
   }
-  std::string notice;
-  auto        filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice);
+  std::string  notice;
+  RelaxBackend chosen = RelaxBackend::CPU;
+  auto         filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
   if (!notice.empty())
   {
     warnings.push_back(notice);
+  }
+  if (backendUsed != nullptr)
+  {
+    *backendUsed = ToString(chosen);
   }
   filter->SetInput(depth);
   filter->SetFixedMask(mask);

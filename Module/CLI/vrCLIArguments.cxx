@@ -124,6 +124,24 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   }
   return value;
 }
+/** Whether \a value is a valid value of one of the values the module returns: what a host passes after the positional
+ * arguments when it reads return parameters as index-1000 parameters. */
+bool
+IsValueOfAReturnParameter(const CLIModuleDescription & description, const std::string & value)
+{
+  for (const CLIParameter * parameter : description.ReturnValues())
+  {
+    try
+    {
+      CheckedValue(*parameter, value);
+      return true;
+    }
+    catch (const InputError &)
+    {
+    }
+  }
+  return false;
+}
 } // namespace
 
 CLIArguments
@@ -190,6 +208,15 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
       arguments.ProcessInformation = reinterpret_cast<void *>(static_cast<std::uintptr_t>(number));
       continue;
     }
+    if (flag == "returnparameterfile")
+    {
+      arguments.ReturnParameterFile = takeValue("--returnparameterfile");
+      if (arguments.ReturnParameterFile.empty())
+      {
+        throw InputError("--returnparameterfile: the file name is empty");
+      }
+      continue;
+    }
     const CLIParameter * parameter = description.FindFlag(flag);
     if (parameter == nullptr)
     {
@@ -207,6 +234,10 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
     return arguments;
   }
   const auto expected = description.Positionals();
+  if (positionals.size() == expected.size() + 1 && IsValueOfAReturnParameter(description, positionals.back()))
+  {
+    positionals.pop_back();
+  }
   if (positionals.size() > expected.size())
   {
     throw InputError("unexpected argument \"" + positionals[expected.size()] + "\": this module takes " +
@@ -295,10 +326,22 @@ CLIArguments::Usage(const CLIModuleDescription & description, const std::string 
     }
     usage << "  " << parameter.Label << ". " << parameter.Description << "\n";
   }
+  const auto returned = description.ReturnValues();
+  if (!returned.empty())
+  {
+    usage << "\nReturned values (to --returnparameterfile as name = value lines, else as <filter-result> lines when "
+             "stdout is not a terminal):\n";
+    for (const CLIParameter * parameter : returned)
+    {
+      usage << "  " << parameter->Name << " <" << parameter->Tag << ">  " << parameter->Label << ". "
+            << parameter->Description << "\n";
+    }
+  }
   usage << "\nAlso:\n"
         << "  --xml  print the Slicer Execution Model description and exit\n"
         << "  --help  print this text and exit\n"
-        << "  --processinformationaddress <address>  used by 3D Slicer when it runs the module in-process\n";
+        << "  --processinformationaddress <address>  used by 3D Slicer when it runs the module in-process\n"
+        << "  --returnparameterfile <file>  write the returned values there, one name = value line each (3D Slicer)\n";
   return usage.str();
 }
 } // namespace vr

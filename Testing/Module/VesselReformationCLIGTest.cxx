@@ -372,10 +372,12 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   EXPECT_EQ(acknowledgements, vr::ModuleDescription::Acknowledgements);
   EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
 
-  // Inside a parameter: name, longflag or index, label, description, default, (elements,) channel, constraints.
-  const std::map<std::string, int> rank = { { "name", 0 },    { "longflag", 1 },    { "index", 1 },
-                                            { "label", 2 },   { "description", 3 }, { "default", 4 },
-                                            { "element", 5 }, { "channel", 6 },     { "constraints", 7 } };
+  // Inside a parameter, CTK's schema (paramType and its extensions) fixes the order: name, longflag or index,
+  // description, label, default, channel, then the type's own elements or constraints. DESIGN 3.8 had label before
+  // description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the whole schema with xmllint.
+  const std::map<std::string, int> rank = { { "name", 0 },        { "longflag", 1 }, { "index", 1 },
+                                            { "description", 2 }, { "label", 3 },    { "default", 4 },
+                                            { "channel", 5 },     { "element", 6 },  { "constraints", 6 } };
   std::set<std::string>            names;
   for (const auto & parameter : ParametersOf(root))
   {
@@ -389,7 +391,15 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
       previous = rank.at(child);
     }
     const bool isFile = parameter.Tag == "image" || parameter.Tag == "file" || parameter.Tag == "geometry";
-    EXPECT_EQ(isFile, !parameter.Channel.empty()) << parameter.Name << ": files and only files have a channel";
+    // A value the module returns: an output with CTK's index 1000 (the flavour --xml prints).
+    const bool isReturned = parameter.Index == "1000";
+    EXPECT_EQ(isFile || isReturned, !parameter.Channel.empty())
+      << parameter.Name << ": files and returned values, and nothing else, have a channel";
+    if (isReturned)
+    {
+      EXPECT_EQ(parameter.Channel, "output") << parameter.Name;
+      EXPECT_FALSE(parameter.Default.empty()) << parameter.Name << ": a host passes the value of index 1000";
+    }
     if (parameter.Tag == "string-enumeration")
     {
       EXPECT_FALSE(parameter.Elements.empty()) << parameter.Name;
@@ -448,7 +458,7 @@ ExpectFlagsAreExactlyTheXMLs(const std::string & executable, const std::set<std:
   const auto        xmlFlags = FlagsOfXML(xml);
   EXPECT_EQ(xmlFlags, expectedFlags);
 
-  // The usage lists exactly the XML's flags and the three every Slicer module takes.
+  // The usage lists exactly the XML's flags and the four every Slicer module takes.
   const RunResult help = RunProgram({ executable, "--help" });
   ASSERT_EQ(help.ExitCode, 0) << help.Err;
   std::set<std::string> helpFlags;
@@ -459,7 +469,7 @@ ExpectFlagsAreExactlyTheXMLs(const std::string & executable, const std::set<std:
     helpFlags.insert((*it)[2]);
   }
   std::set<std::string> withReserved = xmlFlags;
-  withReserved.insert({ "xml", "help", "processinformationaddress" });
+  withReserved.insert({ "xml", "help", "processinformationaddress", "returnparameterfile" });
   EXPECT_EQ(helpFlags, withReserved) << help.Out;
 
   // The parser accepts each XML flag (it then misses the positional arguments), and nothing else.
