@@ -51,7 +51,8 @@ RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error
 {
   if (dynamic_cast<const itk::ProcessAborted *>(&error) != nullptr)
   {
-    throw Cancelled(stage + ": cancelled");
+    // The filter says how far it got ("aborted after 2801 of 200000 iterations").
+    throw Cancelled(stage + ": cancelled (" + error.GetDescription() + ")");
   }
   throw InputError(stage + ": " + error.GetDescription());
 }

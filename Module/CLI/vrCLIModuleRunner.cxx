@@ -125,6 +125,7 @@ RunCLIModule(int                     argc,
   catch (const Cancelled & cancelled)
   {
     std::cerr << name << ": " << cancelled.what() << std::endl;
+    status = ExitCodeCancelled;
   }
   catch (const std::bad_alloc &)
   {
