@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrSurfaceIO.h"
+#include "vrText.h"
 
 #include "vrAtomicOutput.h"
 #include "vrInputError.h"
@@ -22,15 +23,6 @@ namespace vr
 {
 namespace
 {
-bool
-HasExtension(const std::string & path, const std::string & extension)
-{
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  return lower.size() >= extension.size() &&
-         lower.compare(lower.size() - extension.size(), extension.size(), extension) == 0;
-}
-
 /** The space a 3D Slicer marker names: "LPS" or "RAS" anywhere in \a text (Slicer matches substrings too). */
 CoordinateSpace
 SpaceNamedIn(const std::string & text)
@@ -74,9 +66,9 @@ WriteSurfaceIn(vtkPolyData * surface, const std::string & path, CoordinateSpace 
     marked->SetFieldData(fieldData);
   }
 
-  AtomicOutput    output(path);
-  VTKErrorCapture capture;
-  int             written = 0;
+  AtomicOutput            output(path);
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
   if (xml)
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
@@ -140,7 +132,7 @@ ReadSurface(const std::string & path, CoordinateSpace pointSpace, CoordinateSpac
   }
   vtkSmartPointer<vtkPolyData> surface;
   CoordinateSpace              marked = CoordinateSpace::Auto;
-  VTKErrorCapture              capture;
+  detail::VTKErrorCapture      capture;
   if (xml)
   {
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();

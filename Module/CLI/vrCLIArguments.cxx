@@ -17,13 +17,6 @@ namespace vr
 namespace
 {
 std::string
-Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::string
 Ordinal(int index)
 {
   static const char * names[] = { "first", "second", "third", "fourth", "fifth" };
@@ -97,7 +90,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   {
     for (const auto & element : parameter.Elements)
     {
-      if (Lower(element) == Lower(value))
+      if (ToLower(element) == ToLower(value))
       {
         return element;
       }
@@ -111,7 +104,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   }
   else if (tag == "boolean")
   {
-    const std::string key = Lower(value);
+    const std::string key = ToLower(value);
     if (key != "true" && key != "false")
     {
       throw InputError(what + ": use true or false, or the bare flag for true");
