@@ -10,6 +10,7 @@
 #include "vrModuleRuns.h"
 #include "vrSlicerMemoryImageIO.h"
 #include "vrSurfaceIO.h"
+#include "vrText.h"
 #include "vrTestFiles.h"
 #include "vrVolumeIO.h"
 
@@ -529,19 +530,12 @@ class SlicerModels : public LinearScene
 {
 };
 
+/** \return \a text as a number, NaN when all of it is not one. */
 double
 Number(const std::string & text)
 {
-  std::size_t used = 0;
-  double      value = std::nan("");
-  try
-  {
-    value = std::stod(text, &used);
-  }
-  catch (const std::exception &)
-  {
-  }
-  return used == text.size() ? value : std::nan("");
+  double value = 0.0;
+  return vr::ParseWholeDouble(text, value) ? value : std::nan("");
 }
 
 TEST_F(ReturnValues, ReformationWritesOneLinePerDeclaredOutputParameterAsSlicerReadsThem)
