@@ -53,7 +53,8 @@ RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error
 {
   if (dynamic_cast<const itk::ProcessAborted *>(&error) != nullptr)
   {
-    throw Cancelled(stage + ": cancelled");
+    // The filter says how far it got ("aborted after 2801 of 200000 iterations").
+    throw Cancelled(stage + ": cancelled (" + error.GetDescription() + ")");
   }
   throw InputError(stage + ": " + error.GetDescription());
 }
@@ -996,18 +997,24 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
                                         const MaskImageType *         mask,
                                         const ReformationParameters & parameters,
                                         const ProgressCallback &      progress,
-                                        std::vector<std::string> &    warnings)
+                                        std::vector<std::string> &    warnings,
+                                        std::string *                 backendUsed)
 {
   parameters.Validate();
   if (depth == nullptr)
   {
     throw InputError("relaxation: no depth image given");
   }
-  std::string notice;
-  auto        filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice);
+  std::string  notice;
+  RelaxBackend chosen = RelaxBackend::CPU;
+  auto         filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
   if (!notice.empty())
   {
     warnings.push_back(notice);
+  }
+  if (backendUsed != nullptr)
+  {
+    *backendUsed = ToString(chosen);
   }
   filter->SetInput(depth);
   filter->SetFixedMask(mask);

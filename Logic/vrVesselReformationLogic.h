@@ -251,13 +251,15 @@ public:
    * \param parameters Relaxation, Anisotropy, Iterations, Backend and OpenCLDevice are used.
    * \param progress receives progress; may be empty.
    * \param warnings receives the backend notice, if any.
+   * \param backendUsed if not null, receives the backend that relaxed ("cpu" or "opencl").
    * \return the relaxed depth, with the input's metadata. Throws vr::InputError. */
   static DepthImageType::Pointer
   RelaxDepthImage(const DepthImageType *        depth,
                   const MaskImageType *         mask,
                   const ReformationParameters & parameters,
                   const ProgressCallback &      progress,
-                  std::vector<std::string> &    warnings);
+                  std::vector<std::string> &    warnings,
+                  std::string *                 backendUsed = nullptr);
 
   /** \param size a view's size in pixels.
    * \return the bytes the reformation of that view needs: depth, mask, labels, relaxation buffers, both CPRs,

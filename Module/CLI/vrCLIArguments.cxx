@@ -135,6 +135,24 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   }
   return value;
 }
+/** Whether \a value is a valid value of one of the values the module returns: what a host passes after the positional
+ * arguments when it reads return parameters as index-1000 parameters. */
+bool
+IsValueOfAReturnParameter(const CLIModuleDescription & description, const std::string & value)
+{
+  for (const CLIParameter * parameter : description.ReturnValues())
+  {
+    try
+    {
+      CheckedValue(*parameter, value);
+      return true;
+    }
+    catch (const InputError &)
+    {
+    }
+  }
+  return false;
+}
 } // namespace
 
 CLIArguments
@@ -201,6 +219,15 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
       arguments.ProcessInformation = reinterpret_cast<void *>(static_cast<std::uintptr_t>(number));
       continue;
     }
+    if (flag == "returnparameterfile")
+    {
+      arguments.ReturnParameterFile = takeValue("--returnparameterfile");
+      if (arguments.ReturnParameterFile.empty())
+      {
+        throw InputError("--returnparameterfile: the file name is empty");
+      }
+      continue;
+    }
     const CLIParameter * parameter = description.FindFlag(flag);
     if (parameter == nullptr)
     {
@@ -217,9 +244,14 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
   {
     return arguments;
   }
+  // 3D Slicer appends the value of a returned parameter as one more argument; it is not an input.
+  const auto declared = description.Positionals();
+  if (positionals.size() == declared.size() + 1 && IsValueOfAReturnParameter(description, positionals.back()))
+  {
+    positionals.pop_back();
+  }
   // A positional parameter whose XML gives a <default> may be left out: with fewer arguments than positional
   // parameters, such ones are skipped, first ones first, and the arguments fill the others in order.
-  const auto                        declared = description.Positionals();
   std::vector<const CLIParameter *> expected = declared;
   const std::size_t                 optional = static_cast<std::size_t>(
     std::count_if(declared.begin(), declared.end(), [](const CLIParameter * p) { return p->HasDefault; }));
@@ -325,10 +357,22 @@ CLIArguments::Usage(const CLIModuleDescription & description, const std::string 
     }
     usage << "  " << parameter.Label << ". " << parameter.Description << "\n";
   }
+  const auto returned = description.ReturnValues();
+  if (!returned.empty())
+  {
+    usage << "\nReturned values (to --returnparameterfile as name = value lines, else as <filter-result> lines when "
+             "stdout is not a terminal):\n";
+    for (const CLIParameter * parameter : returned)
+    {
+      usage << "  " << parameter->Name << " <" << parameter->Tag << ">  " << parameter->Label << ". "
+            << parameter->Description << "\n";
+    }
+  }
   usage << "\nAlso:\n"
         << "  --xml  print the Slicer Execution Model description and exit\n"
         << "  --help  print this text and exit\n"
-        << "  --processinformationaddress <address>  used by 3D Slicer when it runs the module in-process\n";
+        << "  --processinformationaddress <address>  used by 3D Slicer when it runs the module in-process\n"
+        << "  --returnparameterfile <file>  write the returned values there, one name = value line each (3D Slicer)\n";
   return usage.str();
 }
 } // namespace vr

@@ -55,6 +55,15 @@ FileName(const std::string & path)
   return std::filesystem::path(path).filename().string();
 }
 
+/** \return \a seconds in milliseconds with three decimals, as the return values give times. */
+std::string
+Milliseconds(double seconds)
+{
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(3) << 1e3 * seconds;
+  return text.str();
+}
+
 vr::ReformationParameters
 ParametersFrom(const vr::CLIArguments & arguments)
 {
@@ -197,7 +206,11 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
         [&](const std::string & path)
         { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.UnfilteredCPR), path); });
   write("outputSurface",
-        [&](const std::string & path) { vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS); });
+        [&](const std::string & path)
+        {
+          // As 3D Slicer writes models: LPS, the space recorded in the file.
+          vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+        });
   write("outputPNG",
         [&](const std::string & path)
         {
@@ -208,8 +221,17 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
         });
   staged.CommitAll();
 
-  const auto &       size = results.View.GetSize();
-  const auto &       times = results.Times;
+  const auto & size = results.View.GetSize();
+  const auto & times = results.Times;
+  progress.SetReturnValue("backendUsed", results.RelaxBackendUsed);
+  progress.SetReturnValue("imageSize", std::to_string(size[0]) + "," + std::to_string(size[1]));
+  progress.SetReturnValue("numberOfBranches", std::to_string(tree.GetNumberOfBranches()));
+  progress.SetReturnValue("conversionTime", Milliseconds(times.Conversion));
+  progress.SetReturnValue("depthTime", Milliseconds(times.Depth));
+  progress.SetReturnValue("relaxTime", Milliseconds(times.Relax));
+  progress.SetReturnValue("resampleTime", Milliseconds(times.Resample));
+  progress.SetReturnValue("surfaceTime", Milliseconds(times.Surface));
+
   std::ostringstream summary;
   const std::size_t  branches = logic.GetDepthFilter()->GetCenterlineTree().GetNumberOfBranches();
   summary << "VesselReformation: " << branches << " branches (" << source << "), view " << size[0] << " x " << size[1]
