@@ -68,6 +68,12 @@ FlipRASLPS(const itk::CenterlineTree & tree)
 }
 } // namespace detail
 
+void
+CheckCenterlineFileName(const std::string & path, const std::string & role)
+{
+  FormatOf(path, role);
+}
+
 itk::CenterlineTree
 ReadCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadReport * report)
 {

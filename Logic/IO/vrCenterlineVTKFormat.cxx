@@ -5,6 +5,8 @@
 #include "vrInputError.h"
 #include "vrVTKErrorCapture.h"
 
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
@@ -115,8 +117,17 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
 {
   const CoordinateSpace        used = space == CoordinateSpace::LPS ? CoordinateSpace::LPS : CoordinateSpace::RAS;
   vtkSmartPointer<vtkPolyData> polyData = PolyDataFromCenterlineTree(tree, used);
-  detail::VTKErrorCapture      capture;
-  int                          written = 0;
+  // The radius under VMTK's name as well as 3D Slicer's: vmtk scripts (vmtkcenterlineresampling,
+  // vmtkbranchextractor, ...) look for MaximumInscribedSphereRadius, 3D Slicer for Radius.
+  if (vtkDataArray * radius = polyData->GetPointData()->GetArray(SlicerRadiusArrayName))
+  {
+    auto vmtkRadius = vtkSmartPointer<vtkDoubleArray>::New();
+    vmtkRadius->DeepCopy(radius);
+    vmtkRadius->SetName(VMTKRadiusArrayName);
+    polyData->GetPointData()->AddArray(vmtkRadius);
+  }
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
   if (HasExtension(finalPath, ".vtp"))
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();

@@ -83,9 +83,10 @@ ReadParameter(vtkXMLDataElement * element)
       parameter.Maximum = std::strtod(ChildText(child, "maximum").c_str(), nullptr);
     }
   }
-  if (parameter.Name.empty() || (parameter.LongFlag.empty() && parameter.Index < 0))
+  if (parameter.Name.empty() || (parameter.LongFlag.empty() && parameter.Index < 0 && !parameter.IsReturnValue()))
   {
-    throw std::logic_error("module XML: a <" + parameter.Tag + "> parameter needs a name and a longflag or index");
+    throw std::logic_error("module XML: a <" + parameter.Tag +
+                           "> parameter needs a name and a longflag or index, unless it is an output it returns");
   }
   return parameter;
 }
@@ -163,7 +164,7 @@ CLIModuleDescription::Positionals() const
   std::vector<const CLIParameter *> positionals;
   for (const auto & parameter : Parameters)
   {
-    if (parameter.Index >= 0)
+    if (parameter.Index >= 0 && !parameter.IsReturnValue())
     {
       positionals.push_back(&parameter);
     }
@@ -172,5 +173,19 @@ CLIModuleDescription::Positionals() const
             positionals.end(),
             [](const CLIParameter * a, const CLIParameter * b) { return a->Index < b->Index; });
   return positionals;
+}
+
+std::vector<const CLIParameter *>
+CLIModuleDescription::ReturnValues() const
+{
+  std::vector<const CLIParameter *> values;
+  for (const auto & parameter : Parameters)
+  {
+    if (parameter.IsReturnValue())
+    {
+      values.push_back(&parameter);
+    }
+  }
+  return values;
 }
 } // namespace vr
