@@ -80,10 +80,23 @@ ReformationParameters::Validate() const
     parameter = ParameterName::Relaxation;
     problem << "relaxation w = " << Relaxation << ": must be in [0, 1]";
   }
-  else if (!(std::isfinite(Anisotropy) && Anisotropy >= 0.0))
+  else if (JumpThreshold && Anisotropy)
+  {
+    // Two parametrisations of one kernel: which one the user meant is not for the logic to guess.
+    parameter = ParameterName::JumpThreshold;
+    problem << "both the " << ParameterName::JumpThreshold << " J = " << *JumpThreshold << " mm and the "
+            << ParameterName::Anisotropy << " a = " << *Anisotropy
+            << " mm^-2 are set; they are two forms of one range kernel (a = 1/J^2): set one";
+  }
+  else if (JumpThreshold && !(std::isfinite(*JumpThreshold) && *JumpThreshold > 0.0))
+  {
+    parameter = ParameterName::JumpThreshold;
+    problem << "jump threshold J = " << *JumpThreshold << " mm: must be finite and > 0";
+  }
+  else if (Anisotropy && !(std::isfinite(*Anisotropy) && *Anisotropy >= 0.0))
   {
     parameter = ParameterName::Anisotropy;
-    problem << "anisotropy a = " << Anisotropy << " mm^-2: must be finite and >= 0";
+    problem << "anisotropy a = " << *Anisotropy << " mm^-2: must be finite and >= 0";
   }
   else if (Iterations < 0 || Iterations > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
   {
@@ -109,6 +122,17 @@ ReformationParameters::Validate() const
   {
     throw InputError(problem.str(), parameter);
   }
+}
+
+double
+ReformationParameters::EffectiveAnisotropy() const
+{
+  if (Anisotropy)
+  {
+    return *Anisotropy;
+  }
+  const double J = JumpThreshold ? *JumpThreshold : DefaultJumpThreshold;
+  return 1.0 / (J * J);
 }
 
 itk::CPRViewSpecification
@@ -268,6 +292,21 @@ ParseSlabMode(const std::string & text, const std::string & what)
   throw InputError(what + " " + Quoted(text) + ": use mip, minip or mean");
 }
 
+itk::BilateralDepthRelaxSolver
+ParseRelaxSolver(const std::string & text, const std::string & what)
+{
+  const std::string key = ToLower(Trim(text));
+  if (key == "jacobi")
+  {
+    return itk::BilateralDepthRelaxSolver::Jacobi;
+  }
+  if (key == "steady")
+  {
+    return itk::BilateralDepthRelaxSolver::Steady;
+  }
+  throw InputError(what + " " + Quoted(text) + ": use jacobi or steady", ParameterName::Solver);
+}
+
 bool
 ParseOnOff(const std::string & text, const std::string & what)
 {
@@ -315,5 +354,11 @@ ToString(itk::CPRSlabMode mode)
     default:
       return "mip";
   }
+}
+
+const char *
+ToString(itk::BilateralDepthRelaxSolver solver)
+{
+  return solver == itk::BilateralDepthRelaxSolver::Steady ? "steady" : "jacobi";
 }
 } // namespace vr

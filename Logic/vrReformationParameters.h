@@ -2,12 +2,14 @@
 #ifndef vrReformationParameters_h
 #define vrReformationParameters_h
 
+#include "itkBilateralDepthRelaxSolver.h"
 #include "itkCPRDepthMode.h"
 #include "itkCPRResampleImageFilter.h"
 #include "itkCPRViewGeometry.h"
 #include "vrParameterName.h"
 #include "vrRelaxBackend.h"
 
+#include <optional>
 #include <string>
 
 namespace vr
@@ -54,10 +56,21 @@ struct ReformationParameters
 
   /** Relaxation w in [0, 1]. */
   double Relaxation{ 1.0 };
-  /** Anisotropy a >= 0, in mm^-2. */
-  double Anisotropy{ 0.5 };
-  /** Jacobi iterations N >= 0; signed so that a negative request is reported, not wrapped. */
+  /** The range kernel R(x) = exp(-(x / J)^2) by its meaning, the jump threshold J in mm (finite, > 0): depth steps
+   * well below J are smoothed away, steps of several J stay. Unset: DefaultJumpThreshold, unless Anisotropy is set.
+   * Set at most one of JumpThreshold and Anisotropy. */
+  std::optional<double> JumpThreshold;
+  /** The paper's parametrisation of the same kernel, R(x) = exp(-a x^2) with the anisotropy a = 1/J^2 >= 0 in
+   * mm^-2 (0: isotropic smoothing across every jump). The paper's a = 0.5 mm^-2 (J = 1.4 mm) leaves the 2-10 mm
+   * seams of real thoracic CTA in place, hence the default J = 3 mm. */
+  std::optional<double> Anisotropy;
+  /** J when neither JumpThreshold nor Anisotropy is set, mm (itk::BilateralDepthRelaxFilter's default). */
+  static constexpr double DefaultJumpThreshold = 3.0;
+  /** Jacobi iterations N >= 0 (the Jacobi solver's); signed so that a negative request is reported, not wrapped. */
   long long Iterations{ 500 };
+  /** Jacobi: the paper's N passes (the result depends on N and on the pixel count). Steady: the relaxation's fixed
+   * point, independent of both (N and w do not apply). */
+  itk::BilateralDepthRelaxSolver Solver{ itk::BilateralDepthRelaxSolver::Jacobi };
   /** Where the relaxation runs, and which OpenCL device is asked for ("" = the default choice). */
   RelaxBackend Backend{ RelaxBackend::Auto };
   std::string  OpenCLDevice;
@@ -78,6 +91,11 @@ struct ReformationParameters
    * InputError::Parameter()) and its value. */
   void
   Validate() const;
+
+  /** \return the anisotropy a in mm^-2 the filter gets: Anisotropy if set, else 1/J^2 of JumpThreshold or of
+   * DefaultJumpThreshold. */
+  double
+  EffectiveAnisotropy() const;
 
   /** \return the view part as itk::CPRDepthImageFilter takes it (default margin). */
   itk::CPRViewSpecification
@@ -114,6 +132,9 @@ ParseInterpolation(const std::string & text, const std::string & what);
 /** "mip", "minip" or "mean". */
 itk::CPRSlabMode
 ParseSlabMode(const std::string & text, const std::string & what);
+/** "jacobi" or "steady". */
+itk::BilateralDepthRelaxSolver
+ParseRelaxSolver(const std::string & text, const std::string & what);
 /** "on"/"off" (also "true"/"false", "yes"/"no", "1"/"0"). */
 bool
 ParseOnOff(const std::string & text, const std::string & what);
@@ -126,6 +147,8 @@ const char *
 ToString(itk::CPRInterpolationMode mode);
 const char *
 ToString(itk::CPRSlabMode mode);
+const char *
+ToString(itk::BilateralDepthRelaxSolver solver);
 } // namespace vr
 
 #endif

@@ -59,13 +59,33 @@ RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error
   throw InputError(stage + ": " + error.GetDescription());
 }
 
-/** Sets w, a, N on \a filter. */
+static_assert(ReformationParameters::DefaultJumpThreshold == RelaxFilterType::DefaultJumpThreshold,
+              "the logic's default jump threshold is the filter's");
+
+/** What the logic says when the steady solver, which has no OpenCL kernel, was asked for with \a backend. */
+std::string
+SteadySolverOnCPUNotice(RelaxBackend backend)
+{
+  return std::string("relax backend ") + ToString(backend) +
+         ": the steady solver has no OpenCL kernel; relaxing on the CPU instead";
+}
+
+/** Sets w, the range kernel (J or a, as the parameters give it), N and the solver on \a filter. */
 void
 ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & parameters)
 {
   filter->SetRelaxation(parameters.Relaxation);
-  filter->SetAnisotropy(parameters.Anisotropy);
+  if (parameters.Anisotropy)
+  {
+    filter->SetAnisotropy(*parameters.Anisotropy);
+  }
+  else
+  {
+    filter->SetJumpThreshold(parameters.JumpThreshold ? *parameters.JumpThreshold
+                                                      : ReformationParameters::DefaultJumpThreshold);
+  }
   filter->SetNumberOfIterations(static_cast<unsigned int>(parameters.Iterations));
+  filter->SetSolver(parameters.Solver);
 }
 } // namespace
 
@@ -123,6 +143,7 @@ struct VesselReformationLogic::Internals
   bool                                            HasBackendChoice{ false };
   RelaxBackend                                    ChosenFor{ RelaxBackend::Auto };
   std::string                                     ChosenForDevice;
+  itk::BilateralDepthRelaxSolver                  ChosenForSolver{ itk::BilateralDepthRelaxSolver::Jacobi };
   ResampleFilterType::Pointer                     UnfilteredResample = ResampleFilterType::New();
   ResampleFilterType::Pointer                     RelaxedResample = ResampleFilterType::New();
 
@@ -538,14 +559,19 @@ VesselReformationLogic::Internals::CheckMemory(const itk::CPRViewGeometry & view
 void
 VesselReformationLogic::Internals::ChooseRelaxFilter()
 {
-  if (HasBackendChoice && ChosenFor == Parameters.Backend && ChosenForDevice == Parameters.OpenCLDevice)
+  if (HasBackendChoice && ChosenFor == Parameters.Backend && ChosenForDevice == Parameters.OpenCLDevice &&
+      ChosenForSolver == Parameters.Solver)
   {
     return;
   }
   HasBackendChoice = false;
   RelaxFilterType::Pointer chosen = CPURelax;
   std::string              notice;
-  if (Parameters.Backend != RelaxBackend::CPU)
+  if (Parameters.Backend != RelaxBackend::CPU && Parameters.Solver == itk::BilateralDepthRelaxSolver::Steady)
+  {
+    notice = SteadySolverOnCPUNotice(Parameters.Backend);
+  }
+  else if (Parameters.Backend != RelaxBackend::CPU)
   {
     RelaxFilterType::Pointer & cached = OpenCLRelax[Parameters.OpenCLDevice];
     std::string                why;
@@ -582,6 +608,7 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
   HasBackendChoice = true;
   ChosenFor = Parameters.Backend;
   ChosenForDevice = Parameters.OpenCLDevice;
+  ChosenForSolver = Parameters.Solver;
 }
 
 void
@@ -1007,7 +1034,13 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   }
   std::string  notice;
   RelaxBackend chosen = RelaxBackend::CPU;
-  auto         filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
+  const bool   steady = parameters.Solver == itk::BilateralDepthRelaxSolver::Steady;
+  auto         filter =
+    CreateRelaxFilter(steady ? RelaxBackend::CPU : parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
+  if (steady && parameters.Backend != RelaxBackend::CPU)
+  {
+    notice = SteadySolverOnCPUNotice(parameters.Backend);
+  }
   if (!notice.empty())
   {
     warnings.push_back(notice);

@@ -2,6 +2,7 @@
 // The BilateralDepthRelax command-line module: the relaxation stage alone, depth map [+ mask] -> relaxed depth.
 
 #include "vrCLIModuleRunner.h"
+#include "vrCLIRelaxParameters.h"
 #include "vrImageIO.h"
 #include "vrInputError.h"
 #include "vrModuleExport.h"
@@ -20,8 +21,9 @@ namespace
 {
 /** The logic's parameters by meaning -> this module's XML parameters. */
 const vr::CLIParameterMap ParameterFlags = {
-  { vr::ParameterName::Relaxation, "relaxation" },     { vr::ParameterName::Anisotropy, "anisotropy" },
-  { vr::ParameterName::Iterations, "iterations" },     { vr::ParameterName::Backend, "backend" },
+  { vr::ParameterName::Relaxation, "relaxation" },       { vr::ParameterName::Anisotropy, "anisotropy" },
+  { vr::ParameterName::JumpThreshold, "jumpThreshold" }, { vr::ParameterName::Solver, "solver" },
+  { vr::ParameterName::Iterations, "iterations" },       { vr::ParameterName::Backend, "backend" },
   { vr::ParameterName::OpenCLDevice, "openclDevice" },
 };
 
@@ -29,11 +31,7 @@ void
 RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & progress)
 {
   vr::ReformationParameters parameters;
-  parameters.Relaxation = arguments.Double("relaxation");
-  parameters.Anisotropy = arguments.Double("anisotropy");
-  parameters.Iterations = arguments.Integer("iterations");
-  parameters.Backend = vr::ParseRelaxBackend(arguments.String("backend"), "--backend");
-  parameters.OpenCLDevice = arguments.String("openclDevice");
+  vr::ReadRelaxParameters(arguments, parameters);
   parameters.Validate();
 
   vr::StagedOutputs staged;

@@ -4,6 +4,7 @@
 // It only collects parameters and files; vr::VesselReformationLogic computes.
 
 #include "vrCLIModuleRunner.h"
+#include "vrCLIRelaxParameters.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrImageIO.h"
@@ -38,6 +39,8 @@ const vr::CLIParameterMap ParameterFlags = {
   { vr::ParameterName::FixLumen, "fixLumen" },
   { vr::ParameterName::Relaxation, "relaxation" },
   { vr::ParameterName::Anisotropy, "anisotropy" },
+  { vr::ParameterName::JumpThreshold, "jumpThreshold" },
+  { vr::ParameterName::Solver, "solver" },
   { vr::ParameterName::Iterations, "iterations" },
   { vr::ParameterName::Backend, "backend" },
   { vr::ParameterName::OpenCLDevice, "openclDevice" },
@@ -82,11 +85,7 @@ ParametersFrom(const vr::CLIArguments & arguments)
   }
   parameters.Mode = vr::ParseDepthMode(arguments.String("mode"), "--mode");
   parameters.FixLumen = vr::ParseOnOff(arguments.String("fixLumen"), "--fixLumen");
-  parameters.Relaxation = arguments.Double("relaxation");
-  parameters.Anisotropy = arguments.Double("anisotropy");
-  parameters.Iterations = arguments.Integer("iterations");
-  parameters.Backend = vr::ParseRelaxBackend(arguments.String("backend"), "--backend");
-  parameters.OpenCLDevice = arguments.String("openclDevice");
+  vr::ReadRelaxParameters(arguments, parameters);
   parameters.Interpolation = vr::ParseInterpolation(arguments.String("interpolation"), "--interpolation");
   parameters.SlabThickness = arguments.Double("slabThickness");
   parameters.SlabMode = vr::ParseSlabMode(arguments.String("slabMode"), "--slabMode");

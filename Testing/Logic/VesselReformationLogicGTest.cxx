@@ -537,6 +537,19 @@ TEST_F(VesselReformationLogicTest, BadParametersAreNamedWithTheirValue)
   ExpectInputError(m_Logic, { "anisotropy a", "-1" }, vr::ParameterName::Anisotropy);
 
   parameters = QuickParameters();
+  parameters.Anisotropy.reset();
+  parameters.JumpThreshold = 0.0;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "jump threshold J", "0" }, vr::ParameterName::JumpThreshold);
+
+  // Two forms of one kernel: both set is refused, naming both by meaning.
+  parameters = QuickParameters();
+  parameters.JumpThreshold = 3.0;
+  parameters.Anisotropy = 0.5;
+  m_Logic.SetParameters(parameters);
+  ExpectInputError(m_Logic, { "jump threshold", "anisotropy", "3", "0.5" }, vr::ParameterName::JumpThreshold);
+
+  parameters = QuickParameters();
   parameters.SlabThickness = std::nan("");
   m_Logic.SetParameters(parameters);
   ExpectInputError(m_Logic, { "slab thickness", "nan" }, vr::ParameterName::SlabThickness);
@@ -595,6 +608,64 @@ TEST(VesselReformationLogicRelax, RelaxDepthImageFollowsEquationOne)
 
   parameters.Relaxation = 1.5;
   EXPECT_THROW(VesselReformationLogic::RelaxDepthImage(depth, nullptr, parameters, {}, warnings), vr::InputError);
+}
+
+// Issue 13: the jump threshold reaches the filter (J = 2 mm and a = 0.25 mm^-2 give the same picture, J = 3 mm
+// unset), and the steady solver finds the fixed point. Depths [0, 1, 3] with the ends fixed: one pass moves the
+// middle to f(1), f(x) = (R(x) 0 + R(3 - x) 3) / (R(x) + R(3 - x)), R(d) = exp(-(d/J)^2); the steady solver finds
+// the fixed point x = f(x) that those passes approach from 1 (bilateral weights allow several: 1.5 is one, but from
+// 1 the passes go to the one near 0.67 for J = 2), here by plain iteration of f in double.
+TEST(VesselReformationLogicRelax, JumpThresholdAndSteadySolverReachTheFilter)
+{
+  auto depth = vr::DepthImageType::New();
+  depth->SetRegions(vr::DepthImageType::RegionType({ { 0, 0 } }, { { 3, 1 } }));
+  depth->Allocate();
+  depth->GetBufferPointer()[0] = 0.0f;
+  depth->GetBufferPointer()[1] = 1.0f;
+  depth->GetBufferPointer()[2] = 3.0f;
+  auto mask = vr::MaskImageType::New();
+  mask->SetRegions(depth->GetLargestPossibleRegion());
+  mask->Allocate();
+  mask->GetBufferPointer()[0] = 1;
+  mask->GetBufferPointer()[1] = 0;
+  mask->GetBufferPointer()[2] = 1;
+  auto middle = [&](const ReformationParameters & parameters, std::vector<std::string> & warnings)
+  { return VesselReformationLogic::RelaxDepthImage(depth, mask, parameters, {}, warnings)->GetBufferPointer()[1]; };
+  auto expected = [](double J)
+  { return 3.0 * std::exp(-4.0 / (J * J)) / (std::exp(-1.0 / (J * J)) + std::exp(-4.0 / (J * J))); };
+  ReformationParameters parameters;
+  parameters.Iterations = 1;
+  parameters.Backend = vr::RelaxBackend::CPU;
+  std::vector<std::string> warnings;
+  EXPECT_NEAR(middle(parameters, warnings), expected(3.0), 1e-6) << "J unset: 3 mm";
+  parameters.JumpThreshold = 2.0;
+  EXPECT_NEAR(middle(parameters, warnings), expected(2.0), 1e-6);
+  parameters.JumpThreshold.reset();
+  parameters.Anisotropy = 0.25;
+  EXPECT_NEAR(middle(parameters, warnings), expected(2.0), 1e-6);
+  EXPECT_TRUE(warnings.empty());
+
+  auto fixedPoint = [](double J)
+  {
+    double x = 1.0;
+    for (int pass = 0; pass < 100000; ++pass)
+    {
+      x = 3.0 * std::exp(-(3.0 - x) * (3.0 - x) / (J * J)) /
+          (std::exp(-x * x / (J * J)) + std::exp(-(3.0 - x) * (3.0 - x) / (J * J)));
+    }
+    return x;
+  };
+  ASSERT_GT(std::abs(fixedPoint(2.0) - expected(2.0)), 0.1) << "one pass is not the fixed point here";
+  parameters.Solver = itk::BilateralDepthRelaxSolver::Steady;
+  EXPECT_NEAR(middle(parameters, warnings), fixedPoint(2.0), 1e-3);
+  EXPECT_TRUE(warnings.empty());
+  // Asked for OpenCL (or auto), the steady solver says that it relaxes on the CPU.
+  parameters.Backend = vr::RelaxBackend::Auto;
+  std::string backend;
+  VesselReformationLogic::RelaxDepthImage(depth, mask, parameters, {}, warnings, &backend);
+  EXPECT_EQ(backend, "cpu");
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("steady solver has no OpenCL kernel"), std::string::npos) << warnings[0];
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -507,6 +507,8 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
                                  "spacing",
                                  "relaxation",
                                  "anisotropy",
+                                 "jumpThreshold",
+                                 "solver",
                                  "iterations",
                                  "fixLumen",
                                  "backend",
@@ -529,8 +531,9 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
 
 TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)
 {
-  ExpectFlagsAreExactlyTheXMLs(RelaxExecutable,
-                               { "mask", "relaxation", "anisotropy", "iterations", "backend", "openclDevice" });
+  ExpectFlagsAreExactlyTheXMLs(
+    RelaxExecutable,
+    { "mask", "relaxation", "jumpThreshold", "anisotropy", "iterations", "solver", "backend", "openclDevice" });
 }
 
 TEST(ModuleDescription, TitlesAreTheModulesAndHelpIsTheDescriptions)
@@ -557,17 +560,23 @@ TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
   EXPECT_EQ(byName["inputCenterlines"].Index, "1");
   EXPECT_EQ(byName["outputCPR"].Index, "2");
   EXPECT_EQ(byName["outputCPR"].Channel, "output");
-  // DESIGN: w = 1, a = 0.5 mm^-2, 500 iterations, scanline, linear; and the parameter object agrees.
+  // DESIGN: w = 1, 500 Jacobi iterations, scanline, linear; issue 13: the range kernel unset in the XML (neither
+  // --jumpThreshold nor --anisotropy is passed unless the user gives it) and J = 3 mm in the parameter object.
   const vr::ReformationParameters defaults;
   EXPECT_EQ(std::stod(byName["relaxation"].Default), 1.0);
-  EXPECT_EQ(std::stod(byName["anisotropy"].Default), 0.5);
+  EXPECT_EQ(byName["anisotropy"].Default, "");
+  EXPECT_EQ(byName["jumpThreshold"].Default, "");
+  EXPECT_EQ(byName["solver"].Default, "jacobi");
   EXPECT_EQ(byName["iterations"].Default, "500");
   EXPECT_EQ(byName["mode"].Default, "scanline");
   EXPECT_EQ(byName["interpolation"].Default, "linear");
   EXPECT_EQ(byName["fixLumen"].Default, "on");
   EXPECT_EQ(byName["up"].Default, "S");
   EXPECT_EQ(defaults.Relaxation, 1.0);
-  EXPECT_EQ(defaults.Anisotropy, 0.5);
+  EXPECT_FALSE(defaults.Anisotropy.has_value());
+  EXPECT_FALSE(defaults.JumpThreshold.has_value());
+  EXPECT_EQ(defaults.EffectiveAnisotropy(), 1.0 / 9.0);
+  EXPECT_EQ(defaults.Solver, itk::BilateralDepthRelaxSolver::Jacobi);
   EXPECT_EQ(defaults.Iterations, 500);
   EXPECT_EQ(defaults.Mode, itk::CPRDepthMode::Scanline);
   EXPECT_EQ(defaults.Interpolation, itk::CPRInterpolationMode::Linear);
@@ -909,6 +918,60 @@ TEST(BilateralDepthRelaxModule, RelaxesByEquationOneAndHoldsTheMask)
   EXPECT_FLOAT_EQ(relaxed->GetBufferPointer()[2], 0.0f);
 }
 
+// Issue 13: --jumpThreshold J is the range kernel's scale, R(d) = exp(-(d/J)^2), 3 mm when neither it nor
+// --anisotropy is given; --solver steady gives the fixed point. Depths [0, 1, 3], w = 1, one Jacobi pass: the middle
+// pixel becomes f(1), f(x) = (R(x) 0 + R(3 - x) 3) / (R(x) + R(3 - x)), by hand; the steady solver gives the fixed
+// point x = f(x) that the passes approach from 1, found here by plain iteration of f in double.
+TEST(BilateralDepthRelaxModule, JumpThresholdScalesTheRangeKernelAndSteadyFindsTheFixedPoint)
+{
+  const fs::path folder = TestFolder();
+  auto           depth = vr::DepthImageType::New();
+  depth->SetRegions(vr::DepthImageType::RegionType({ { 0, 0 } }, { { 3, 1 } }));
+  depth->Allocate();
+  depth->GetBufferPointer()[0] = 0.0f;
+  depth->GetBufferPointer()[1] = 1.0f;
+  depth->GetBufferPointer()[2] = 3.0f;
+  vr::WriteImage2D(depth.GetPointer(), (folder / "depth.nrrd").string());
+  auto mask = vr::MaskImageType::New();
+  mask->SetRegions(depth->GetLargestPossibleRegion());
+  mask->Allocate();
+  mask->GetBufferPointer()[0] = 1;
+  mask->GetBufferPointer()[1] = 0;
+  mask->GetBufferPointer()[2] = 1;
+  vr::WriteImage2D(mask.GetPointer(), (folder / "mask.nrrd").string());
+  auto middle = [&](std::vector<std::string> flags, const std::string & name)
+  {
+    std::vector<std::string> command = {
+      RelaxExecutable, "--mask", (folder / "mask.nrrd").string(), "--backend", "cpu"
+    };
+    command.insert(command.end(), flags.begin(), flags.end());
+    command.push_back((folder / "depth.nrrd").string());
+    command.push_back((folder / name).string());
+    const RunResult run = RunProgram(command);
+    EXPECT_EQ(run.ExitCode, 0) << run.Err;
+    return static_cast<double>(vr::ReadDepthImage((folder / name).string())->GetBufferPointer()[1]);
+  };
+  auto expected = [](double J)
+  {
+    const double near = std::exp(-(1.0 / J) * (1.0 / J));
+    const double far = std::exp(-(2.0 / J) * (2.0 / J));
+    return 3.0 * far / (near + far);
+  };
+  EXPECT_NEAR(middle({ "--iterations", "1", "--jumpThreshold", "2" }, "j2.nrrd"), expected(2.0), 1e-6);
+  EXPECT_NEAR(middle({ "--iterations", "1", "--anisotropy", "0.25" }, "a025.nrrd"), expected(2.0), 1e-6);
+  EXPECT_NEAR(middle({ "--iterations", "1" }, "default.nrrd"), expected(3.0), 1e-6);
+  EXPECT_NEAR(middle({ "--iterations", "1", "--jumpThreshold", "0.5" }, "j05.nrrd"), expected(0.5), 1e-6);
+  double fixedPoint = 1.0;
+  for (int pass = 0; pass < 100000; ++pass)
+  {
+    const double near = std::exp(-fixedPoint * fixedPoint / 4.0);
+    const double far = std::exp(-(3.0 - fixedPoint) * (3.0 - fixedPoint) / 4.0);
+    fixedPoint = 3.0 * far / (near + far);
+  }
+  ASSERT_GT(std::abs(expected(2.0) - fixedPoint), 0.1) << "one Jacobi pass is not the fixed point here";
+  EXPECT_NEAR(middle({ "--solver", "steady", "--jumpThreshold", "2" }, "steady.nrrd"), fixedPoint, 1e-3);
+}
+
 /** Numbers in a "CPR_*" metadata entry. */
 std::vector<double>
 MetadataNumbers(const vr::DepthImageType * image, const std::string & key)
@@ -1193,6 +1256,12 @@ TEST_F(BadInputTest, RelaxationOutsideItsRange)
   ExpectRejected({ "--relaxation", "2", Volume(), Centerlines() }, { "--relaxation", "2" });
 }
 
+TEST_F(BadInputTest, BothJumpThresholdAndAnisotropy)
+{
+  ExpectRejected({ "--jumpThreshold", "3", "--anisotropy", "0.5", Volume(), Centerlines() },
+                 { "--jumpThreshold", "--anisotropy", "give one" });
+}
+
 TEST_F(BadInputTest, NegativeIterations)
 {
   ExpectRejected({ "--iterations", "-5", Volume(), Centerlines() }, { "--iterations", "-5" });
@@ -1267,6 +1336,9 @@ TEST_F(BadInputTest, RelaxModuleRejectsAMissingDepthAMaskOfAnotherSizeAndBadPara
     { { "--relaxation", "2", depth, output }, { "--relaxation", "2" } },
     { { "--iterations", "-5", depth, output }, { "--iterations", "-5" } },
     { { "--anisotropy", "nan", depth, output }, { "--anisotropy", "nan" } },
+    { { "--jumpThreshold", "0", depth, output }, { "--jumpThreshold", "0" } },
+    { { "--jumpThreshold", "3", "--anisotropy", "0.5", depth, output }, { "--jumpThreshold", "--anisotropy" } },
+    { { "--solver", "multigrid", depth, output }, { "--solver", "multigrid" } },
     { { "--backend", "gpu", depth, output }, { "--backend", "gpu" } },
     { { "--bogus", depth, output }, { "unknown flag --bogus" } },
     { { depth }, { "missing the second argument <outputDepth>" } },
