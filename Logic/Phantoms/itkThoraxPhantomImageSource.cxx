@@ -227,6 +227,13 @@ SoftTissue(const BodySection & body, double x, double y, double z)
   }
   if (z > 55.0 || depthInside < fat + 14.0)
   {
+    // Muscles separated by thin fat planes, about 11 mm apart in depth and tilted, as the neck's and chest wall's
+    // muscles are: where the cut surface steps in depth, the planes in the CPR step with it (the visible seam).
+    const double plane = std::fmod(std::abs(y + 0.35 * x + 0.2 * z + 500.0), 11.0);
+    if (plane < 1.8)
+    {
+      return static_cast<float>(FatHU + 0.5 * texture);
+    }
     return static_cast<float>(MuscleHU + texture);
   }
   const double diaphragm = -150.0 - 0.004 * x * x - 0.1 * x;

@@ -19,9 +19,9 @@ namespace itk
  * (dividing into the right subclavian and right common carotid arteries), the left common carotid and the left
  * subclavian artery. Around them: the heart (myocardium, a contrast-filled left ventricle, the less enhanced right
  * heart), the pulmonary trunk and arteries (enhanced, not in the tree), both lungs (-850 HU), the trachea and main
- * bronchi (air), mediastinal and subcutaneous fat, chest-wall muscle, the thoracic spine (vertebral bodies and
- * spinous processes), eleven pairs of ribs, the sternum and clavicles (cortical bone around marrow), a few calcified
- * plaques in the arch wall, air around the body, and reproducible noise.
+ * bronchi (air), mediastinal and subcutaneous fat, chest-wall and neck muscles with thin fat planes between them, the
+ * thoracic spine (vertebral bodies and spinous processes), eleven pairs of ribs, the sternum and clavicles (cortical
+ * bone around marrow), a few calcified plaques in the arch wall, air around the body, and reproducible noise.
  *
  * Patient frame LPS, millimetres; z = 0 is about the top of the aortic arch, the field of view runs from the upper
  * abdomen (z = -235) into the neck (z = +115). The supra-aortic branches run a few millimetres to 15 mm apart in

@@ -1,10 +1,11 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// The main job on a built-in default: a synthetic leg run-off CTA, reformatted as a multipath CPR with and
-// without bilateral depth filtering, written as pictures (the paper's Figure 2 among them).
+// The main job on a built-in default: a synthetic CTA (leg run-off or thorax), reformatted as a multipath CPR with
+// and without bilateral depth filtering, written as pictures (the paper's Figure 2, or its thoracic figure).
 //
-//   VesselReformationDemo [--output DIR] [--angle DEG] [--size W,H] [--iterations N] [--backend B]
+//   VesselReformationDemo [--phantom runoff|thorax] [--output DIR] [--angle DEG] [--size W,H] [--iterations N]
+//                         [--solver jacobi|steady] [--backend B]
 
-#include "itkRunoffPhantomImageSource.h"
+#include "itkCTAPhantom.h"
 #include "vrFigure.h"
 #include "vrImageIO.h"
 #include "vrSurfaceIO.h"
@@ -18,6 +19,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 namespace
 {
@@ -41,13 +43,28 @@ struct Result
   DepthImage::Pointer CPR;
 };
 
+/** The range kernel as the parameters give it: "a = 0.5 mm^-2", "J = 3 mm". */
 std::string
-Parameters(double w, double a)
+Kernel(const vr::ReformationParameters & parameters)
 {
   std::ostringstream stream;
-  stream << "w = " << w << ", a = " << a << " mm^-2";
+  if (parameters.Anisotropy)
+  {
+    stream << "a = " << *parameters.Anisotropy << " mm^-2";
+  }
+  else
+  {
+    stream << "J = " << parameters.JumpThreshold.value_or(vr::ReformationParameters::DefaultJumpThreshold) << " mm";
+  }
   return stream.str();
 }
+
+/** Where each phantom's seams are what the eye should see: a detail rectangle, in fractions of the image. */
+struct DetailRegion
+{
+  double       X, Y, Width, Height;
+  const char * Name;
+};
 
 void
 PrintStages(const vr::ReformationOutputs & outputs, const vr::StageCounts & before, const vr::StageCounts & after)
@@ -68,25 +85,49 @@ PrintStages(const vr::ReformationOutputs & outputs, const vr::StageCounts & befo
 int
 RunDemo(int argc, char * argv[])
 {
-  CLI::App    app{ "VesselReformation demo: a synthetic leg run-off CTA, reformatted with and without bilateral "
-                   "depth filtering (Kretschmer et al., EuroVis 2014) through the module logic. Writes PNG pictures, "
-                   "NRRD images and the cut surface." };
+  CLI::App    app{ "VesselReformation demo: a synthetic CTA (leg run-off or thorax), reformatted with and without "
+                   "bilateral depth filtering (Kretschmer et al., EuroVis 2014) through the module logic. Writes PNG "
+                   "pictures, NRRD images and the cut surface." };
   std::string output = "vessel-reformation-demo";
-  double      angle = 30.0;
+  std::string phantomName = "runoff";
+  std::string solverName = "jacobi";
+  double      angle = 0.0;
   std::vector<unsigned int> size = { 512, 1024 };
   long long                 iterations = 500;
   double                    spacing = 1.5;
   std::string               backendName = "auto";
+  app.add_option("--phantom", phantomName, "the synthetic CTA: runoff (legs) or thorax (aortic arch)")
+    ->capture_default_str();
   app.add_option("--output", output, "folder for the pictures")->capture_default_str();
-  app.add_option("--angle", angle, "view angle about the patient's superior axis, degrees")->capture_default_str();
+  auto * angleOption = app.add_option("--angle",
+                                      angle,
+                                      "view angle about the patient's superior axis, degrees (default: the "
+                                      "phantom's design angle, 30 for runoff, 0 for thorax)");
   app.add_option("--size", size, "CPR image size W,H in pixels")->delimiter(',')->expected(2)->capture_default_str();
   app.add_option("--iterations", iterations, "bilateral filter iterations")->capture_default_str();
   app.add_option("--phantomSpacing", spacing, "voxel spacing of the phantom, mm")->capture_default_str();
+  app.add_option("--solver", solverName, "relaxation solver: jacobi (the paper's N passes) or steady (fixed point)")
+    ->capture_default_str();
   app.add_option("--backend", backendName, "relax filter backend: auto, cpu or opencl")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try
   {
+    itk::CTAPhantomKind kind;
+    try
+    {
+      kind = itk::ParseCTAPhantomKind(phantomName);
+    }
+    catch (const std::invalid_argument & error)
+    {
+      throw vr::InputError(std::string("--phantom: ") + error.what());
+    }
+    const bool thorax = kind == itk::CTAPhantomKind::Thorax;
+    auto       phantom = itk::MakeCTAPhantom(kind, spacing);
+    if (angleOption->count() == 0)
+    {
+      angle = phantom.DesignAngleInDegrees;
+    }
     vr::ReformationParameters parameters;
     parameters.AngleInDegrees = angle;
     parameters.ImageSize[0] = size[0];
@@ -94,44 +135,52 @@ RunDemo(int argc, char * argv[])
     parameters.Iterations = iterations;
     parameters.Backend = vr::ParseRelaxBackend(backendName, "--backend");
     parameters.Relaxation = 1.0;
-    parameters.Anisotropy = 0.0;
+    parameters.Solver = vr::ParseRelaxSolver(solverName, "--solver");
     parameters.Validate();
     std::filesystem::create_directories(output);
-    std::cout << "VesselReformation demo: synthetic run-off CTA, view " << angle << " degrees about superior, "
+    std::cout << "VesselReformation demo: " << phantom.Description << ", view " << angle << " degrees about superior, "
               << size[0] << " x " << size[1] << " pixels" << std::endl;
 
     auto start = Clock::now();
-    auto phantom = itk::RunoffPhantomImageSource::New();
-    phantom->SetSpacing(spacing);
-    phantom->Update();
-    const auto volumeSize = phantom->GetOutput()->GetLargestPossibleRegion().GetSize();
+    phantom.Source->Update();
+    const auto volumeSize = phantom.Source->GetOutput()->GetLargestPossibleRegion().GetSize();
     std::cout << "  phantom " << volumeSize[0] << " x " << volumeSize[1] << " x " << volumeSize[2] << " voxels at "
-              << spacing << " mm, " << phantom->GetCenterlineTree().GetNumberOfBranches()
+              << spacing << " mm, " << phantom.Tree.GetNumberOfBranches()
               << " arteries: " << std::lround(Milliseconds(start)) << " ms" << std::endl;
 
     // The platform's view of the data: a volume node and a centerline node in RAS, as a 3D Slicer scene holds them.
     vr::VesselReformationLogic logic;
-    logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom->GetOutput(), "RunoffPhantom"));
-    logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom->GetCenterlineTree(), "RunoffCenterlines"));
+    const std::string          nodeName = thorax ? "Thorax" : "Runoff";
+    logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), nodeName + "Phantom"));
+    logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom.Tree, nodeName + "Centerlines"));
     logic.SetWarningCallback([](const std::string & message, const std::string &)
                              { std::cout << "  warning: " << message << std::endl; });
 
-    auto run = [&](double a)
+    // The middle column: plain smoothing (a = 0) on the run-off phantom, as in the paper's Figure 2; on the thorax the
+    // paper's a = 0.5 mm^-2, which leaves the arch's seams of 2-10 mm in place. The right column: our default J.
+    auto run = [&](std::optional<double> anisotropy, const char * what)
     {
-      parameters.Anisotropy = a;
+      parameters.Anisotropy = anisotropy;
       logic.SetParameters(parameters);
       const auto   before = logic.GetStageExecutionCounts();
       const auto & outputs = logic.Update();
-      std::cout << "  " << (a == 0.0 ? "isotropic" : "bilateral") << " relaxation (" << Parameters(1.0, a) << ", "
-                << iterations << " iterations, " << outputs.RelaxBackendUsed << "):" << std::endl;
+      std::cout << "  " << what << " relaxation (w = 1, " << Kernel(parameters) << ", "
+                << (parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
+                      ? std::string("steady solver")
+                      : std::to_string(iterations) + " iterations")
+                << ", " << outputs.RelaxBackendUsed << "):" << std::endl;
       PrintStages(outputs, before, logic.GetStageExecutionCounts());
       return Result{ vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth),
                      vr::ConvertVolumeNodeToDepthImage(outputs.CPR) };
     };
-    const Result isotropic = run(0.0);
-    const Result bilateral = run(0.5); // a new a reruns relax and resample only (DESIGN 3.7)
-    const auto & outputs = logic.GetOutputs();
-    const Result unfiltered{ vr::ConvertVolumeNodeToDepthImage(outputs.Depth),
+    const double middleAnisotropy = thorax ? 0.5 : 0.0;
+    const Result middle = run(middleAnisotropy, thorax ? "paper's bilateral" : "isotropic");
+    parameters.Anisotropy = middleAnisotropy;
+    const std::string middleKernel = Kernel(parameters);
+    const Result      bilateral = run(std::nullopt, "bilateral"); // a new kernel reruns relax and resample only
+    const std::string bilateralKernel = Kernel(parameters);
+    const auto &      outputs = logic.GetOutputs();
+    const Result      unfiltered{ vr::ConvertVolumeNodeToDepthImage(outputs.Depth),
                              vr::ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR) };
 
     // One colour range for every depth map, so they compare.
@@ -142,10 +191,10 @@ RunDemo(int argc, char * argv[])
 
     const auto path = [&](const char * name) { return (std::filesystem::path(output) / name).string(); };
     const auto unfilteredCPR = vr::RenderWindowLevel(unfiltered.CPR, Window, Level);
-    const auto isotropicCPR = vr::RenderWindowLevel(isotropic.CPR, Window, Level);
+    const auto middleCPR = vr::RenderWindowLevel(middle.CPR, Window, Level);
     const auto bilateralCPR = vr::RenderWindowLevel(bilateral.CPR, Window, Level);
     const auto unfilteredDepth = vr::RenderDepth(unfiltered.Depth, nearest, farthest);
-    const auto isotropicDepth = vr::RenderDepth(isotropic.Depth, nearest, farthest);
+    const auto middleDepth = vr::RenderDepth(middle.Depth, nearest, farthest);
     const auto bilateralDepth = vr::RenderDepth(bilateral.Depth, nearest, farthest);
     vr::WriteRGBPNG(unfilteredCPR, path("cpr-unfiltered.png"));
     vr::WriteRGBPNG(bilateralCPR, path("cpr-filtered.png"));
@@ -159,44 +208,56 @@ RunDemo(int argc, char * argv[])
     vr::WriteSurface(outputs.Surface, path("cut-surface.vtp"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
 
     const std::string  unfilteredTitle = "unfiltered (w = 0)";
-    const std::string  isotropicTitle = "isotropic (" + Parameters(1.0, 0.0) + ")";
-    const std::string  bilateralTitle = "bilateral (" + Parameters(1.0, 0.5) + ")";
+    const std::string  middleName = thorax ? "paper's bilateral" : "isotropic";
+    const std::string  middleTitle = middleName + " (w = 1, " + middleKernel + ")";
+    const std::string  bilateralTitle = "bilateral (w = 1, " + bilateralKernel + ")";
     std::ostringstream caption;
-    caption << "Synthetic run-off CTA, mpCPR at " << angle << " degrees, " << iterations << " iterations. Top: CPR (W "
-            << Window << " / L " << Level << " HU). Bottom: depth map.";
-    // A detail of the patient's left thigh and knee (the screen's right half), magnified, with the depth in a
-    // tight colour range: there the small seams are what the eye sees.
-    const unsigned int detailX = static_cast<unsigned int>(0.50 * size[0]);
-    const unsigned int detailY = static_cast<unsigned int>(0.35 * size[1]);
-    const unsigned int detailWidth = static_cast<unsigned int>(0.30 * size[0]);
-    const unsigned int detailHeight = static_cast<unsigned int>(0.30 * size[1]);
+    caption << "Synthetic " << (thorax ? "thoracic" : "run-off") << " CTA, mpCPR at " << angle << " degrees, "
+            << (parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
+                  ? std::string("steady solver")
+                  : std::to_string(iterations) + " iterations")
+            << ". Top: CPR (W " << Window << " / L " << Level << " HU). Bottom: depth map."
+            << (thorax ? " Detail CPR: W 400 / L 40 HU." : "");
+    // A detail, magnified, with the depth in a tight colour range: there the small seams are what the eye sees. On
+    // the run-off phantom the patient's left thigh and knee (the screen's right half); on the thorax the arch and
+    // the supra-aortic branches.
+    const DetailRegion region =
+      thorax ? DetailRegion{ 0.22, 0.10, 0.56, 0.30, "arch" } : DetailRegion{ 0.50, 0.35, 0.30, 0.30, "left thigh" };
+    const unsigned int detailX = static_cast<unsigned int>(region.X * size[0]);
+    const unsigned int detailY = static_cast<unsigned int>(region.Y * size[1]);
+    const unsigned int detailWidth = static_cast<unsigned int>(region.Width * size[0]);
+    const unsigned int detailHeight = static_cast<unsigned int>(region.Height * size[1]);
     const auto [detailNear, detailFar] =
       vr::RangeWithin(unfiltered.Depth, detailX, detailY, detailWidth, detailHeight, 0.05, 0.95);
     const unsigned int panelWidth = (3 * size[0] + 16) / 4;
     auto               detail = [&](const vr::RGBImageType * image)
     { return vr::Magnify(vr::Crop(image, detailX, detailY, detailWidth, detailHeight), panelWidth); };
+    // On the thorax the seams run through fat, muscle and heart: a soft-tissue window shows them in the CPR.
+    auto detailCPR = [&](const DepthImage * cpr)
+    { return thorax ? vr::RenderWindowLevel(cpr, 400.0, 40.0) : vr::RenderWindowLevel(cpr, Window, Level); };
     const auto figure = vr::ComposeFigure(
-      { { { unfilteredCPR, unfilteredTitle }, { isotropicCPR, isotropicTitle }, { bilateralCPR, bilateralTitle } },
+      { { { unfilteredCPR, unfilteredTitle }, { middleCPR, middleTitle }, { bilateralCPR, bilateralTitle } },
         { { unfilteredDepth, "depth, unfiltered" },
-          { isotropicDepth, "depth, isotropic" },
+          { middleDepth, "depth, " + middleName },
           { bilateralDepth, "depth, bilateral" } },
         { { vr::RenderDepthColorBar(nearest, farthest, size[0]), "" } },
-        { { detail(unfilteredCPR), "detail: left thigh, unfiltered" },
-          { detail(bilateralCPR), "detail: bilateral" },
+        { { detail(detailCPR(unfiltered.CPR)), std::string("detail: ") + region.Name + ", unfiltered" },
+          { detail(detailCPR(bilateral.CPR)), "detail: bilateral" },
           { detail(vr::RenderDepthRelief(unfiltered.Depth, detailNear, detailFar)),
             "detail depth (relief), unfiltered" },
           { detail(vr::RenderDepthRelief(bilateral.Depth, detailNear, detailFar)),
             "detail depth (relief), bilateral" } },
         { { vr::RenderDepthColorBar(detailNear, detailFar, size[0]), "" } } },
       caption.str());
-    vr::WriteRGBPNG(figure, path("figure2-comparison.png"));
+    const char * figureName = thorax ? "thorax-comparison.png" : "figure2-comparison.png";
+    vr::WriteRGBPNG(figure, path(figureName));
 
     std::cout << "Wrote to " << std::filesystem::absolute(output).string() << ":" << std::endl
               << "  cpr-unfiltered.png, cpr-filtered.png     the CPR before and after bilateral filtering" << std::endl
               << "  depth-unfiltered.png, depth-filtered.png the depth maps (viridis: near dark, far yellow)"
               << std::endl
-              << "  figure2-comparison.png                   unfiltered | isotropic | bilateral (the paper's Fig. 2)"
-              << std::endl
+              << "  " << std::left << std::setw(41) << figureName << "unfiltered | " << middleName << " | bilateral"
+              << (thorax ? " (the paper's thoracic figure)" : " (the paper's Fig. 2)") << std::right << std::endl
               << "  depth.nrrd, depth-relaxed.nrrd, cpr.nrrd, cpr-unfiltered.nrrd  the images, view in their metadata"
               << std::endl
               << "  cut-surface.vtp                          the relaxed cut surface in 3D (RAS), coloured by HU"
