@@ -78,25 +78,96 @@ TryCreateOpenCLRelaxFilter(const std::string & deviceRequest, std::string & whyN
   return nullptr;
 }
 
+OpenCLDeviceKind
+QueryOpenCLDevice(const std::string & deviceRequest)
+{
+  OpenCLDeviceKind kind;
+#ifdef VESSELREFORMATION_HAS_OPENCL
+  try
+  {
+    const OpenCLDeviceInfo device = FindOpenCLDevice(deviceRequest, "device request");
+    kind.Label = device.Label();
+    kind.Type = device.TypeName();
+  }
+  catch (const InputError & error)
+  {
+    kind.WhyNot = error.what();
+  }
+#else
+  (void)deviceRequest;
+  kind.WhyNot = "this build has no OpenCL support (configure with VR_USE_OPENCL=ON)";
+#endif
+  return kind;
+}
+
+RelaxBackendDecision
+DecideAutoRelaxBackend(const std::string & deviceRequest, const OpenCLDeviceQuery & query)
+{
+  const OpenCLDeviceKind device = query(deviceRequest);
+  RelaxBackendDecision   decision;
+  if (!device.WhyNot.empty())
+  {
+    decision.Reason = "auto: no usable OpenCL device (" + device.WhyNot + "), so the CPU";
+    decision.DeviceProblem = device.WhyNot;
+  }
+  else if (device.Type == "CPU")
+  {
+    decision.Reason = "auto: the OpenCL device " + device.Label +
+                      " is a CPU device, where the native CPU path is faster on the same cores, so the CPU";
+  }
+  else
+  {
+    decision.Backend = RelaxBackend::OpenCL;
+    decision.Reason = "auto: OpenCL on " + device.Label + ", a " + device.Type;
+  }
+  return decision;
+}
+
 RelaxFilterType::Pointer
-CreateRelaxFilter(RelaxBackend backend, const std::string & deviceRequest, std::string & notice, RelaxBackend * chosen)
+CreateRelaxFilter(RelaxBackend              backend,
+                  const std::string &       deviceRequest,
+                  std::string &             notice,
+                  RelaxBackend *            chosen,
+                  std::string *             reason,
+                  const OpenCLDeviceQuery & query)
 {
   notice.clear();
-  if (chosen)
+  auto report = [&](RelaxBackend used, const std::string & why)
   {
-    *chosen = RelaxBackend::CPU;
-  }
+    if (chosen)
+    {
+      *chosen = used;
+    }
+    if (reason)
+    {
+      *reason = why;
+    }
+  };
+  report(RelaxBackend::CPU, "cpu requested");
   if (backend == RelaxBackend::CPU)
   {
     return RelaxFilterType::New();
   }
+  std::string openCLReason = "opencl requested";
+  if (backend == RelaxBackend::Auto)
+  {
+    const RelaxBackendDecision decision = DecideAutoRelaxBackend(deviceRequest, query);
+    if (decision.Backend == RelaxBackend::CPU)
+    {
+      report(RelaxBackend::CPU, decision.Reason);
+      if (!decision.DeviceProblem.empty())
+      {
+        notice =
+          "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + decision.DeviceProblem;
+      }
+      return RelaxFilterType::New();
+    }
+    openCLReason = decision.Reason;
+  }
   std::string why;
   if (auto filter = TryCreateOpenCLRelaxFilter(deviceRequest, why))
   {
-    if (chosen)
-    {
-      *chosen = RelaxBackend::OpenCL;
-    }
+    report(RelaxBackend::OpenCL, openCLReason);
     return filter;
   }
   if (backend == RelaxBackend::OpenCL)
@@ -104,6 +175,7 @@ CreateRelaxFilter(RelaxBackend backend, const std::string & deviceRequest, std::
     throw InputError("relax backend opencl: no usable OpenCL device: " + why, ParameterName::Backend);
   }
   notice = "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
+  report(RelaxBackend::CPU, "auto: OpenCL failed on the device (" + why + "), so the CPU");
   return RelaxFilterType::New();
 }
 } // namespace vr

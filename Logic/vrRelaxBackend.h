@@ -4,6 +4,7 @@
 
 #include "itkBilateralDepthRelaxFilter.h"
 
+#include <functional>
 #include <string>
 
 namespace vr
@@ -11,7 +12,8 @@ namespace vr
 /** Where BilateralDepthRelaxFilter runs (DESIGN 3.7). */
 enum class RelaxBackend
 {
-  /** OpenCL when a device works, else the CPU with a notice saying why. */
+  /** OpenCL when the device it would use is a GPU or an accelerator and works; on a CPU device (PoCL) the native
+   * CPU path, which is faster on the same cores; without a working device the CPU with a notice saying why. */
   Auto,
   CPU,
   /** OpenCL or an error that says which devices were found. */
@@ -35,14 +37,51 @@ using RelaxFilterType = itk::BilateralDepthRelaxFilter<itk::Image<float, 2>>;
 RelaxFilterType::Pointer
 TryCreateOpenCLRelaxFilter(const std::string & deviceRequest, std::string & whyNot);
 
+/** The OpenCL device a relaxation would use, as far as the Auto rule needs to know it.
+ * \ingroup VesselReformation */
+struct OpenCLDeviceKind
+{
+  /** Empty when there is a usable device; otherwise why there is none. */
+  std::string WhyNot;
+  /** How messages name the device, e.g. "0:0 cpu-haswell (Portable Computing Language, CPU)". */
+  std::string Label;
+  /** "GPU", "CPU" or "accelerator". */
+  std::string Type;
+};
+
+/** Answers which OpenCL device \a deviceRequest ("" = VR_OPENCL_DEVICE, else the default choice) gives. */
+using OpenCLDeviceQuery = std::function<OpenCLDeviceKind(const std::string & deviceRequest)>;
+
+/** The installed drivers' answer (vr::FindOpenCLDevice); in a build without OpenCL, none. Never throws. */
+OpenCLDeviceKind
+QueryOpenCLDevice(const std::string & deviceRequest);
+
+/** A backend choice and the reason for it, in words for the results and the stage log.
+ * \ingroup VesselReformation */
+struct RelaxBackendDecision
+{
+  RelaxBackend Backend{ RelaxBackend::CPU };
+  std::string  Reason;
+  /** Why there is no usable OpenCL device, when that is the reason; else empty. */
+  std::string DeviceProblem;
+};
+
+/** The Auto rule: OpenCL only when \a query reports a usable GPU or accelerator for \a deviceRequest; a CPU device
+ * (PoCL) or no device gives the CPU. The reason names the device and the rule. */
+RelaxBackendDecision
+DecideAutoRelaxBackend(const std::string & deviceRequest, const OpenCLDeviceQuery & query = QueryOpenCLDevice);
+
 /** Creates the relax filter for \a backend. \a deviceRequest picks an OpenCL device ("" = the default choice,
  * see the OpenCL variant). On Auto without a usable device, returns the CPU filter and sets \a notice to why;
- * on OpenCL without one, throws vr::InputError naming what was found. \a chosen receives the backend used. */
+ * on OpenCL without one, throws vr::InputError naming what was found. \a chosen receives the backend used and
+ * \a reason why (DecideAutoRelaxBackend() for Auto, which asks \a query). */
 RelaxFilterType::Pointer
-CreateRelaxFilter(RelaxBackend        backend,
-                  const std::string & deviceRequest,
-                  std::string &       notice,
-                  RelaxBackend *      chosen = nullptr);
+CreateRelaxFilter(RelaxBackend              backend,
+                  const std::string &       deviceRequest,
+                  std::string &             notice,
+                  RelaxBackend *            chosen = nullptr,
+                  std::string *             reason = nullptr,
+                  const OpenCLDeviceQuery & query = QueryOpenCLDevice);
 } // namespace vr
 
 #endif

@@ -144,6 +144,7 @@ struct VesselReformationLogic::Internals
   RelaxBackend                                    ChosenFor{ RelaxBackend::Auto };
   std::string                                     ChosenForDevice;
   itk::BilateralDepthRelaxSolver                  ChosenForSolver{ itk::BilateralDepthRelaxSolver::Jacobi };
+  OpenCLDeviceQuery                               OpenCLDevices = QueryOpenCLDevice; // which device Auto would get
   ResampleFilterType::Pointer                     UnfilteredResample = ResampleFilterType::New();
   ResampleFilterType::Pointer                     RelaxedResample = ResampleFilterType::New();
 
@@ -567,11 +568,31 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
   HasBackendChoice = false;
   RelaxFilterType::Pointer chosen = CPURelax;
   std::string              notice;
+  std::string              reason = "cpu requested";
+  bool                     tryOpenCL = Parameters.Backend == RelaxBackend::OpenCL;
   if (Parameters.Backend != RelaxBackend::CPU && Parameters.Solver == itk::BilateralDepthRelaxSolver::Steady)
   {
     notice = SteadySolverOnCPUNotice(Parameters.Backend);
+    reason = notice;
+    tryOpenCL = false;
   }
-  else if (Parameters.Backend != RelaxBackend::CPU)
+  else if (Parameters.Backend == RelaxBackend::OpenCL)
+  {
+    reason = "opencl requested";
+  }
+  else if (Parameters.Backend == RelaxBackend::Auto)
+  {
+    // OpenCL only on a GPU or an accelerator; on PoCL's CPU device the native path is faster (issue 13).
+    const RelaxBackendDecision decision = DecideAutoRelaxBackend(Parameters.OpenCLDevice, OpenCLDevices);
+    reason = decision.Reason;
+    tryOpenCL = decision.Backend == RelaxBackend::OpenCL;
+    if (!decision.DeviceProblem.empty())
+    {
+      notice =
+        "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + decision.DeviceProblem;
+    }
+  }
+  if (tryOpenCL)
   {
     RelaxFilterType::Pointer & cached = OpenCLRelax[Parameters.OpenCLDevice];
     std::string                why;
@@ -599,10 +620,12 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
     else
     {
       notice = "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
+      reason = "auto: OpenCL failed on the device (" + why + "), so the CPU";
     }
   }
   Relax = chosen;
   Outputs.RelaxBackendUsed = chosen == CPURelax ? ToString(RelaxBackend::CPU) : ToString(RelaxBackend::OpenCL);
+  Outputs.RelaxBackendReason = reason;
   BackendNotice = notice;
   Warning(BackendNotice, ParameterName::Backend);
   HasBackendChoice = true;
@@ -828,6 +851,13 @@ void
 VesselReformationLogic::SetWarningCallback(WarningCallback callback)
 {
   m_Internals->Warn = std::move(callback);
+}
+
+void
+VesselReformationLogic::SetOpenCLDeviceQuery(OpenCLDeviceQuery query)
+{
+  m_Internals->OpenCLDevices = query ? std::move(query) : OpenCLDeviceQuery(QueryOpenCLDevice);
+  m_Internals->HasBackendChoice = false;
 }
 
 const ReformationOutputs &

@@ -81,8 +81,10 @@ struct ReformationOutputs
   vtkSmartPointer<vtkPolyData> Surface;
   /** The resolved view every output lies on. */
   itk::CPRViewGeometry View;
-  /** The backend that relaxed the depth ("cpu" or "opencl"). */
+  /** The backend that relaxed the depth ("cpu" or "opencl"), and why that one (e.g. "auto: the OpenCL device ... is
+   * a CPU device, where the native CPU path is faster on the same cores, so the CPU"). */
   std::string RelaxBackendUsed;
+  std::string RelaxBackendReason;
   StageTimes  Times;
 };
 
@@ -197,6 +199,10 @@ public:
   /** \param callback receives warnings during Update(); may be empty. */
   void
   SetWarningCallback(WarningCallback callback);
+  /** \param query answers which OpenCL device the Auto backend would get (default vr::QueryOpenCLDevice, the
+   * installed drivers); the next Update() chooses the backend again. */
+  void
+  SetOpenCLDeviceQuery(OpenCLDeviceQuery query);
 
   /** Runs the stages that the changes since the previous Update() invalidate.
    * \return the outputs, valid until the next Update().

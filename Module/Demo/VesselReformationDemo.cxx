@@ -169,6 +169,7 @@ RunDemo(int argc, char * argv[])
                       ? std::string("steady solver")
                       : std::to_string(iterations) + " iterations")
                 << ", " << outputs.RelaxBackendUsed << "):" << std::endl;
+      std::cout << "    backend    " << outputs.RelaxBackendUsed << ": " << outputs.RelaxBackendReason << std::endl;
       PrintStages(outputs, before, logic.GetStageExecutionCounts());
       return Result{ vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth),
                      vr::ConvertVolumeNodeToDepthImage(outputs.CPR) };

@@ -239,8 +239,11 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
           << (fromSegmentation ? ", centerline extraction " : "")
           << (fromSegmentation ? std::to_string(std::lround(1e3 * times.Extraction)) : std::string()) << ", depth "
           << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", "
-          << parameters.Iterations << " iterations), resample " << 1e3 * times.Resample << ", surface "
-          << 1e3 * times.Surface;
+          << (parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
+                ? std::string("steady solver")
+                : std::to_string(parameters.Iterations) + " iterations")
+          << "), resample " << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface
+          << "; relax backend: " << results.RelaxBackendReason;
   progress.Print(std::cout, summary.str());
 }
 } // namespace

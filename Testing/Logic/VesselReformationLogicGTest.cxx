@@ -368,14 +368,28 @@ TEST_F(VesselReformationLogicTest, AbortUpdateStopsTheRelaxationAndTheNextUpdate
   EXPECT_NO_THROW(m_Logic.Update());
 }
 
+// A backend choice that keeps the relax filter reruns nothing (cpu -> auto on a CPU device: the same CPU filter); one
+// that changes it reruns relax and resample (-> opencl, where this machine has a usable OpenCL device).
 TEST_F(VesselReformationLogicTest, NewBackendRerunsRelaxAndResample)
 {
   m_Logic.Update();
   ReformationParameters parameters = m_Logic.GetParameters();
   parameters.Backend = vr::RelaxBackend::Auto;
   m_Logic.SetParameters(parameters);
+  m_Logic.SetOpenCLDeviceQuery([](const std::string &) { return vr::OpenCLDeviceKind{ "", "0:0 stub", "CPU" }; });
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 2, 2, 1, 2);
+  EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendUsed, "cpu");
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
+
+  std::string whyNot;
+  if (vr::TryCreateOpenCLRelaxFilter("", whyNot))
+  {
+    parameters.Backend = vr::RelaxBackend::OpenCL;
+    m_Logic.SetParameters(parameters);
+    m_Logic.Update();
+    EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendUsed, "opencl");
+    ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 2, 2, 1, 2);
+  }
 }
 
 TEST_F(VesselReformationLogicTest, SurfaceIsBuiltOnlyWhenEnabled)
@@ -488,6 +502,77 @@ TEST_F(VesselReformationLogicTest, AutoBackendNoticeIsAWarning)
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0], expected);
   }
+}
+
+/** A device query that reports \a type, or no device when \a type is empty (the device-type stub of issue 13). */
+vr::OpenCLDeviceQuery
+DeviceOfType(const std::string & type)
+{
+  return [type](const std::string &)
+  {
+    vr::OpenCLDeviceKind kind;
+    if (type.empty())
+    {
+      kind.WhyNot = "no OpenCL platform is installed";
+      return kind;
+    }
+    kind.Label = "0:0 stub device (stub platform, " + type + ")";
+    kind.Type = type;
+    return kind;
+  };
+}
+
+// Issue 13: auto takes OpenCL only on a GPU or an accelerator; a CPU device (PoCL) or none gives the CPU path.
+TEST(RelaxBackendChoice, AutoTakesOpenCLOnlyOnAGPUOrAnAccelerator)
+{
+  const auto cpu = vr::DecideAutoRelaxBackend("", DeviceOfType("CPU"));
+  EXPECT_EQ(cpu.Backend, vr::RelaxBackend::CPU);
+  EXPECT_NE(cpu.Reason.find("stub device"), std::string::npos) << cpu.Reason;
+  EXPECT_NE(cpu.Reason.find("CPU device"), std::string::npos) << cpu.Reason;
+  EXPECT_TRUE(cpu.DeviceProblem.empty());
+  for (const std::string type : { "GPU", "accelerator" })
+  {
+    const auto decision = vr::DecideAutoRelaxBackend("", DeviceOfType(type));
+    EXPECT_EQ(decision.Backend, vr::RelaxBackend::OpenCL) << type;
+    EXPECT_NE(decision.Reason.find(type), std::string::npos) << decision.Reason;
+  }
+  const auto none = vr::DecideAutoRelaxBackend("", DeviceOfType(""));
+  EXPECT_EQ(none.Backend, vr::RelaxBackend::CPU);
+  EXPECT_EQ(none.DeviceProblem, "no OpenCL platform is installed");
+  // The request reaches the query.
+  std::string asked;
+  vr::DecideAutoRelaxBackend("1:2",
+                             [&asked](const std::string & request)
+                             {
+                               asked = request;
+                               return vr::OpenCLDeviceKind{ "", "x", "CPU" };
+                             });
+  EXPECT_EQ(asked, "1:2");
+}
+
+// The logic reports its choice and the reason in its outputs; a CPU device is a choice, not a warning.
+TEST_F(VesselReformationLogicTest, AutoOnACPUDeviceRelaxesOnTheCPUAndSaysWhy)
+{
+  ReformationParameters parameters = m_Logic.GetParameters();
+  parameters.Backend = vr::RelaxBackend::Auto;
+  m_Logic.SetParameters(parameters);
+  m_Logic.SetOpenCLDeviceQuery(DeviceOfType("CPU"));
+  const auto & outputs = m_Logic.Update();
+  EXPECT_EQ(outputs.RelaxBackendUsed, "cpu");
+  EXPECT_NE(outputs.RelaxBackendReason.find("is a CPU device"), std::string::npos) << outputs.RelaxBackendReason;
+  EXPECT_TRUE(m_Logic.GetWarnings().empty());
+
+  m_Logic.SetOpenCLDeviceQuery(DeviceOfType(""));
+  m_Logic.Update();
+  EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendUsed, "cpu");
+  EXPECT_NE(m_Logic.GetOutputs().RelaxBackendReason.find("no usable OpenCL device"), std::string::npos);
+  ASSERT_EQ(m_Logic.GetWarnings().size(), 1u) << "no device at all is worth a warning";
+  EXPECT_NE(m_Logic.GetWarnings()[0].find("no OpenCL platform is installed"), std::string::npos);
+
+  parameters.Backend = vr::RelaxBackend::CPU;
+  m_Logic.SetParameters(parameters);
+  m_Logic.Update();
+  EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendReason, "cpu requested");
 }
 
 /** Update() must throw vr::InputError whose message holds every one of \a names and no command-line flag, and

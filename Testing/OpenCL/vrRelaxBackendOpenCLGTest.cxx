@@ -49,19 +49,64 @@ TEST(RelaxBackendWithOpenCL, CPUIsAlwaysTheCPUFilterWithoutNotice)
   ExpectItRelaxes(filter);
 }
 
-TEST(RelaxBackendWithOpenCL, AutoAndOpenCLGiveTheOpenCLFilterWhenADeviceWorks)
+/** A device query that reports \a type for whatever is asked (the device-type stub of issue 13). */
+vr::OpenCLDeviceQuery
+DeviceOfType(const std::string & type)
+{
+  return [type](const std::string &)
+  {
+    vr::OpenCLDeviceKind kind;
+    kind.Label = "0:0 stub device (stub platform, " + type + ")";
+    kind.Type = type;
+    return kind;
+  };
+}
+
+TEST(RelaxBackendWithOpenCL, OpenCLGivesTheOpenCLFilterWhenADeviceWorks)
 {
   VR_SKIP_WITHOUT_OPENCL_DEVICE();
-  for (const auto backend : { vr::RelaxBackend::Auto, vr::RelaxBackend::OpenCL })
+  std::string      notice;
+  std::string      reason;
+  vr::RelaxBackend chosen = vr::RelaxBackend::CPU;
+  const auto       filter = vr::CreateRelaxFilter(vr::RelaxBackend::OpenCL, "", notice, &chosen, &reason);
+  EXPECT_TRUE(IsOpenCL(filter));
+  EXPECT_EQ(chosen, vr::RelaxBackend::OpenCL);
+  EXPECT_EQ(reason, "opencl requested");
+  EXPECT_TRUE(notice.empty()) << notice;
+  ExpectItRelaxes(filter);
+}
+
+// Issue 13: auto takes OpenCL only on a GPU or an accelerator. With the device query stubbed to say GPU, auto builds
+// the real OpenCL filter on the real device; stubbed to say CPU (PoCL), it takes the native CPU path without trying.
+TEST(RelaxBackendWithOpenCL, AutoTakesOpenCLOnAGPUAndTheCPUPathOnACPUDevice)
+{
+  std::string      notice = "stale";
+  std::string      reason;
+  vr::RelaxBackend chosen = vr::RelaxBackend::OpenCL;
+  auto filter = vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", notice, &chosen, &reason, DeviceOfType("CPU"));
+  EXPECT_FALSE(IsOpenCL(filter));
+  EXPECT_EQ(chosen, vr::RelaxBackend::CPU);
+  EXPECT_TRUE(notice.empty()) << "a deliberate choice, not a failure: " << notice;
+  EXPECT_NE(reason.find("is a CPU device"), std::string::npos) << reason;
+  EXPECT_NE(reason.find("stub device"), std::string::npos) << reason;
+  ExpectItRelaxes(filter);
+
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  for (const std::string type : { "GPU", "accelerator" })
   {
-    std::string      notice;
-    vr::RelaxBackend chosen = vr::RelaxBackend::CPU;
-    const auto       filter = vr::CreateRelaxFilter(backend, "", notice, &chosen);
-    EXPECT_TRUE(IsOpenCL(filter)) << vr::ToString(backend);
-    EXPECT_EQ(chosen, vr::RelaxBackend::OpenCL);
+    filter = vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", notice, &chosen, &reason, DeviceOfType(type));
+    EXPECT_TRUE(IsOpenCL(filter)) << type;
+    EXPECT_EQ(chosen, vr::RelaxBackend::OpenCL) << type;
     EXPECT_TRUE(notice.empty()) << notice;
+    EXPECT_NE(reason.find("OpenCL on 0:0 stub device"), std::string::npos) << reason;
     ExpectItRelaxes(filter);
   }
+
+  // With the installed drivers' answer: OpenCL exactly when the default device is not a CPU device.
+  filter = vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", notice, &chosen, &reason);
+  const auto device = vr::FindOpenCLDevice("", "test");
+  EXPECT_EQ(IsOpenCL(filter), !device.IsCPU) << device.Label() << ": " << reason;
+  EXPECT_NE(reason.find(device.Label()), std::string::npos) << reason;
 }
 
 TEST(RelaxBackendWithOpenCL, AutoWithoutTheRequestedDeviceFallsBackToTheCPUAndSaysWhy)
@@ -152,7 +197,8 @@ TEST(RelaxBackendWithOpenCL, AKernelThatDoesNotBuildMakesAutoFallBackAndOpenCLFa
 
   std::string      notice;
   vr::RelaxBackend chosen = vr::RelaxBackend::OpenCL;
-  const auto       filter = vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", notice, &chosen);
+  // Auto tries OpenCL only on a GPU: the stub says it is one, the kernel build on the real device fails.
+  const auto filter = vr::CreateRelaxFilter(vr::RelaxBackend::Auto, "", notice, &chosen, nullptr, DeviceOfType("GPU"));
   EXPECT_FALSE(IsOpenCL(filter));
   EXPECT_EQ(chosen, vr::RelaxBackend::CPU);
   EXPECT_NE(notice.find("failed to build"), std::string::npos) << notice;
