@@ -306,7 +306,14 @@ VesselReformationLogic::Internals::RunDepth(double from, double to)
   }
   catch (const itk::ExceptionObject & error)
   {
-    RethrowAsInputError("view", error);
+    // The view's size follows from the spacing when only that was given: name it (e.g. a spacing of 1e-300 mm).
+    std::ostringstream stage;
+    stage << "view";
+    if (Parameters.PixelSpacing[0] > 0.0 && Parameters.ImageSize[0] == 0)
+    {
+      stage << " at spacing (--spacing) " << Parameters.PixelSpacing[0] << "," << Parameters.PixelSpacing[1] << " mm";
+    }
+    RethrowAsInputError(stage.str(), error);
   }
   auto filter = DepthFilterType::New();
   filter->SetCenterlineTree(Tree);

@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrITKMessages.h"
 
+#include <iostream>
 #include <mutex>
 #include <sstream>
 #include <vector>
@@ -132,6 +133,30 @@ ScopedSilentITKOutput::ScopedSilentITKOutput()
   OutputWindowMutex().lock();
   m_Previous = itk::OutputWindow::GetInstance();
   itk::OutputWindow::SetInstance(SilentOutputWindow::New());
+}
+
+ScopedConsoleCapture::ScopedConsoleCapture()
+  : m_PreviousError(std::cerr.rdbuf(m_Text.rdbuf()))
+  , m_PreviousOutput(std::cout.rdbuf(m_Text.rdbuf()))
+{
+}
+
+ScopedConsoleCapture::~ScopedConsoleCapture()
+{
+  std::cerr.rdbuf(m_PreviousError);
+  std::cout.rdbuf(m_PreviousOutput);
+}
+
+std::string
+ScopedConsoleCapture::FirstLine() const
+{
+  const std::string text = m_Text.str();
+  const auto        first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos)
+  {
+    return std::string();
+  }
+  return Trim(text.substr(first, text.find('\n', first) - first));
 }
 
 ScopedSilentITKOutput::~ScopedSilentITKOutput()

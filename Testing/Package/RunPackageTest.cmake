@@ -23,7 +23,7 @@ run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/
 run_step("configure the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/Consumer -B ${WORK_DIR}/build -G ${GENERATOR}
   -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
   -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DITK_DIR=${ITK_DIR} -DVTK_DIR=${VTK_DIR}
-  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+  -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CXX_FLAGS}")
 run_step("build the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build -j 1)
 run_step("run the consumer" ${WORK_DIR}/build/Consumer)
 message(STATUS "${last_output}")
