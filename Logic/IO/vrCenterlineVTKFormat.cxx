@@ -66,6 +66,7 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
     else
     {
       report.Format = "legacy VTK PolyData (.vtk)";
+      CheckLegacyVTKPolyData(path);
       auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
       capture.Observe(reader);
       reader->SetFileName(path.c_str());
