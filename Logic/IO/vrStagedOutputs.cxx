@@ -2,10 +2,11 @@
 #include "vrStagedOutputs.h"
 
 #include "vrInputError.h"
+#include "vrText.h"
 #include "vrURINames.h"
 
 #include <cerrno>
-#include <chrono>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -28,9 +29,19 @@ constexpr const char * FilesName = "files";
 constexpr const char * JournalName = "journal";
 constexpr const char * CommittedName = "committed";
 constexpr const char * JournalHeader = "vr-staging 1";
-/** A staging folder without a lock file is one a run is creating this very moment, or one whose run died before it
- * could lock it; only an old one is taken as the second. */
-constexpr auto UnlockedStagingAge = std::chrono::minutes(1);
+/** A staging folder without a lock file is one a run is creating or removing this very moment, or one whose run died
+ * doing so: its name carries the creator's process id, ".vr-staging-<pid>-XXXXXX", to tell the two apart. */
+bool
+CreatorIsDead(const fs::path & staging)
+{
+  const std::string name = staging.filename().string().substr(std::strlen(StagingPrefix));
+  long long         pid = 0;
+  if (!ParseWholeInteger(name.substr(0, name.find('-')), pid) || pid <= 0)
+  {
+    return false;
+  }
+  return ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
 
 std::string
 ErrnoText()
@@ -199,10 +210,10 @@ RemoveStaging(const fs::path & staging)
   fs::remove_all(staging, ignored);
 }
 
-/** Recovers the committed or abandoned run whose primary staging folder is \a primary (locked by the caller, or
- * \a primaryLocked false when it no longer exists). */
+/** Recovers the committed or abandoned run whose primary staging folder is \a primary, locked by the caller, as is
+ * \a lockedMember when not empty (a member whose recovery led here: a second flock on it would fail). */
 void
-RecoverRun(const fs::path & primary, const Journal & journal, bool committed)
+RecoverRun(const fs::path & primary, const Journal & journal, bool committed, const fs::path & lockedMember = {})
 {
   for (const auto & member : journal.Members)
   {
@@ -211,8 +222,8 @@ RecoverRun(const fs::path & primary, const Journal & journal, bool committed)
     {
       continue;
     }
-    const int lock = TryLock(memberPath);
-    if (lock < 0)
+    const int lock = memberPath == lockedMember ? -2 : TryLock(memberPath);
+    if (lock == -1)
     {
       continue; // gone already, or another run is recovering it
     }
@@ -225,7 +236,10 @@ RecoverRun(const fs::path & primary, const Journal & journal, bool committed)
     {
       RemoveStaging(memberPath);
     }
-    ::close(lock);
+    if (lock >= 0)
+    {
+      ::close(lock);
+    }
   }
   if (committed)
   {
@@ -270,14 +284,14 @@ RecoverLockedStaging(const fs::path & staging)
   Journal primaryJournal;
   if (ReadJournal(primary, primaryJournal) && fs::exists(primary / CommittedName, error))
   {
-    RecoverRun(primary, primaryJournal, true);
+    RecoverRun(primary, primaryJournal, true, staging);
   }
   else
   {
     RemoveStaging(staging);
     Journal uncommitted;
     uncommitted.Members = primaryJournal.Members;
-    RecoverRun(primary, uncommitted, false);
+    RecoverRun(primary, uncommitted, false, staging);
   }
   ::close(primaryLock);
   if (fs::exists(staging, error))
@@ -318,8 +332,8 @@ StagedOutputs::RecoverStaleStaging(const std::string & folder)
       {
         continue; // a live run's
       }
-      const auto age = fs::file_time_type::clock::now() - fs::last_write_time(staging, error);
-      if (!error && age > UnlockedStagingAge)
+      // No lock file: killed while it created or removed the folder (never while it held outputs to publish).
+      if (CreatorIsDead(staging))
       {
         RemoveStaging(staging);
         ++handled;
@@ -370,7 +384,8 @@ StagedOutputs::FolderFor(const std::string & outputFolder, const std::string & w
     }
   }
   RecoverStaleStaging(outputFolder);
-  std::string pattern = (fs::path(outputFolder) / (std::string(StagingPrefix) + "XXXXXX")).string();
+  std::string pattern =
+    (fs::path(outputFolder) / (std::string(StagingPrefix) + std::to_string(::getpid()) + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr)
   {
     throw InputError(what + ": the folder " + outputFolder + " cannot be written (" + ErrnoText() + ")");
@@ -533,10 +548,9 @@ StagedOutputs::CommitAll()
   }
   m_Committed = true;
   // 3. Publish, the primary last: until it is gone, its marker says the run is to be rolled forward.
-  for (std::size_t k = m_Folders.size(); k-- > 0;)
+  for (std::size_t k = 1; k <= m_Folders.size(); ++k)
   {
-    const std::size_t index = (k + 1) % m_Folders.size(); // members 1..n-1 first, then 0
-    const Folder &    folder = m_Folders[index];
+    const Folder & folder = m_Folders[k % m_Folders.size()]; // members 1..n-1 first, then the primary, 0
     if (!PublishStaging(folder.Staging, folder.FileNames))
     {
       throw InputError("outputs in " + folder.OutputFolder + ": could not be moved into place (" + ErrnoText() +

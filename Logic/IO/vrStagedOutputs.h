@@ -12,7 +12,7 @@ namespace vr
  * \brief All-or-nothing output files of a run, published together and recoverably (DESIGN section 5).
  *
  * Each output is reserved before any work (its folder is checked then, so a bad path fails in a second, not after
- * the computation) and written into a staging folder, ".vr-staging-XXXXXX", created beside the outputs in their
+ * the computation) and written into a staging folder, ".vr-staging-<pid>-XXXXXX", created beside the outputs in their
  * own folder (so on their file system, where a rename is atomic). CommitAll() then publishes them together:
  *
  * 1. every staged file is flushed to disk, and every staging folder gets a journal listing its files, its run's
@@ -27,7 +27,8 @@ namespace vr
  * whose lock no live process holds) and rolls it forward when its primary is committed, finishing the renames,
  * or else deletes it. So the published outputs are always one run's complete set, and no stray file outlives the
  * next run. A run holds an exclusive flock() on its staging folders' lock files while it lives; the kernel drops it
- * when the process dies, however it dies.
+ * when the process dies, however it dies. A staging folder without its lock file (a run killed while creating or
+ * removing it) is deleted once the process id in its name is no longer alive.
  *
  * A name with a URI scheme (vr::IsURIName, e.g. 3D Slicer's in-memory "slicer:0x...#node") is no file: the writer
  * gets the name itself, it is neither staged nor renamed, and CommitAll() leaves it alone. So is a path inside

@@ -8,6 +8,7 @@
 #include "vrImageIO.h"
 #include "vrModuleDescription.h"
 #include "vrReformationParameters.h"
+#include "vrTestProcesses.h"
 #include "vrVolumeIO.h"
 
 #include "itkImageFileWriter.h"
@@ -70,25 +71,9 @@ struct SlicerProcessInformation
   double ElapsedTime;
 };
 
-struct RunResult
-{
-  int  ExitCode{ -1 };
-  bool Crashed{ false };
-  /** Killed by RunProgram after its time limit. */
-  bool        Killed{ false };
-  double      Seconds{ 0.0 };
-  std::string Out;
-  std::string Err;
-};
-
-/** How RunProgram runs a program besides its arguments. */
-struct RunLimits
-{
-  /** Kill it with SIGKILL after this many seconds (0: wait for ever). */
-  double KillAfterSeconds{ 0.0 };
-  /** RLIMIT_FSIZE in bytes (0: none): writes past it fail with EFBIG, as on a full disk; SIGXFSZ is ignored. */
-  long long FileSizeLimit{ 0 };
-};
+using vr::test::RunLimits;
+using vr::test::RunProgram;
+using vr::test::RunResult;
 
 std::string
 ReadText(const fs::path & path)
@@ -127,79 +112,6 @@ TestFolder()
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;
-}
-
-/** Runs \a arguments[0] with the rest as its arguments; stdout and stderr are captured through files in a folder of
- * their own, so that tests can check which files appear beside the outputs. */
-RunResult
-RunProgram(const std::vector<std::string> & arguments, const RunLimits & limits = RunLimits())
-{
-  static int     counter = 0;
-  const fs::path capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
-  fs::create_directories(capture);
-  const fs::path out = capture / ("out-" + std::to_string(::getpid()) + "-" + std::to_string(counter) + ".txt");
-  const fs::path err = capture / ("err-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".txt");
-
-  std::vector<char *> argv;
-  for (const auto & argument : arguments)
-  {
-    argv.push_back(const_cast<char *>(argument.c_str()));
-  }
-  argv.push_back(nullptr);
-  RunResult   result;
-  const auto  start = std::chrono::steady_clock::now();
-  const int   outFile = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  const int   errFile = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  const pid_t pid = ::fork();
-  if (pid == 0)
-  {
-    ::dup2(outFile, STDOUT_FILENO);
-    ::dup2(errFile, STDERR_FILENO);
-    if (limits.FileSizeLimit > 0)
-    {
-      ::signal(SIGXFSZ, SIG_IGN);
-      const struct rlimit limit = { static_cast<rlim_t>(limits.FileSizeLimit),
-                                    static_cast<rlim_t>(limits.FileSizeLimit) };
-      ::setrlimit(RLIMIT_FSIZE, &limit);
-    }
-    ::execve(argv[0], argv.data(), environ);
-    ::_exit(127);
-  }
-  ::close(outFile);
-  ::close(errFile);
-  if (pid < 0)
-  {
-    ADD_FAILURE() << "could not start " << arguments[0];
-    return result;
-  }
-  int status = 0;
-  if (limits.KillAfterSeconds > 0.0)
-  {
-    const auto deadline = start + std::chrono::duration<double>(limits.KillAfterSeconds);
-    while (::waitpid(pid, &status, WNOHANG) == 0)
-    {
-      if (std::chrono::steady_clock::now() >= deadline)
-      {
-        ::kill(pid, SIGKILL);
-        ::waitpid(pid, &status, 0);
-        result.Killed = true;
-        break;
-      }
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
-    }
-  }
-  else
-  {
-    ::waitpid(pid, &status, 0);
-  }
-  result.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  result.Crashed = WIFSIGNALED(status) && !result.Killed;
-  result.ExitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.Out = ReadText(out);
-  result.Err = ReadText(err);
-  fs::remove(out);
-  fs::remove(err);
-  return result;
 }
 
 template<typename TSymbol>
