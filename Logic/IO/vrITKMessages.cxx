@@ -159,6 +159,22 @@ ScopedConsoleCapture::FirstLine() const
   return Trim(text.substr(first, text.find('\n', first) - first));
 }
 
+std::string
+ScopedConsoleCapture::FirstLineStartingWith(const std::string & prefix) const
+{
+  std::istringstream lines(m_Text.str());
+  std::string        line;
+  while (std::getline(lines, line))
+  {
+    line = Trim(line);
+    if (line.rfind(prefix, 0) == 0)
+    {
+      return line;
+    }
+  }
+  return std::string();
+}
+
 ScopedSilentITKOutput::~ScopedSilentITKOutput()
 {
   itk::OutputWindow::SetInstance(m_Previous);

@@ -51,6 +51,10 @@ public:
   /** The first line printed (MetaIO repeats itself line by line), trimmed; empty when nothing was printed. */
   std::string
   FirstLine() const;
+  /** The first line printed that starts with \a prefix ("Meta": MetaIO's complaints, not ITK's warnings), trimmed;
+   * empty when none. */
+  std::string
+  FirstLineStartingWith(const std::string & prefix) const;
 
 private:
   std::ostringstream m_Text;

@@ -139,9 +139,10 @@ Read2DImage(const std::string & path, const std::string & role)
       throw InputError(role + " " + path +
                        ": the pixel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
     }
-    if (!console.FirstLine().empty())
+    const std::string metaIO = console.FirstLineStartingWith("Meta"); // not ITK's warnings about valid files
+    if (!metaIO.empty())
     {
-      throw InputError(role + " " + path + ": the pixel data cannot be read (truncated?): " + console.FirstLine());
+      throw InputError(role + " " + path + ": the pixel data cannot be read (truncated?): " + metaIO);
     }
   }
   typename TImage::Pointer image = reader->GetOutput();

@@ -233,9 +233,11 @@ ReadVolumeFile(const std::string & path)
                        ": the voxel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception) +
                        (console.FirstLine().empty() ? std::string() : " (" + console.FirstLine() + ")"));
     }
-    if (!console.FirstLine().empty())
+    // Only MetaIO's own complaints: an ITK warning about a valid file (printed there too) is no failure.
+    const std::string metaIO = console.FirstLineStartingWith("Meta");
+    if (!metaIO.empty())
     {
-      throw InputError(where + ": the voxel data cannot be read (truncated?): " + console.FirstLine());
+      throw InputError(where + ": the voxel data cannot be read (truncated?): " + metaIO);
     }
   }
   VolumeImageType::Pointer volume = reader->GetOutput();
