@@ -47,55 +47,67 @@ void
 ReformationParameters::Validate() const
 {
   std::ostringstream problem;
+  const char *       parameter = "";
   if (!AutomaticUp && !(std::isfinite(Up[0]) && std::isfinite(Up[1]) && std::isfinite(Up[2]) && Up.GetNorm() > 1e-12))
   {
-    problem << "up axis (--up) = " << Join(Up, 3) << ": must be a finite, non-zero LPS vector, S or auto";
+    parameter = ParameterName::UpAxis;
+    problem << "up axis = " << Join(Up, 3) << ": must be a finite, non-zero LPS vector, or automatic";
   }
   else if (!std::isfinite(AngleInDegrees))
   {
-    problem << "angle (--angle) = " << AngleInDegrees << " degrees: must be a finite number";
+    parameter = ParameterName::Angle;
+    problem << "angle = " << AngleInDegrees << " degrees: must be a finite number";
   }
   else if (HasCenter && !(std::isfinite(Center[0]) && std::isfinite(Center[1]) && std::isfinite(Center[2])))
   {
+    parameter = ParameterName::ViewCenter;
     problem << "view centre = " << Join(Center, 3) << " mm: must be finite";
   }
   else if ((ImageSize[0] == 0) != (ImageSize[1] == 0))
   {
-    problem << "size (--size) = " << Join(ImageSize, 2) << ": W and H must both be >= 1 pixel (or both unset)";
+    parameter = ParameterName::ViewSize;
+    problem << "view size = " << Join(ImageSize, 2) << ": W and H must both be >= 1 pixel (or both unset)";
   }
   else if (!(std::isfinite(PixelSpacing[0]) && std::isfinite(PixelSpacing[1]) && PixelSpacing[0] >= 0.0 &&
              PixelSpacing[1] >= 0.0) ||
            ((PixelSpacing[0] == 0.0) != (PixelSpacing[1] == 0.0)))
   {
-    problem << "spacing (--spacing) = " << Join(PixelSpacing, 2) << " mm: both must be finite and > 0 (or both unset)";
+    parameter = ParameterName::PixelSpacing;
+    problem << "pixel spacing = " << Join(PixelSpacing, 2) << " mm: both must be finite and > 0 (or both unset)";
   }
   else if (!(std::isfinite(Relaxation) && Relaxation >= 0.0 && Relaxation <= 1.0))
   {
-    problem << "relaxation w (--relaxation) = " << Relaxation << ": must be in [0, 1]";
+    parameter = ParameterName::Relaxation;
+    problem << "relaxation w = " << Relaxation << ": must be in [0, 1]";
   }
   else if (!(std::isfinite(Anisotropy) && Anisotropy >= 0.0))
   {
-    problem << "anisotropy a (--anisotropy) = " << Anisotropy << " mm^-2: must be finite and >= 0";
+    parameter = ParameterName::Anisotropy;
+    problem << "anisotropy a = " << Anisotropy << " mm^-2: must be finite and >= 0";
   }
   else if (Iterations < 0 || Iterations > static_cast<long long>(std::numeric_limits<unsigned int>::max()))
   {
-    problem << "iterations N (--iterations) = " << Iterations << ": must be a whole number >= 0";
+    parameter = ParameterName::Iterations;
+    problem << "iterations N = " << Iterations << ": must be a whole number >= 0";
   }
   else if (!(std::isfinite(SlabThickness) && SlabThickness >= 0.0))
   {
-    problem << "slab thickness (--slabThickness) = " << SlabThickness << " mm: must be finite and >= 0";
+    parameter = ParameterName::SlabThickness;
+    problem << "slab thickness = " << SlabThickness << " mm: must be finite and >= 0";
   }
   else if (!(std::isfinite(Window) && Window >= 0.0))
   {
-    problem << "window (--window) = " << Window << ": must be finite and >= 0 (0 = the CPR's full range)";
+    parameter = ParameterName::Window;
+    problem << "window = " << Window << ": must be finite and >= 0 (0 = the CPR's full range)";
   }
   else if (!std::isfinite(Level))
   {
-    problem << "level (--level) = " << Level << ": must be finite";
+    parameter = ParameterName::Level;
+    problem << "level = " << Level << ": must be finite";
   }
   if (!problem.str().empty())
   {
-    throw InputError(problem.str());
+    throw InputError(problem.str(), parameter);
   }
 }
 

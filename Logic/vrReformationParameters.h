@@ -5,6 +5,7 @@
 #include "itkCPRDepthMode.h"
 #include "itkCPRResampleImageFilter.h"
 #include "itkCPRViewGeometry.h"
+#include "vrParameterName.h"
 #include "vrRelaxBackend.h"
 
 #include <string>
@@ -15,12 +16,13 @@ namespace vr
  * \brief Every setting of a vessel reformation in one object (3D Slicer's parameter node): the view, the depth
  * mode, the relaxation, the backend, the lumen fixing, the sampling and the display window.
  *
- * Geometry is in LPS millimetres, like the command line's --up and the views stored in the outputs. Zero sizes
- * and spacings mean "fit the centerline tree" (DESIGN 3.2). Validate() names the parameter, its command-line
- * flag and the bad value. The module logic compares the parameters of successive runs to recompute only what a
+ * Geometry is in LPS millimetres, like the views stored in the outputs. Zero sizes and spacings mean "fit the
+ * centerline tree" (DESIGN 3.2). Validate() names the parameter by its meaning (vr::ParameterName) and the bad
+ * value. The module logic compares the parameters of successive runs to recompute only what a
  * change invalidates (DESIGN 3.7).
  *
  * \sa VesselReformationLogic
+ * \ingroup VesselReformation
  */
 struct ReformationParameters
 {
@@ -30,49 +32,50 @@ struct ReformationParameters
   /** Every parameter at its default (below). */
   ReformationParameters();
 
-  /** Take the volume axis along which the tree extends most as the rotation axis (--up auto). */
+  /** Take the volume axis along which the tree extends most as the rotation axis. */
   bool AutomaticUp{ false };
-  /** The rotation axis in LPS when AutomaticUp is off; default superior (--up S). */
+  /** The rotation axis in LPS when AutomaticUp is off; default superior. */
   VectorType Up;
-  /** Rotation angle theta about up, in degrees (--angle). */
+  /** Rotation angle theta about up, in degrees. */
   double AngleInDegrees{ 0.0 };
   /** View centre C in LPS mm; without one, the centre of the tree's bounding box. */
   bool      HasCenter{ false };
   PointType Center{};
-  /** Image size W x H in pixels (--size); 0 x 0 fits the tree. */
+  /** Image size W x H in pixels; 0 x 0 fits the tree. */
   itk::Size<2> ImageSize{ { 0, 0 } };
-  /** Pixel spacing sx, sy in mm (--spacing); 0 x 0 takes the default (the volume's smallest spacing, or what
+  /** Pixel spacing sx, sy in mm; 0 x 0 takes the default (the volume's smallest spacing, or what
    * fits the tree into ImageSize). */
   itk::Vector<double, 2> PixelSpacing;
 
-  /** Scanline (mpCPR) or Nearest depth assignment (--mode). */
+  /** Scanline (mpCPR) or Nearest depth assignment. */
   itk::CPRDepthMode Mode{ itk::CPRDepthMode::Scanline };
-  /** Fix the lumen (pixels within the owner's radius) as well as the centerline pixels (--fixLumen on|off). */
+  /** Fix the lumen (pixels within the owner's radius) as well as the centerline pixels. */
   bool FixLumen{ true };
 
-  /** Relaxation w in [0, 1] (--relaxation). */
+  /** Relaxation w in [0, 1]. */
   double Relaxation{ 1.0 };
-  /** Anisotropy a >= 0, in mm^-2 (--anisotropy). */
+  /** Anisotropy a >= 0, in mm^-2. */
   double Anisotropy{ 0.5 };
-  /** Jacobi iterations N >= 0 (--iterations); signed so that a negative request is reported, not wrapped. */
+  /** Jacobi iterations N >= 0; signed so that a negative request is reported, not wrapped. */
   long long Iterations{ 500 };
-  /** Where the relaxation runs (--backend) and which OpenCL device is asked for (--openclDevice, "" = any). */
+  /** Where the relaxation runs, and which OpenCL device is asked for ("" = the default choice). */
   RelaxBackend Backend{ RelaxBackend::Auto };
   std::string  OpenCLDevice;
 
-  /** How the volume is sampled on the cut surface (--interpolation). */
+  /** How the volume is sampled on the cut surface. */
   itk::CPRInterpolationMode Interpolation{ itk::CPRInterpolationMode::Linear };
-  /** Slab thickness T >= 0 along the view direction, in mm (--slabThickness); 0 samples the surface alone. */
+  /** Slab thickness T >= 0 along the view direction, in mm; 0 samples the surface alone. */
   double SlabThickness{ 0.0 };
-  /** How a slab's samples combine (--slabMode). */
+  /** How a slab's samples combine. */
   itk::CPRSlabMode SlabMode{ itk::CPRSlabMode::MIP };
 
-  /** Display window width (>= 0; 0 = the CPR's full range) and level, in the volume's intensity unit (--window,
-   * --level). Changing them recomputes nothing. */
+  /** Display window width (>= 0; 0 = the CPR's full range) and level, in the volume's intensity unit. Changing
+   * them recomputes nothing. */
   double Window{ 0.0 };
   double Level{ 0.0 };
 
-  /** Checks every parameter; throws vr::InputError naming the first invalid one, its flag and its value. */
+  /** Checks every parameter; throws vr::InputError naming the first invalid one (by meaning, also in
+   * InputError::Parameter()) and its value. */
   void
   Validate() const;
 
@@ -81,7 +84,9 @@ struct ReformationParameters
   ToViewSpecification() const;
 };
 
-/** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto". */
+/** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto".
+ * \ingroup VesselReformation
+ */
 struct UpAxisChoice
 {
   bool                   Automatic{ false };
@@ -90,7 +95,7 @@ struct UpAxisChoice
 
 /** Parsers for the text forms of the parameters (command line, presets).
  * \param text the value as written.
- * \param what how the caller names it in messages, e.g. "--up".
+ * \param what how the caller names it in messages (a command line passes its flag, e.g. "--up").
  * \return the value; each throws vr::InputError naming \a what and \a text when the text is not a valid value. */
 UpAxisChoice
 ParseUpAxis(const std::string & text, const std::string & what);

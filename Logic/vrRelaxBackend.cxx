@@ -2,6 +2,8 @@
 #include "vrRelaxBackend.h"
 
 #include "vrInputError.h"
+#include "vrParameterName.h"
+#include "vrText.h"
 
 #ifdef VESSELREFORMATION_HAS_OPENCL
 #include "itkOpenCLBilateralDepthRelaxFilter.h"
@@ -30,8 +32,7 @@ ToString(RelaxBackend backend)
 RelaxBackend
 ParseRelaxBackend(const std::string & text, const std::string & what)
 {
-  std::string lower = text;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string lower = ToLower(text);
   if (lower == "auto")
   {
     return RelaxBackend::Auto;
@@ -44,7 +45,37 @@ ParseRelaxBackend(const std::string & text, const std::string & what)
   {
     return RelaxBackend::OpenCL;
   }
-  throw InputError(what + ": \"" + text + "\" is not a backend; use auto, cpu or opencl");
+  throw InputError(what + ": \"" + text + "\" is not a backend; use auto, cpu or opencl", ParameterName::Backend);
+}
+
+RelaxFilterType::Pointer
+TryCreateOpenCLRelaxFilter(const std::string & deviceRequest, std::string & whyNot)
+{
+  whyNot.clear();
+#ifdef VESSELREFORMATION_HAS_OPENCL
+  // The same checks the filter's first Update() would make, done now: is there a device (VR_OPENCL_DEVICE and
+  // deviceRequest as the filter reads them), and does the kernel build on it?
+  try
+  {
+    vr::FindOpenCLDevice(deviceRequest, "device request");
+    auto filter = itk::OpenCLBilateralDepthRelaxFilter::New();
+    filter->SetDeviceRequest(deviceRequest);
+    filter->PrepareDevice();
+    return filter.GetPointer();
+  }
+  catch (const InputError & error)
+  {
+    whyNot = error.what();
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    whyNot = error.GetDescription();
+  }
+#else
+  (void)deviceRequest;
+  whyNot = "this build has no OpenCL support (configure with VR_USE_OPENCL=ON)";
+#endif
+  return nullptr;
 }
 
 RelaxFilterType::Pointer
@@ -59,45 +90,20 @@ CreateRelaxFilter(RelaxBackend backend, const std::string & deviceRequest, std::
   {
     return RelaxFilterType::New();
   }
-  const std::string requested = backend == RelaxBackend::OpenCL ? "backend opencl" : "backend auto";
-
-#ifdef VESSELREFORMATION_HAS_OPENCL
-  // The same checks the filter's first Update() would make, done now so that auto can still fall back: is there a
-  // device (VR_OPENCL_DEVICE and deviceRequest as the filter reads them), and does the kernel build on it?
   std::string why;
-  try
+  if (auto filter = TryCreateOpenCLRelaxFilter(deviceRequest, why))
   {
-    vr::FindOpenCLDevice(deviceRequest, "device request");
-    auto filter = itk::OpenCLBilateralDepthRelaxFilter::New();
-    filter->SetDeviceRequest(deviceRequest);
-    filter->PrepareDevice();
     if (chosen)
     {
       *chosen = RelaxBackend::OpenCL;
     }
-    return filter.GetPointer();
-  }
-  catch (const InputError & error)
-  {
-    why = error.what();
-  }
-  catch (const itk::ExceptionObject & error)
-  {
-    why = error.GetDescription();
+    return filter;
   }
   if (backend == RelaxBackend::OpenCL)
   {
-    throw InputError(requested + ": no usable OpenCL device: " + why);
+    throw InputError("relax backend opencl: no usable OpenCL device: " + why, ParameterName::Backend);
   }
-  notice = requested + ": OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
-#else
-  (void)deviceRequest;
-  if (backend == RelaxBackend::OpenCL)
-  {
-    throw InputError(requested + ": this build has no OpenCL support (configure with VR_USE_OPENCL=ON)");
-  }
-  notice = requested + ": this build has no OpenCL support, relaxing on the CPU";
-#endif
+  notice = "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
   return RelaxFilterType::New();
 }
 } // namespace vr

@@ -8,15 +8,18 @@
 #include "vrCutSurface.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
+#include "vrParameterName.h"
 
 #include <vtkPolyData.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <climits>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <unistd.h>
 
@@ -24,8 +27,8 @@ namespace vr
 {
 namespace
 {
-using DepthFilterType = itk::CPRDepthImageFilter<DepthImageType>;
-using ResampleFilterType = itk::CPRResampleImageFilter<VolumeImageType, DepthImageType, DepthImageType>;
+using DepthFilterType = VesselReformationLogic::DepthFilterType;
+using ResampleFilterType = VesselReformationLogic::ResampleFilterType;
 using Clock = std::chrono::steady_clock;
 
 double
@@ -42,85 +45,37 @@ Gibibytes(double bytes)
   return text.str();
 }
 
-/** The parameters that decide the depth map (and so everything after it). */
-bool
-SameDepthParameters(const ReformationParameters & a, const ReformationParameters & b)
-{
-  return a.AutomaticUp == b.AutomaticUp && (a.AutomaticUp || a.Up == b.Up) && a.AngleInDegrees == b.AngleInDegrees &&
-         a.HasCenter == b.HasCenter && (!a.HasCenter || a.Center == b.Center) && a.ImageSize == b.ImageSize &&
-         a.PixelSpacing == b.PixelSpacing && a.Mode == b.Mode && a.FixLumen == b.FixLumen;
-}
-
-bool
-SameBackend(const ReformationParameters & a, const ReformationParameters & b)
-{
-  return a.Backend == b.Backend && a.OpenCLDevice == b.OpenCLDevice;
-}
-
-bool
-SameRelaxParameters(const ReformationParameters & a, const ReformationParameters & b)
-{
-  return a.Relaxation == b.Relaxation && a.Anisotropy == b.Anisotropy && a.Iterations == b.Iterations &&
-         SameBackend(a, b);
-}
-
-bool
-SameResampleParameters(const ReformationParameters & a, const ReformationParameters & b)
-{
-  return a.Interpolation == b.Interpolation && a.SlabThickness == b.SlabThickness && a.SlabMode == b.SlabMode;
-}
-
-/** Turns a filter's itk::ExceptionObject into the one error type the logic reports. */
+/** Turns a filter's itk::ExceptionObject into the one error type the logic reports (an abort into Cancelled). */
 [[noreturn]] void
-RethrowAsInputError(const std::string & stage, const itk::ExceptionObject & error)
+RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error)
 {
+  if (dynamic_cast<const itk::ProcessAborted *>(&error) != nullptr)
+  {
+    throw Cancelled(stage + ": cancelled");
+  }
   throw InputError(stage + ": " + error.GetDescription());
 }
 
-/** Sets w, a, N on \a filter and runs it on \a depth with \a mask, reporting progress in [from, to]. */
-DepthImageType::Pointer
-RunRelaxFilter(RelaxFilterType *                                filter,
-               const DepthImageType *                           depth,
-               const MaskImageType *                            mask,
-               const ReformationParameters &                    parameters,
-               const VesselReformationLogic::ProgressCallback & progress,
-               double                                           from,
-               double                                           to)
+/** Sets w, a, N on \a filter. */
+void
+ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & parameters)
 {
-  filter->SetInput(depth);
-  filter->SetFixedMask(mask);
   filter->SetRelaxation(parameters.Relaxation);
   filter->SetAnisotropy(parameters.Anisotropy);
   filter->SetNumberOfIterations(static_cast<unsigned int>(parameters.Iterations));
-  filter->Modified(); // rerun even when a previous run of the same settings failed
-  unsigned long observer = 0;
-  if (progress)
-  {
-    observer = filter->AddObserver(itk::ProgressEvent(),
-                                   [filter, &progress, from, to](const itk::EventObject &)
-                                   { progress(from + (to - from) * filter->GetProgress(), "relax"); });
-  }
-  try
-  {
-    filter->Update();
-  }
-  catch (const itk::ExceptionObject & error)
-  {
-    if (progress)
-    {
-      filter->RemoveObserver(observer);
-    }
-    RethrowAsInputError("relaxation", error);
-  }
-  if (progress)
-  {
-    filter->RemoveObserver(observer);
-  }
-  DepthImageType::Pointer relaxed = filter->GetOutput();
-  relaxed->DisconnectPipeline();
-  return relaxed;
 }
 } // namespace
+
+/** One stage of the pipeline as the logic watches it: how often its filter ran, how long the latest run took, and
+ * where its progress falls in the whole update. */
+struct StageWatch
+{
+  unsigned int      Runs{ 0 };
+  Clock::time_point Start;
+  double            Seconds{ 0.0 };
+  double            From{ 0.0 };
+  double            To{ 1.0 };
+};
 
 struct VesselReformationLogic::Internals
 {
@@ -131,33 +86,41 @@ struct VesselReformationLogic::Internals
   ProgressCallback                Progress;
   WarningCallback                 Warn;
 
-  // What the current results were made from.
-  VolumeNode *          ConvertedVolumeNode{ nullptr };
-  vtkMTimeType          ConvertedVolumeTime{ 0 };
-  CenterlineNode *      ConvertedCenterlineNode{ nullptr };
-  vtkMTimeType          ConvertedCenterlineTime{ 0 };
-  ReformationParameters LastParameters;
-  bool                  HasRun{ false };
-
-  // Stage results and their validity.
+  // The inputs as ITK sees them, converted again only when a node changes.
+  VolumeNode *             ConvertedVolumeNode{ nullptr };
+  vtkMTimeType             ConvertedVolumeTime{ 0 };
+  CenterlineNode *         ConvertedCenterlineNode{ nullptr };
+  vtkMTimeType             ConvertedCenterlineTime{ 0 };
   VolumeImageType::Pointer Volume;
   float                    VolumeMinimum{ 0.0f };
   itk::CenterlineTree      Tree;
-  itk::CPRViewGeometry     View;
-  DepthImageType::Pointer  Depth;
-  MaskImageType::Pointer   Mask;
-  LabelImageType::Pointer  Labels;
-  DepthImageType::Pointer  Relaxed;
-  DepthImageType::Pointer  UnfilteredCPR;
-  DepthImageType::Pointer  CPR;
-  RelaxFilterType::Pointer RelaxFilter;
-  RelaxBackend             RelaxFilterBackend{ RelaxBackend::Auto };
-  std::string              RelaxFilterDevice;
-  bool                     DepthValid{ false };
-  bool                     RelaxValid{ false };
-  bool                     UnfilteredValid{ false };
-  bool                     RelaxedCPRValid{ false };
-  bool                     SurfaceValid{ false };
+
+  // The pipeline, one filter of each kind for the logic's lifetime: depth -> relax -> resample (relaxed CPR), and
+  // depth -> resample (unfiltered CPR).
+  DepthFilterType::Pointer                        Depth = DepthFilterType::New();
+  RelaxFilterType::Pointer                        CPURelax = RelaxFilterType::New();
+  std::map<std::string, RelaxFilterType::Pointer> OpenCLRelax; // by device request
+  RelaxFilterType::Pointer                        Relax;       // the one in use
+  bool                                            HasBackendChoice{ false };
+  RelaxBackend                                    ChosenFor{ RelaxBackend::Auto };
+  std::string                                     ChosenForDevice;
+  ResampleFilterType::Pointer                     UnfilteredResample = ResampleFilterType::New();
+  ResampleFilterType::Pointer                     RelaxedResample = ResampleFilterType::New();
+
+  StageWatch DepthWatch;
+  StageWatch RelaxWatch;
+  StageWatch UnfilteredWatch;
+  StageWatch RelaxedWatch;
+  bool       SurfaceValid{ false };
+  bool       HasCPR{ false };
+  /** The relax filter whose output Outputs.RelaxedDepth copies. */
+  const RelaxFilterType * RelaxedDepthFrom{ nullptr };
+  /** The stage counts when the output nodes were last made: a stage that ran since (also in an update that was
+   * cancelled later) gets its node made anew. */
+  StageCounts Refreshed;
+
+  std::atomic<bool> Running{ false };
+  std::atomic<bool> AbortRequested{ false };
 
   std::string InputWarning;
   std::string BackendNotice;
@@ -165,35 +128,50 @@ struct VesselReformationLogic::Internals
   ReformationOutputs Outputs;
   StageCounts        Counts;
 
-  void
-  Warning(const std::string & message)
+  Internals()
   {
-    if (Warn && !message.empty())
-    {
-      Warn(message);
-    }
+    Watch(Depth, DepthWatch, "depth");
+    Watch(CPURelax, RelaxWatch, "relax");
+    Watch(UnfilteredResample, UnfilteredWatch, "resample");
+    Watch(RelaxedResample, RelaxedWatch, "resample");
+    RelaxedResample->SetDepth(CPURelax->GetOutput());
+    UnfilteredResample->SetDepth(Depth->GetDepthOutput());
+  }
+
+  /** Counts and times \a filter's runs, reports its progress in its stage's share, and raises its abort flag from
+   * within its own progress report when AbortUpdate() asked (the filter's thread, so no race on ITK's flag). */
+  void
+  Watch(itk::ProcessObject * filter, StageWatch & watch, const char * stage)
+  {
+    filter->AddObserver(itk::StartEvent(),
+                        [&watch](const itk::EventObject &)
+                        {
+                          ++watch.Runs;
+                          watch.Start = Clock::now();
+                        });
+    filter->AddObserver(itk::EndEvent(),
+                        [&watch](const itk::EventObject &) { watch.Seconds = SecondsSince(watch.Start); });
+    filter->AddObserver(itk::ProgressEvent(),
+                        [this, filter, &watch, stage](const itk::EventObject &)
+                        {
+                          if (AbortRequested && !filter->GetAbortGenerateData())
+                          {
+                            filter->AbortGenerateDataOn();
+                          }
+                          if (Progress)
+                          {
+                            Progress(watch.From + (watch.To - watch.From) * filter->GetProgress(), stage);
+                          }
+                        });
   }
 
   void
-  InvalidateFromDepth()
+  Warning(const std::string & message, const std::string & parameter)
   {
-    DepthValid = false;
-    InvalidateFromRelax();
-    UnfilteredValid = false;
-  }
-  void
-  InvalidateFromRelax()
-  {
-    RelaxValid = false;
-    RelaxedCPRValid = false;
-    SurfaceValid = false;
-  }
-  void
-  InvalidateResample()
-  {
-    UnfilteredValid = false;
-    RelaxedCPRValid = false;
-    SurfaceValid = false;
+    if (Warn && !message.empty())
+    {
+      Warn(message, parameter);
+    }
   }
 
   void
@@ -201,13 +179,17 @@ struct VesselReformationLogic::Internals
   void
   CheckMemory(const itk::CPRViewGeometry & view) const;
   void
-  RunDepth(double from, double to);
+  ChooseRelaxFilter();
   void
-  RunRelax(double from, double to);
+  ConfigurePipeline();
   void
-  RunResample(double from, double to);
+  PlanProgress();
   void
-  RunSurface();
+  UpdateStage(itk::ProcessObject * filter, const char * stage);
+  void
+  ClearAbortFlags();
+  void
+  RefreshOutputs(const StageCounts & now);
 };
 
 void
@@ -223,7 +205,6 @@ VesselReformationLogic::Internals::ConvertInputs()
   {
     return;
   }
-  InvalidateFromDepth();
   if (volumeChanged)
   {
     ConvertedVolumeNode = nullptr;
@@ -260,10 +241,10 @@ VesselReformationLogic::Internals::ConvertInputs()
     {
       message << " \"" << VolumeNodeInput->GetName() << "\"";
     }
-    message << "; they may be in the other coordinate system (RAS vs LPS): check --centerlineSpace (RAS or LPS). "
+    message << "; they may be in the other coordinate system: check whether the centerlines are in RAS or LPS. "
                "The reformation continues.";
     InputWarning = message.str();
-    Warning(InputWarning);
+    Warning(InputWarning, ParameterName::CenterlineSpace);
   }
   Outputs.Times.Conversion = SecondsSince(start);
 }
@@ -272,173 +253,207 @@ void
 VesselReformationLogic::Internals::CheckMemory(const itk::CPRViewGeometry & view) const
 {
   const auto &       size = view.GetSize();
+  const bool         sizeGiven = Parameters.ImageSize[0] > 0;
   std::ostringstream origin;
-  if (Parameters.ImageSize[0] > 0)
+  if (sizeGiven)
   {
-    origin << "size (--size) = " << size[0] << "," << size[1];
+    origin << "view size = " << size[0] << "," << size[1];
   }
   else
   {
-    origin << "the view of " << size[0] << " x " << size[1] << " pixels (spacing " << view.GetSpacing()[0] << ","
-           << view.GetSpacing()[1] << " mm, --spacing)";
+    origin << "the view of " << size[0] << " x " << size[1] << " pixels (pixel spacing " << view.GetSpacing()[0] << ","
+           << view.GetSpacing()[1] << " mm)";
   }
+  const char * parameter = sizeGiven ? ParameterName::ViewSize : ParameterName::PixelSpacing;
   if (size[0] > static_cast<itk::SizeValueType>(INT_MAX) || size[1] > static_cast<itk::SizeValueType>(INT_MAX))
   {
-    throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported");
+    throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
+                     parameter);
   }
   const double needed = EstimateMemoryInBytes(size);
   const double available = AvailableMemoryInBytes();
   if (needed > available)
   {
     throw InputError(origin.str() + ": the images would need about " + Gibibytes(needed) + ", more than the " +
-                     Gibibytes(available) + " of memory available; choose a smaller --size or a larger --spacing");
+                       Gibibytes(available) +
+                       " of memory available; choose a smaller view size or a larger pixel spacing",
+                     parameter);
   }
 }
 
 void
-VesselReformationLogic::Internals::RunDepth(double from, double to)
+VesselReformationLogic::Internals::ChooseRelaxFilter()
 {
-  const auto                      start = Clock::now();
-  const itk::CPRViewSpecification specification = Parameters.ToViewSpecification();
+  if (HasBackendChoice && ChosenFor == Parameters.Backend && ChosenForDevice == Parameters.OpenCLDevice)
+  {
+    return;
+  }
+  HasBackendChoice = false;
+  RelaxFilterType::Pointer chosen = CPURelax;
+  std::string              notice;
+  if (Parameters.Backend != RelaxBackend::CPU)
+  {
+    RelaxFilterType::Pointer & cached = OpenCLRelax[Parameters.OpenCLDevice];
+    std::string                why;
+    if (!cached)
+    {
+      cached = TryCreateOpenCLRelaxFilter(Parameters.OpenCLDevice, why);
+      if (cached)
+      {
+        Watch(cached, RelaxWatch, "relax");
+      }
+      else
+      {
+        OpenCLRelax.erase(Parameters.OpenCLDevice);
+      }
+    }
+    auto found = OpenCLRelax.find(Parameters.OpenCLDevice);
+    if (found != OpenCLRelax.end())
+    {
+      chosen = found->second;
+    }
+    else if (Parameters.Backend == RelaxBackend::OpenCL)
+    {
+      throw InputError("relax backend opencl: no usable OpenCL device: " + why, ParameterName::Backend);
+    }
+    else
+    {
+      notice = "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
+    }
+  }
+  Relax = chosen;
+  Outputs.RelaxBackendUsed = chosen == CPURelax ? ToString(RelaxBackend::CPU) : ToString(RelaxBackend::OpenCL);
+  BackendNotice = notice;
+  Warning(BackendNotice, ParameterName::Backend);
+  HasBackendChoice = true;
+  ChosenFor = Parameters.Backend;
+  ChosenForDevice = Parameters.OpenCLDevice;
+}
+
+void
+VesselReformationLogic::Internals::ConfigurePipeline()
+{
+  Depth->SetCenterlineTree(Tree);
+  Depth->SetViewSpecification(Parameters.ToViewSpecification());
+  Depth->SetReferenceVolume(Volume);
+  Depth->SetMode(Parameters.Mode);
+  Depth->SetFixLumen(Parameters.FixLumen);
+
+  ChooseRelaxFilter();
+  Relax->SetInput(Depth->GetDepthOutput());
+  Relax->SetFixedMask(Depth->GetFixedMaskOutput());
+  ConfigureRelaxFilter(Relax, Parameters);
+
+  for (ResampleFilterType * resample : { UnfilteredResample.GetPointer(), RelaxedResample.GetPointer() })
+  {
+    resample->SetVolume(Volume);
+    resample->SetInterpolation(Parameters.Interpolation);
+    resample->SetSlabThickness(Parameters.SlabThickness);
+    resample->SetSlabMode(Parameters.SlabMode);
+    resample->SetDefaultValue(VolumeMinimum);
+  }
+  RelaxedResample->SetDepth(Relax->GetOutput());
+}
+
+/** Whether updating \a output will run its source: ITK's own test in DataObject::UpdateOutputData. */
+bool
+WillRun(itk::DataObject * output)
+{
+  output->UpdateOutputInformation();
+  output->SetRequestedRegionToLargestPossibleRegion();
+  output->PropagateRequestedRegion();
+  return output->GetUpdateMTime() < output->GetPipelineMTime() || output->GetDataReleased() ||
+         output->RequestedRegionIsOutsideOfTheBufferedRegion();
+}
+
+void
+VesselReformationLogic::Internals::PlanProgress()
+{
+  // Shares of the progress bar for the stages that will run: relaxation dominates unless N is small.
+  const double relaxWeight = 0.05 + 0.6 * std::min(1.0, static_cast<double>(Parameters.Iterations) / 100.0);
+  StageWatch * watches[4] = { &DepthWatch, &RelaxWatch, &UnfilteredWatch, &RelaxedWatch };
+  const bool   runs[4] = { WillRun(Depth->GetDepthOutput()),
+                           WillRun(Relax->GetOutput()),
+                           WillRun(UnfilteredResample->GetOutput()),
+                           WillRun(RelaxedResample->GetOutput()) };
+  const double weights[4] = { 0.1, relaxWeight, 0.1, 0.1 };
+  const bool   surface = SurfaceEnabled && (!SurfaceValid || runs[1] || runs[3]);
+  double       total = surface ? 0.1 : 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    total += runs[k] ? weights[k] : 0.0;
+  }
+  double at = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    const double share = runs[k] && total > 0.0 ? weights[k] / total : 0.0;
+    watches[k]->From = at;
+    watches[k]->To = at + share;
+    at += share;
+  }
+}
+
+void
+VesselReformationLogic::Internals::UpdateStage(itk::ProcessObject * filter, const char * stage)
+{
   try
   {
-    CheckMemory(itk::CPRViewGeometry::Resolve(specification, Tree, Volume));
+    // Whole images, also when the view's size changed since the previous update.
+    filter->UpdateLargestPossibleRegion();
   }
   catch (const itk::ExceptionObject & error)
   {
-    // The view's size follows from the spacing when only that was given: name it (e.g. a spacing of 1e-300 mm).
-    std::ostringstream stage;
-    stage << "view";
-    if (Parameters.PixelSpacing[0] > 0.0 && Parameters.ImageSize[0] == 0)
-    {
-      stage << " at spacing (--spacing) " << Parameters.PixelSpacing[0] << "," << Parameters.PixelSpacing[1] << " mm";
-    }
-    RethrowAsInputError(stage.str(), error);
+    RethrowFilterError(stage, error);
   }
-  auto filter = DepthFilterType::New();
-  filter->SetCenterlineTree(Tree);
-  filter->SetViewSpecification(specification);
-  filter->SetReferenceVolume(Volume);
-  filter->SetMode(Parameters.Mode);
-  filter->SetFixLumen(Parameters.FixLumen);
-  if (Progress)
+  if (AbortRequested)
   {
-    DepthFilterType * raw = filter;
-    filter->AddObserver(itk::ProgressEvent(),
-                        [raw, this, from, to](const itk::EventObject &)
-                        { Progress(from + (to - from) * raw->GetProgress(), "depth"); });
+    throw Cancelled(std::string(stage) + ": cancelled");
   }
-  try
-  {
-    filter->Update();
-  }
-  catch (const itk::ExceptionObject & error)
-  {
-    RethrowAsInputError("depth", error);
-  }
-  View = filter->GetView();
-  Depth = filter->GetDepthOutput();
-  Mask = filter->GetFixedMaskOutput();
-  Labels = filter->GetOwnerLabelOutput();
-  Depth->DisconnectPipeline();
-  Mask->DisconnectPipeline();
-  Labels->DisconnectPipeline();
-  Outputs.View = View;
-  Outputs.Depth = ConvertItkImageToVolumeNode(Depth.GetPointer(), "Depth");
-  Outputs.FixedMask = ConvertItkImageToVolumeNode(Mask.GetPointer(), "Fixed mask");
-  Outputs.OwnerLabels = ConvertItkImageToVolumeNode(Labels.GetPointer(), "Owner labels");
-  DepthValid = true;
-  ++Counts.Depth;
-  Outputs.Times.Depth = SecondsSince(start);
 }
 
 void
-VesselReformationLogic::Internals::RunRelax(double from, double to)
+VesselReformationLogic::Internals::ClearAbortFlags()
 {
-  const auto start = Clock::now();
-  if (!RelaxFilter || RelaxFilterBackend != Parameters.Backend || RelaxFilterDevice != Parameters.OpenCLDevice)
+  AbortRequested = false;
+  std::vector<itk::ProcessObject *> filters = { Depth, CPURelax, UnfilteredResample, RelaxedResample };
+  for (const auto & entry : OpenCLRelax)
   {
-    RelaxFilter = nullptr;
-    std::string  notice;
-    RelaxBackend chosen = RelaxBackend::CPU;
-    RelaxFilter = CreateRelaxFilter(Parameters.Backend, Parameters.OpenCLDevice, notice, &chosen);
-    RelaxFilterBackend = Parameters.Backend;
-    RelaxFilterDevice = Parameters.OpenCLDevice;
-    Outputs.RelaxBackendUsed = ToString(chosen);
-    BackendNotice = notice;
-    Warning(BackendNotice);
+    filters.push_back(entry.second);
   }
-  Relaxed = RunRelaxFilter(RelaxFilter, Depth, Mask, Parameters, Progress, from, to);
-  Outputs.RelaxedDepth = ConvertItkImageToVolumeNode(Relaxed.GetPointer(), "Relaxed depth");
-  RelaxValid = true;
-  ++Counts.Relax;
-  Outputs.Times.Relax = SecondsSince(start);
+  for (itk::ProcessObject * filter : filters)
+  {
+    // An aborted filter's output was never marked generated, so it reruns next time anyway.
+    filter->SetAbortGenerateData(false);
+  }
 }
 
 void
-VesselReformationLogic::Internals::RunResample(double from, double to)
+VesselReformationLogic::Internals::RefreshOutputs(const StageCounts & now)
 {
-  const auto start = Clock::now();
-  const int  images = (UnfilteredValid ? 0 : 1) + (RelaxedCPRValid ? 0 : 1);
-  int        done = 0;
-  const auto sample = [&](const DepthImageType * depth)
+  const StageCounts & before = Refreshed;
+  if (now.Depth != before.Depth)
   {
-    auto filter = ResampleFilterType::New();
-    filter->SetVolume(Volume);
-    filter->SetDepth(depth);
-    filter->SetView(View);
-    filter->SetInterpolation(Parameters.Interpolation);
-    filter->SetSlabThickness(Parameters.SlabThickness);
-    filter->SetSlabMode(Parameters.SlabMode);
-    filter->SetDefaultValue(VolumeMinimum);
-    const double imageFrom = from + (to - from) * done / images;
-    const double imageTo = from + (to - from) * (done + 1) / images;
-    if (Progress)
-    {
-      ResampleFilterType * raw = filter;
-      filter->AddObserver(itk::ProgressEvent(),
-                          [raw, this, imageFrom, imageTo](const itk::EventObject &)
-                          { Progress(imageFrom + (imageTo - imageFrom) * raw->GetProgress(), "resample"); });
-    }
-    try
-    {
-      filter->Update();
-    }
-    catch (const itk::ExceptionObject & error)
-    {
-      RethrowAsInputError("resample", error);
-    }
-    DepthImageType::Pointer image = filter->GetOutput();
-    image->DisconnectPipeline();
-    ++done;
-    return image;
-  };
-  if (!UnfilteredValid)
-  {
-    UnfilteredCPR = sample(Depth);
-    Outputs.UnfilteredCPR = ConvertItkImageToVolumeNode(UnfilteredCPR.GetPointer(), "CPR (unfiltered)");
-    UnfilteredValid = true;
-    ++Counts.UnfilteredSamplings;
+    Outputs.View = Depth->GetView();
+    Outputs.Depth = ConvertItkImageToVolumeNode(Depth->GetDepthOutput(), "Depth");
+    Outputs.FixedMask = ConvertItkImageToVolumeNode(Depth->GetFixedMaskOutput(), "Fixed mask");
+    Outputs.OwnerLabels = ConvertItkImageToVolumeNode(Depth->GetOwnerLabelOutput(), "Owner labels");
   }
-  if (!RelaxedCPRValid)
+  if (now.Relax != before.Relax || RelaxedDepthFrom != Relax.GetPointer())
   {
-    CPR = sample(Relaxed);
-    Outputs.CPR = ConvertItkImageToVolumeNode(CPR.GetPointer(), "CPR");
-    RelaxedCPRValid = true;
-    ++Counts.RelaxedSamplings;
+    Outputs.RelaxedDepth = ConvertItkImageToVolumeNode(Relax->GetOutput(), "Relaxed depth");
+    RelaxedDepthFrom = Relax;
   }
-  ++Counts.Resample;
-  Outputs.Times.Resample = SecondsSince(start);
-}
-
-void
-VesselReformationLogic::Internals::RunSurface()
-{
-  const auto start = Clock::now();
-  Outputs.Surface = BuildCutSurface(Relaxed, CPR, View, DefaultMaximumBridgedDepthJump(View));
-  SurfaceValid = true;
-  ++Counts.Surface;
-  Outputs.Times.Surface = SecondsSince(start);
+  if (now.UnfilteredSamplings != before.UnfilteredSamplings)
+  {
+    Outputs.UnfilteredCPR = ConvertItkImageToVolumeNode(UnfilteredResample->GetOutput(), "CPR (unfiltered)");
+  }
+  if (now.RelaxedSamplings != before.RelaxedSamplings)
+  {
+    Outputs.CPR = ConvertItkImageToVolumeNode(RelaxedResample->GetOutput(), "CPR");
+    SurfaceValid = false;
+  }
+  Refreshed = now;
+  HasCPR = true;
 }
 
 VesselReformationLogic::VesselReformationLogic()
@@ -521,56 +536,70 @@ VesselReformationLogic::Update()
   {
     throw InputError("vessel reformation: no centerline node is set");
   }
+  d.AbortRequested = false;
+  d.Running = true;
+  struct RunningFlag
+  {
+    Internals & Logic;
+    ~RunningFlag()
+    {
+      Logic.Running = false;
+      Logic.ClearAbortFlags();
+    }
+  } running{ d };
+
   d.Outputs.Times = StageTimes();
   d.ConvertInputs();
-
-  if (d.HasRun)
+  d.ConfigurePipeline();
+  try
   {
-    if (!SameDepthParameters(d.Parameters, d.LastParameters))
+    // Resolves the view (cheap) so that a view too large for memory is refused before anything is allocated.
+    d.Depth->UpdateOutputInformation();
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    if (d.Parameters.PixelSpacing[0] > 0.0 && d.Parameters.ImageSize[0] == 0)
     {
-      d.InvalidateFromDepth();
+      // The view's size follows from the spacing when only that was given: name it (e.g. a spacing of 1e-300 mm
+      // asks for more pixels than an integer holds).
+      std::ostringstream stage;
+      stage << "view at pixel spacing " << d.Parameters.PixelSpacing[0] << "," << d.Parameters.PixelSpacing[1]
+            << " mm: " << error.GetDescription();
+      throw InputError(stage.str(), ParameterName::PixelSpacing);
     }
-    if (!SameRelaxParameters(d.Parameters, d.LastParameters))
-    {
-      d.InvalidateFromRelax();
-    }
-    if (!SameResampleParameters(d.Parameters, d.LastParameters))
-    {
-      d.InvalidateResample();
-    }
+    RethrowFilterError("view", error);
   }
-  d.LastParameters = d.Parameters;
-  d.HasRun = true;
+  d.CheckMemory(d.Depth->GetView());
+  d.PlanProgress();
 
-  // Progress weights of the stages this update runs: relaxation dominates unless N is small.
-  const double relaxWeight = 0.05 + 0.6 * std::min(1.0, static_cast<double>(d.Parameters.Iterations) / 100.0);
-  const bool   runSurface = d.SurfaceEnabled && !d.SurfaceValid;
-  const double weights[4] = { d.DepthValid ? 0.0 : 0.1,
-                              d.RelaxValid ? 0.0 : relaxWeight,
-                              (d.UnfilteredValid ? 0.0 : 0.1) + (d.RelaxedCPRValid ? 0.0 : 0.1),
-                              runSurface ? 0.1 : 0.0 };
-  const double total = weights[0] + weights[1] + weights[2] + weights[3];
-  double       bounds[5] = { 0.0 };
-  for (int k = 0; k < 4; ++k)
-  {
-    bounds[k + 1] = bounds[k] + (total > 0.0 ? weights[k] / total : 0.0);
-  }
+  const StageCounts before = GetStageExecutionCounts();
+  // One filter at a time, so that an abort between stages is seen; ITK reruns only what is out of date.
+  d.UpdateStage(d.Depth, "depth");
+  d.UpdateStage(d.Relax, "relaxation");
+  d.UpdateStage(d.UnfilteredResample, "resample");
+  d.UpdateStage(d.RelaxedResample, "resample");
+  d.Counts = GetStageExecutionCounts();
+  const bool resampled =
+    d.Counts.UnfilteredSamplings != before.UnfilteredSamplings || d.Counts.RelaxedSamplings != before.RelaxedSamplings;
+  d.Counts.Resample = before.Resample + (resampled ? 1 : 0);
+  // The time of each stage that ran in this update (0 for the others).
+  d.Outputs.Times.Depth = d.Counts.Depth != before.Depth ? d.DepthWatch.Seconds : 0.0;
+  d.Outputs.Times.Relax = d.Counts.Relax != before.Relax ? d.RelaxWatch.Seconds : 0.0;
+  d.Outputs.Times.Resample =
+    (d.Counts.UnfilteredSamplings != before.UnfilteredSamplings ? d.UnfilteredWatch.Seconds : 0.0) +
+    (d.Counts.RelaxedSamplings != before.RelaxedSamplings ? d.RelaxedWatch.Seconds : 0.0);
+  d.RefreshOutputs(d.Counts);
 
-  if (!d.DepthValid)
+  if (d.SurfaceEnabled && !d.SurfaceValid)
   {
-    d.RunDepth(bounds[0], bounds[1]);
-  }
-  if (!d.RelaxValid)
-  {
-    d.RunRelax(bounds[1], bounds[2]);
-  }
-  if (!d.UnfilteredValid || !d.RelaxedCPRValid)
-  {
-    d.RunResample(bounds[2], bounds[3]);
-  }
-  if (runSurface)
-  {
-    d.RunSurface();
+    const auto start = Clock::now();
+    d.Outputs.Surface = BuildCutSurface(d.Relax->GetOutput(),
+                                        d.RelaxedResample->GetOutput(),
+                                        d.Outputs.View,
+                                        DefaultMaximumBridgedDepthJump(d.Outputs.View));
+    d.SurfaceValid = true;
+    ++d.Counts.Surface;
+    d.Outputs.Times.Surface = SecondsSince(start);
   }
   if (!d.SurfaceEnabled)
   {
@@ -584,6 +613,39 @@ VesselReformationLogic::Update()
   return d.Outputs;
 }
 
+void
+VesselReformationLogic::AbortUpdate()
+{
+  if (m_Internals->Running)
+  {
+    m_Internals->AbortRequested = true;
+  }
+}
+
+auto
+VesselReformationLogic::GetDepthFilter() const -> DepthFilterType *
+{
+  return m_Internals->Depth;
+}
+
+RelaxFilterType *
+VesselReformationLogic::GetRelaxFilter() const
+{
+  return m_Internals->Relax;
+}
+
+auto
+VesselReformationLogic::GetUnfilteredResampleFilter() const -> ResampleFilterType *
+{
+  return m_Internals->UnfilteredResample;
+}
+
+auto
+VesselReformationLogic::GetResampleFilter() const -> ResampleFilterType *
+{
+  return m_Internals->RelaxedResample;
+}
+
 const ReformationOutputs &
 VesselReformationLogic::GetOutputs() const
 {
@@ -593,7 +655,12 @@ VesselReformationLogic::GetOutputs() const
 StageCounts
 VesselReformationLogic::GetStageExecutionCounts() const
 {
-  return m_Internals->Counts;
+  StageCounts counts = m_Internals->Counts;
+  counts.Depth = m_Internals->DepthWatch.Runs;
+  counts.Relax = m_Internals->RelaxWatch.Runs;
+  counts.UnfilteredSamplings = m_Internals->UnfilteredWatch.Runs;
+  counts.RelaxedSamplings = m_Internals->RelaxedWatch.Runs;
+  return counts;
 }
 
 std::vector<std::string>
@@ -620,7 +687,7 @@ VesselReformationLogic::GetDisplayWindowLevel(double & window, double & level) c
     level = parameters.Level;
     return;
   }
-  const DepthImageType * cpr = m_Internals->CPR;
+  const DepthImageType * cpr = m_Internals->HasCPR ? m_Internals->RelaxedResample->GetOutput() : nullptr;
   if (cpr == nullptr)
   {
     window = 1.0;
@@ -653,7 +720,25 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   {
     warnings.push_back(notice);
   }
-  auto relaxed = RunRelaxFilter(filter, depth, mask, parameters, progress, 0.0, 1.0);
+  filter->SetInput(depth);
+  filter->SetFixedMask(mask);
+  ConfigureRelaxFilter(filter, parameters);
+  if (progress)
+  {
+    RelaxFilterType * raw = filter;
+    filter->AddObserver(itk::ProgressEvent(),
+                        [raw, &progress](const itk::EventObject &) { progress(raw->GetProgress(), "relax"); });
+  }
+  try
+  {
+    filter->Update();
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    RethrowFilterError("relaxation", error);
+  }
+  DepthImageType::Pointer relaxed = filter->GetOutput();
+  relaxed->DisconnectPipeline();
   if (progress)
   {
     progress(1.0, "done");

@@ -2,6 +2,8 @@
 #ifndef vrVesselReformationLogic_h
 #define vrVesselReformationLogic_h
 
+#include "itkCPRDepthImageFilter.h"
+#include "itkCPRResampleImageFilter.h"
 #include "itkCPRViewGeometry.h"
 #include "vrCenterlineNode.h"
 #include "vrReformationParameters.h"
@@ -20,7 +22,9 @@ class vtkPolyData;
 
 namespace vr
 {
-/** Seconds each stage took in the most recent Update(); 0 for a stage that Update() did not need to run. */
+/** Seconds each stage took in the most recent Update(); 0 for a stage that Update() did not need to run.
+ * \ingroup VesselReformation
+ */
 struct StageTimes
 {
   /** Nodes to ITK images and the centerline tree. */
@@ -36,7 +40,9 @@ struct StageTimes
 };
 
 /** How many times each stage has run since the logic was made (DESIGN 3.7's recompute rules are tested on
- * these). */
+ * these).
+ * \ingroup VesselReformation
+ */
 struct StageCounts
 {
   unsigned int Conversion{ 0 };
@@ -52,7 +58,9 @@ struct StageCounts
 
 /** What a reformation returns: output nodes as a platform takes them. The 2D images are one-slice volume nodes
  * lying on the view plane, their view in the "CPR_*" attributes (see vrNodeConversion.h); the surface is in RAS.
- * A node object is replaced only when its stage reruns. */
+ * A node object is replaced only when its stage reruns.
+ * \ingroup VesselReformation
+ */
 struct ReformationOutputs
 {
   vtkSmartPointer<VolumeNode> Depth;
@@ -75,33 +83,41 @@ struct ReformationOutputs
  * module's logic.
  *
  * It takes a volume node, a centerline node and a parameter object, converts the nodes to ITK (vrNodeConversion.h,
- * the one place RAS meets LPS), and runs CPRDepthImageFilter, then BilateralDepthRelaxFilter on the backend the
- * parameters ask for (through vr::CreateRelaxFilter), then CPRResampleImageFilter on both the unfiltered and the
- * relaxed depth, and builds the cut surface. It returns output nodes with the time of each stage.
- *
- * Update() recomputes only what changed since the previous Update() invalidates:
- * - new volume or centerline node (or a modified one), view (up, angle, centre, size, spacing), depth mode or lumen
- *   fixing: everything;
+ * the one place RAS meets LPS), and keeps one ITK pipeline for its lifetime: CPRDepthImageFilter, then
+ * BilateralDepthRelaxFilter on the backend the parameters ask for (one CPU filter, and one OpenCL filter per device
+ * asked for), then a CPRResampleImageFilter on the unfiltered and one on the relaxed depth; then it builds the cut
+ * surface. Each Update() passes the parameters to the filters, whose setters change nothing when a value is the
+ * same, and updates the two resample filters: ITK's modified times decide what reruns. Output nodes are made
+ * anew for the stages that ran. So:
+ * - new centerlines, view (up, angle, centre, size, spacing), depth mode or lumen fixing: everything;
+ * - a new volume: resampling and the surface; the depth map and its relaxation too only when the volume's geometry
+ *   changed (it supplies the view's defaults);
  * - new relaxation w, anisotropy a, iterations N, backend or OpenCL device: relaxation, the relaxed CPR, surface;
  * - new interpolation or slab: both CPR images and the surface;
  * - new window or level: nothing (they only choose how the CPR is displayed, GetDisplayWindowLevel()).
- * GetStageExecutionCounts() counts every stage execution so that tests can check these rules.
+ * GetStageExecutionCounts() counts every stage execution (the filters' StartEvent) so that tests can check these
+ * rules; the filters themselves are reachable for observers of a platform's own.
  *
- * Failures are reported one way, by throwing vr::InputError with a message naming the node, the parameter and its
- * value (parameter checks, node conversion, a view that does not fit in memory, an unavailable backend, filter
- * errors). Warnings (most centerline points outside the volume: wrong RAS/LPS; the backend auto falling back to
- * the CPU) do not stop the run; they go to the warning callback and GetWarnings().
+ * Failures are reported one way, by throwing vr::InputError with a message naming the node, or the parameter by its
+ * meaning (also in InputError::Parameter(), see vr::ParameterName) and its value: parameter checks, node
+ * conversion, a view that does not fit in memory, an unavailable backend, filter errors. AbortUpdate() stops a
+ * running Update() through ITK's abort flag; that Update() throws vr::Cancelled. Warnings (most centerline points
+ * outside the volume: wrong RAS/LPS; the backend auto falling back to the CPU) do not stop the run; they go to the
+ * warning callback and GetWarnings().
  *
  * \sa ReformationParameters, VolumeNode, CenterlineNode, itk::CPRDepthImageFilter,
  * itk::BilateralDepthRelaxFilter, itk::CPRResampleImageFilter
+ * \ingroup VesselReformation
  */
 class VesselReformationLogic
 {
 public:
   /** Receives the overall progress in [0, 1] and the name of the running stage. */
   using ProgressCallback = std::function<void(double fraction, const std::string & stage)>;
-  /** Receives each warning as it arises. */
-  using WarningCallback = std::function<void(const std::string & message)>;
+  /** Receives each warning as it arises, and the parameter it concerns by meaning (vr::ParameterName), or "". */
+  using WarningCallback = std::function<void(const std::string & message, const std::string & parameter)>;
+  using DepthFilterType = itk::CPRDepthImageFilter<DepthImageType>;
+  using ResampleFilterType = itk::CPRResampleImageFilter<VolumeImageType, DepthImageType, DepthImageType>;
 
   /** Bytes of memory one view pixel costs across every stage and output (see EstimateMemoryInBytes). */
   static constexpr double BytesPerViewPixel = 160.0;
@@ -150,10 +166,29 @@ public:
 
   /** Runs the stages that the changes since the previous Update() invalidate.
    * \return the outputs, valid until the next Update().
-   * Throws vr::InputError on bad nodes or parameters, or when a stage fails; the outputs of the stages that did
-   * not run stay as they were. */
+   * Throws vr::InputError on bad nodes or parameters, or when a stage fails, and vr::Cancelled when AbortUpdate()
+   * stopped it; the outputs of the stages that did not finish stay as they were. */
   const ReformationOutputs &
   Update();
+
+  /** Asks a running Update() (on another thread) to stop as soon as its current filter can: the filter's
+   * AbortGenerateData flag is raised from within its own progress report, and that Update() throws vr::Cancelled.
+   * Without a running Update() it does nothing; the next Update() runs normally. Thread-safe. */
+  void
+  AbortUpdate();
+
+  /** \return the depth filter of the pipeline (one for the logic's lifetime). */
+  DepthFilterType *
+  GetDepthFilter() const;
+  /** \return the relax filter the latest Update() used, or null before the first. */
+  RelaxFilterType *
+  GetRelaxFilter() const;
+  /** \return the resample filter of the unfiltered depth. */
+  ResampleFilterType *
+  GetUnfilteredResampleFilter() const;
+  /** \return the resample filter of the relaxed depth (the CPR). */
+  ResampleFilterType *
+  GetResampleFilter() const;
 
   /** \return the outputs of the latest Update(). */
   const ReformationOutputs &

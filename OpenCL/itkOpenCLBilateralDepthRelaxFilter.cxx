@@ -215,7 +215,7 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   state->ForcedGPULayout = m_ForcedGPULayout;
   try
   {
-    state->Device = vr::GetOpenCLDevice(chosen);
+    state->Device = vr::GetOpenCLDevice(chosen.PlatformIndex, chosen.DeviceIndex);
     state->Context = cl::Context(state->Device);
     state->Queue = cl::CommandQueue(state->Context, state->Device);
     state->Shape = ChooseKernelShape(state->Device, m_ForcedVectorWidth, m_ForcedGPULayout);
@@ -353,13 +353,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
       }
       state.Queue.finish();
       this->UpdateProgress(static_cast<float>(iteration) / static_cast<float>(iterations));
-      if (this->GetAbortGenerateData())
-      {
-        ProcessAborted aborted(__FILE__, __LINE__);
-        aborted.SetDescription("OpenCLBilateralDepthRelaxFilter aborted after " + std::to_string(iteration) + " of " +
-                               std::to_string(iterations) + " iterations");
-        throw aborted;
-      }
+      this->ThrowIfAborted(iteration);
     }
     // One download of both planes; the depth is high + low.
     std::vector<float>               lowPlane(width * height);
@@ -411,6 +405,8 @@ OpenCLBilateralDepthRelaxFilter::PrintSelf(std::ostream & os, Indent indent) con
 {
   Superclass::PrintSelf(os, indent);
   os << indent << "DeviceRequest: \"" << m_DeviceRequest << "\"" << std::endl;
+  os << indent << "ForcedVectorWidth: " << m_ForcedVectorWidth << " (0 = the device's preferred width)" << std::endl;
+  os << indent << "ForcedGPULayout: " << (m_ForcedGPULayout ? "On" : "Off") << std::endl;
   if (m_DeviceState)
   {
     const KernelShape & shape = m_DeviceState->Shape;

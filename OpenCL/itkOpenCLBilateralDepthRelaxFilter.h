@@ -35,6 +35,7 @@ namespace itk
  * message names the call and the status).
  *
  * \sa BilateralDepthRelaxFilter, vr::ListOpenCLDevices, vr::CreateRelaxFilter
+ * \ingroup VesselReformation
  */
 class OpenCLBilateralDepthRelaxFilter : public BilateralDepthRelaxFilter<Image<float, 2>>
 {

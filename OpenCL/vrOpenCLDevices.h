@@ -7,7 +7,9 @@
 
 namespace vr
 {
-/** One OpenCL device as the installed drivers report it. */
+/** One OpenCL device as the installed drivers report it.
+ * \ingroup VesselReformation
+ */
 struct OpenCLDeviceInfo
 {
   /** Position of the platform in clGetPlatformIDs' list and of the device in its platform's list. */

@@ -32,10 +32,13 @@ namespace itk
  * vectorised exponential, a team of GetNumberOfWorkUnits() threads at most as many as the multi-threader's);
  * other pixel types by a plain loop in double.
  *
+ * AbortGenerateData() is honoured after every iteration: the update ends with itk::ProcessAborted.
+ *
  * Bad parameters or inputs (w outside [0, 1], a < 0, a non-finite parameter, a mask of another size, a
  * non-finite depth) raise an itk::ExceptionObject naming the parameter and its value.
  *
  * \sa CPRDepthImageFilter, CPRResampleImageFilter, OpenCLBilateralDepthRelaxFilter, BilateralDepthRelaxKernel
+ * \ingroup VesselReformation
  */
 template<typename TImage, typename TMaskImage = Image<unsigned char, TImage::ImageDimension>>
 class ITK_TEMPLATE_EXPORT BilateralDepthRelaxFilter : public ImageToImageFilter<TImage, TImage>
@@ -107,6 +110,11 @@ protected:
   /** Allocates the output, checks every depth is finite, then runs RelaxOnHost(). */
   void
   GenerateData() override;
+
+  /** Throws itk::ProcessAborted when AbortGenerateData is on (checked after every iteration, so an abort takes
+   * effect within one pass). */
+  void
+  ThrowIfAborted(unsigned int completedIterations) const;
 
   /** Throws when a depth is not finite; names the pixel. Shared by the CPU and OpenCL variants. */
   void

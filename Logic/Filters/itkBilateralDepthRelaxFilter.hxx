@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <type_traits>
 #include <vector>
 
@@ -170,7 +171,11 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
     m_Anisotropy,
     iterations,
     threads,
-    [this, iterations](unsigned int done) { this->UpdateProgress(static_cast<float>(done) / iterations); },
+    [this, iterations](unsigned int done)
+    {
+      this->UpdateProgress(static_cast<float>(done) / iterations);
+      this->ThrowIfAborted(done);
+    },
     &m_KernelWorkspace);
 }
 
@@ -253,8 +258,24 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostGeneric()
     threader->ParallelizeArray(0, height, relaxRow, nullptr);
     std::swap(current, next);
     this->UpdateProgress(static_cast<float>(iteration + 1) / m_NumberOfIterations);
+    this->ThrowIfAborted(iteration + 1);
   }
   std::copy(current.begin(), current.end(), output->GetBufferPointer());
+}
+
+template<typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::ThrowIfAborted(unsigned int completedIterations) const
+{
+  if (this->GetAbortGenerateData())
+  {
+    ProcessAborted     aborted(__FILE__, __LINE__);
+    std::ostringstream description;
+    description << this->GetNameOfClass() << ": aborted after " << completedIterations << " of " << m_NumberOfIterations
+                << " iterations";
+    aborted.SetDescription(description.str());
+    throw aborted;
+  }
 }
 
 template<typename TImage, typename TMaskImage>
@@ -265,6 +286,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Inde
   os << indent << "Relaxation (w): " << m_Relaxation << std::endl;
   os << indent << "Anisotropy (a, mm^-2): " << m_Anisotropy << std::endl;
   os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
+  os << indent << "KernelWorkspace: the fast kernel's buffers, kept between updates" << std::endl;
 }
 
 } // namespace itk

@@ -68,7 +68,8 @@ FindRowSweeps()
   {
     sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepAVX2, "AVX2+FMA" });
   }
-  sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet });
+  sweeps.push_back(
+    { detail::BilateralDepthRelaxRows::SweepBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet });
   return sweeps;
 }
 #else
@@ -76,7 +77,8 @@ FindRowSweeps()
 std::vector<RowSweep>
 FindRowSweeps()
 {
-  return { { detail::BilateralDepthRelaxRows::SweepBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet } };
+  return { { detail::BilateralDepthRelaxRows::SweepBaseline,
+             detail::BilateralDepthRelaxRows::BaselineInstructionSet } };
 }
 #endif
 

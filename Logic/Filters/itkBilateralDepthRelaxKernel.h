@@ -42,6 +42,7 @@ namespace itk
  * for any number of threads with a given instruction set.
  *
  * \sa BilateralDepthRelaxFilter, ThreadTeamBarrier
+ * \ingroup VesselReformation
  */
 class BilateralDepthRelaxKernel
 {

@@ -19,7 +19,9 @@ constexpr std::size_t RowAlignment = 16;
  * Each depth is held as a pair of floats, high + low (about 48 bits, like a double): a single float depth of
  * 70 mm cannot take a step below 4e-6 mm, and over hundreds of iterations such lost steps add up to more than
  * 1e-4 mm. A padded row of the depth buffers is Stride high parts followed by Stride low parts. Differences,
- * weights and steps are small and computed in plain float. */
+ * weights and steps are small and computed in plain float.
+ * \ingroup VesselReformation
+ */
 struct RelaxGrid
 {
   std::size_t Width;
@@ -34,7 +36,9 @@ struct RelaxGrid
 };
 
 /** One thread's buffers: the vertical edges above and below the row being relaxed (Weight R and Flux
- * R (D_below - D_above) of each column), and a row that takes the discarded output of the band's first edge row. */
+ * R (D_below - D_above) of each column), and a row that takes the discarded output of the band's first edge row.
+ * \ingroup VesselReformation
+ */
 struct RowScratch
 {
   float * UpWeight;

@@ -16,6 +16,7 @@ namespace itk::detail
  *
  * Owner is the branch id (0 where no centerline passes), Depth the depth along v in mm and Radius the lumen
  * radius in mm (NaN when the tree has no radii), both interpolated along the projected segment.
+ * \ingroup VesselReformation
  */
 struct CPRCenterlinePixels
 {

@@ -25,7 +25,9 @@ struct CPRDepthWorkspaceDeleter
 };
 using CPRDepthWorkspacePointer = std::unique_ptr<CPRDepthWorkspace, CPRDepthWorkspaceDeleter>;
 
-/** Row-major W x H results of ComputeCPRDepth, owned by the workspace. */
+/** Row-major W x H results of ComputeCPRDepth, owned by the workspace.
+ * \ingroup VesselReformation
+ */
 struct CPRDepthResult
 {
   const float *         Depth;
@@ -37,12 +39,12 @@ struct CPRDepthResult
  * owner and fixed flag by \a mode; \a rasterized is called in between. Creates \a workspace when null. The
  * non-template work of every CPRDepthImageFilter, compiled once. */
 CPRDepthResult
-ComputeCPRDepth(const CenterlineTree &       tree,
-                const CPRViewGeometry &      view,
-                CPRDepthMode                 mode,
-                bool                         fixLumen,
-                MultiThreaderBase *          threader,
-                CPRDepthWorkspacePointer &   workspace,
+ComputeCPRDepth(const CenterlineTree &        tree,
+                const CPRViewGeometry &       view,
+                CPRDepthMode                  mode,
+                bool                          fixLumen,
+                MultiThreaderBase *           threader,
+                CPRDepthWorkspacePointer &    workspace,
                 const std::function<void()> & rasterized);
 } // namespace detail
 
@@ -63,10 +65,17 @@ ComputeCPRDepth(const CenterlineTree &       tree,
  * (used only for defaults: the smallest spacing and the automatic up axis); GetView() returns it after
  * UpdateOutputInformation(). Each output carries the view in its metadata dictionary.
  *
+ * Only the reference volume's geometry (origin, spacing, direction, largest region) matters, never its voxels: it
+ * is not a pipeline input, its information is brought up to date and compared when this filter's is, and the
+ * filter reruns only when that geometry changed. So a new volume of the same geometry (another phase, a filtered
+ * copy) reruns the resampling downstream but not the depth map or its relaxation. Setting a parameter to the
+ * value it has changes nothing, as in ITK's own filters.
+ *
  * Reference: Kretschmer, Preim, Stamminger, "Bilateral Depth Filtering for Enhanced Vessel Reformation",
  * EuroVis 2014; Kanitsar et al., "CPR - Curved Planar Reformation", IEEE Visualization 2002.
  *
  * \sa BilateralDepthRelaxFilter, CPRResampleImageFilter, CPRViewGeometry, CenterlineTree
+ * \ingroup VesselReformation
  */
 template<typename TDepthImage = Image<float, 2>>
 class ITK_TEMPLATE_EXPORT CPRDepthImageFilter : public ImageSource<TDepthImage>
@@ -114,11 +123,20 @@ public:
     return m_View;
   }
 
-  /** Optional volume whose geometry supplies the default spacing and the automatic up axis. */
+  /** Optional volume whose geometry supplies the default spacing and the automatic up axis; kept by reference,
+   * only its geometry is read (see the class comment). */
   void
   SetReferenceVolume(const ReferenceVolumeType * volume);
   const ReferenceVolumeType *
-  GetReferenceVolume() const;
+  GetReferenceVolume() const
+  {
+    return m_ReferenceVolume;
+  }
+
+  /** Brings the reference volume's information up to date first, and marks this filter modified when its
+   * geometry changed since the previous update. */
+  void
+  UpdateOutputInformation() override;
 
   /** Scanline (mpCPR, default) or Nearest. */
   itkSetEnumMacro(Mode, CPRDepthMode);
@@ -160,11 +178,14 @@ protected:
   PrintSelf(std::ostream & os, Indent indent) const override;
 
 private:
-  CenterlineTree       m_CenterlineTree;
-  CPRViewSpecification m_ViewSpecification;
-  CPRViewGeometry      m_View;
-  CPRDepthMode         m_Mode{ CPRDepthMode::Scanline };
-  bool                 m_FixLumen{ true };
+  CenterlineTree                             m_CenterlineTree;
+  CPRViewSpecification                       m_ViewSpecification;
+  typename ReferenceVolumeType::ConstPointer m_ReferenceVolume;
+  /** The geometry of the reference volume the current view was resolved with (no voxels); null without one. */
+  typename ReferenceVolumeType::Pointer m_ReferenceGeometry;
+  CPRViewGeometry                       m_View;
+  CPRDepthMode                          m_Mode{ CPRDepthMode::Scanline };
+  bool                                  m_FixLumen{ true };
 
   // Work buffers kept between updates: a new angle then allocates (and page-faults) nothing.
   detail::CPRDepthWorkspacePointer m_Workspace;

@@ -13,7 +13,6 @@ template<typename TDepthImage>
 CPRDepthImageFilter<TDepthImage>::CPRDepthImageFilter()
 {
   this->SetNumberOfRequiredInputs(0);
-  this->AddOptionalInputName("ReferenceVolume");
   this->SetNumberOfRequiredOutputs(3);
   this->SetNthOutput(1, this->MakeOutput(1));
   this->SetNthOutput(2, this->MakeOutput(2));
@@ -38,30 +37,59 @@ template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::SetCenterlineTree(const CenterlineTree & tree)
 {
-  m_CenterlineTree = tree;
-  this->Modified();
+  if (tree != m_CenterlineTree)
+  {
+    m_CenterlineTree = tree;
+    this->Modified();
+  }
 }
 
 template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::SetViewSpecification(const CPRViewSpecification & specification)
 {
-  m_ViewSpecification = specification;
-  this->Modified();
+  if (specification != m_ViewSpecification)
+  {
+    m_ViewSpecification = specification;
+    this->Modified();
+  }
 }
 
 template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::SetReferenceVolume(const ReferenceVolumeType * volume)
 {
-  this->ProcessObject::SetInput("ReferenceVolume", const_cast<ReferenceVolumeType *>(volume));
+  // Not Modified(): UpdateOutputInformation() decides by the geometry, which a new object may share.
+  m_ReferenceVolume = volume;
 }
 
 template<typename TDepthImage>
-auto
-CPRDepthImageFilter<TDepthImage>::GetReferenceVolume() const -> const ReferenceVolumeType *
+void
+CPRDepthImageFilter<TDepthImage>::UpdateOutputInformation()
 {
-  return dynamic_cast<const ReferenceVolumeType *>(this->ProcessObject::GetInput("ReferenceVolume"));
+  const ReferenceVolumeType * volume = m_ReferenceVolume;
+  if (volume != nullptr)
+  {
+    const_cast<ReferenceVolumeType *>(volume)->UpdateOutputInformation();
+  }
+  const bool same = volume == nullptr
+                      ? m_ReferenceGeometry.IsNull()
+                      : m_ReferenceGeometry.IsNotNull() && volume->GetOrigin() == m_ReferenceGeometry->GetOrigin() &&
+                          volume->GetSpacing() == m_ReferenceGeometry->GetSpacing() &&
+                          volume->GetDirection() == m_ReferenceGeometry->GetDirection() &&
+                          volume->GetLargestPossibleRegion() == m_ReferenceGeometry->GetLargestPossibleRegion();
+  if (!same)
+  {
+    m_ReferenceGeometry = nullptr;
+    if (volume != nullptr)
+    {
+      m_ReferenceGeometry = ReferenceVolumeType::New();
+      m_ReferenceGeometry->CopyInformation(volume);
+      m_ReferenceGeometry->SetLargestPossibleRegion(volume->GetLargestPossibleRegion());
+    }
+    this->Modified();
+  }
+  Superclass::UpdateOutputInformation();
 }
 
 template<typename TDepthImage>
@@ -83,10 +111,10 @@ void
 CPRDepthImageFilter<TDepthImage>::GenerateOutputInformation()
 {
   m_CenterlineTree.Validate();
-  m_View = CPRViewGeometry::Resolve(m_ViewSpecification, m_CenterlineTree, this->GetReferenceVolume());
-  m_View.ConfigureImage(this->GetDepthOutput());
-  m_View.ConfigureImage(this->GetFixedMaskOutput());
-  m_View.ConfigureImage(this->GetOwnerLabelOutput());
+  m_View = CPRViewGeometry::Resolve(m_ViewSpecification, m_CenterlineTree, m_ReferenceGeometry.GetPointer());
+  m_View.ConfigureImageInformation(this->GetDepthOutput());
+  m_View.ConfigureImageInformation(this->GetFixedMaskOutput());
+  m_View.ConfigureImageInformation(this->GetOwnerLabelOutput());
 }
 
 template<typename TDepthImage>
@@ -120,7 +148,7 @@ CPRDepthImageFilter<TDepthImage>::GenerateData()
                                                                 threader,
                                                                 m_Workspace,
                                                                 [this]() { this->UpdateProgress(0.3f); });
-  const std::size_t count = depth->GetBufferedRegion().GetNumberOfPixels();
+  const std::size_t            count = depth->GetBufferedRegion().GetNumberOfPixels();
   std::copy(result.Depth, result.Depth + count, depth->GetBufferPointer());
   std::copy(result.Fixed, result.Fixed + count, mask->GetBufferPointer());
   std::copy(result.Owner, result.Owner + count, labels->GetBufferPointer());
@@ -132,13 +160,41 @@ void
 CPRDepthImageFilter<TDepthImage>::PrintSelf(std::ostream & os, Indent indent) const
 {
   Superclass::PrintSelf(os, indent);
+  const CPRViewSpecification & spec = m_ViewSpecification;
   os << indent << "Mode: " << m_Mode << std::endl;
   os << indent << "FixLumen: " << (m_FixLumen ? "On" : "Off") << std::endl;
   os << indent << "CenterlineTree: " << m_CenterlineTree.GetNumberOfBranches() << " branches, "
-     << m_CenterlineTree.GetNumberOfPoints() << " points" << std::endl;
-  os << indent << "ViewSpecification: up " << m_ViewSpecification.Up
-     << (m_ViewSpecification.AutomaticUp ? " (auto)" : "") << ", angle " << m_ViewSpecification.AngleInDegrees
-     << " degrees" << std::endl;
+     << m_CenterlineTree.GetNumberOfPoints() << " points" << (m_CenterlineTree.HasRadii() ? ", with radii" : "")
+     << std::endl;
+  os << indent << "ViewSpecification:" << std::endl;
+  const Indent inner = indent.GetNextIndent();
+  os << inner << "Up: " << spec.Up << (spec.AutomaticUp ? " (ignored: AutomaticUp)" : "") << std::endl;
+  os << inner << "AutomaticUp: " << (spec.AutomaticUp ? "On" : "Off") << std::endl;
+  os << inner << "AngleInDegrees: " << spec.AngleInDegrees << std::endl;
+  os << inner << "Center (LPS mm): ";
+  if (spec.HasCenter)
+  {
+    os << spec.Center << std::endl;
+  }
+  else
+  {
+    os << "the tree's bounding box centre" << std::endl;
+  }
+  os << inner << "ImageSize: " << spec.ImageSize << " (0 = fit the tree)" << std::endl;
+  os << inner << "PixelSpacing (mm): " << spec.PixelSpacing << " (0 = default)" << std::endl;
+  os << inner << "MarginInMillimetres: " << spec.MarginInMillimetres << std::endl;
+  os << indent << "ReferenceVolume: " << m_ReferenceVolume.GetPointer() << std::endl;
+  if (m_ReferenceGeometry)
+  {
+    os << indent << "ReferenceGeometry: origin " << m_ReferenceGeometry->GetOrigin() << ", spacing "
+       << m_ReferenceGeometry->GetSpacing() << ", size " << m_ReferenceGeometry->GetLargestPossibleRegion().GetSize()
+       << std::endl;
+  }
+  else
+  {
+    os << indent << "ReferenceGeometry: (none)" << std::endl;
+  }
+  os << indent << "Workspace: " << (m_Workspace ? "allocated" : "not yet allocated") << std::endl;
   os << indent << "View:" << std::endl;
   m_View.Print(os, indent.GetNextIndent());
 }

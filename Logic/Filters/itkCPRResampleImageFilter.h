@@ -48,6 +48,7 @@ operator<<(std::ostream & os, CPRSlabMode mode);
  * origin, spacing and direction are honoured.
  *
  * \sa CPRDepthImageFilter, BilateralDepthRelaxFilter
+ * \ingroup VesselReformation
  */
 template<typename TVolumeImage, typename TDepthImage, typename TOutputImage = Image<float, 2>>
 class ITK_TEMPLATE_EXPORT CPRResampleImageFilter : public ImageSource<TOutputImage>

@@ -25,6 +25,10 @@ template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetView(const CPRViewGeometry & view)
 {
+  if (m_HasExplicitView && m_View == view)
+  {
+    return;
+  }
   m_View = view;
   m_HasExplicitView = true;
   this->Modified();
@@ -34,6 +38,10 @@ template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::ClearView()
 {
+  if (!m_HasExplicitView)
+  {
+    return;
+  }
   m_HasExplicitView = false;
   this->Modified();
 }
@@ -42,6 +50,11 @@ template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetDefaultValue(OutputPixelType value)
 {
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  if (!m_UseVolumeMinimumAsDefault && same(static_cast<double>(m_DefaultValue), static_cast<double>(value)))
+  {
+    return;
+  }
   m_DefaultValue = value;
   m_UseVolumeMinimumAsDefault = false;
   this->Modified();
@@ -81,8 +94,8 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::GenerateOutputI
   {
     itkExceptionMacro(<< "Depth image size " << depthSize << " differs from the view's size " << m_View.GetSize());
   }
-  m_View.ConfigureImage(output);
-  output->SetLargestPossibleRegion(depth->GetLargestPossibleRegion());
+  // The largest possible region only: a smaller region a consumer requested stays requested (ITK's contract).
+  m_View.ConfigureImageInformation(output);
 }
 
 template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
@@ -308,6 +321,11 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::PrintSelf(std::
   os << indent << "SlabMode: " << m_SlabMode << std::endl;
   os << indent << "View (" << (m_HasExplicitView ? "explicit" : "from the depth image") << "):" << std::endl;
   m_View.Print(os, indent.GetNextIndent());
+  os << indent << "Interpolator: " << m_Interpolator.GetPointer() << std::endl;
+  os << indent << "SlabOffsets (mm): " << m_SlabOffsets.size() << " samples" << std::endl;
+  os << indent << "OutsideValue (last update): " << static_cast<double>(m_OutsideValue) << std::endl;
+  os << indent << "CachedVolumeMinimum: " << static_cast<double>(m_CachedVolumeMinimum) << " (volume "
+     << m_MinimumVolume << ", modified time " << m_MinimumVolumeTime << ")" << std::endl;
 }
 
 } // namespace itk

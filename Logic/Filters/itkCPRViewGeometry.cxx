@@ -95,6 +95,15 @@ CPRViewSpecification::CPRViewSpecification()
 {
 }
 
+bool
+CPRViewSpecification::operator==(const CPRViewSpecification & other) const
+{
+  return AutomaticUp == other.AutomaticUp && (AutomaticUp || Up == other.Up) &&
+         AngleInDegrees == other.AngleInDegrees && HasCenter == other.HasCenter &&
+         (!HasCenter || Center == other.Center) && ImageSize == other.ImageSize && PixelSpacing == other.PixelSpacing &&
+         MarginInMillimetres == other.MarginInMillimetres;
+}
+
 CPRViewGeometry::CPRViewGeometry()
   : m_Up(MakeVector3(0.0, 0.0, 1.0))
   , m_U(MakeVector3(1.0, 0.0, 0.0))

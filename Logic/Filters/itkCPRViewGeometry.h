@@ -15,6 +15,7 @@ namespace itk
 /** \class CPRViewSpecification
  * \brief What a user asks of a view (DESIGN section 3.2); unset parts take defaults from the centerline tree
  * and the volume when CPRViewGeometry::Resolve() completes it.
+ * \ingroup VesselReformation
  */
 struct CPRViewSpecification
 {
@@ -46,6 +47,15 @@ struct CPRViewSpecification
    * most, signed towards the tree's root. */
   static VectorType
   AutomaticUpAxis(const CenterlineTree & tree, const ImageBase<3> & volume);
+
+  /** Every member equal (with AutomaticUp, Up is ignored; without HasCenter, Center is). */
+  bool
+  operator==(const CPRViewSpecification & other) const;
+  bool
+  operator!=(const CPRViewSpecification & other) const
+  {
+    return !(*this == other);
+  }
 };
 
 /** \class CPRViewGeometry
@@ -61,6 +71,7 @@ struct CPRViewSpecification
  * millimetres from C, right and down.
  *
  * \sa CPRDepthImageFilter, CPRResampleImageFilter
+ * \ingroup VesselReformation
  */
 class CPRViewGeometry
 {
@@ -148,14 +159,25 @@ public:
   Point<double, 2>
   GetImageOrigin() const;
 
-  /** Sets region, spacing, origin, identity direction and the view metadata of a 2D image. */
+  /** Sets the largest possible, buffered and requested regions, spacing, origin, identity direction and the view
+   * metadata of a 2D image (an image made outside a pipeline, about to be allocated). */
   template<typename TImage>
   void
   ConfigureImage(TImage * image) const
   {
+    ConfigureImageInformation(image);
+    image->SetRegions(image->GetLargestPossibleRegion());
+  }
+
+  /** Sets the largest possible region, spacing, origin, identity direction and the view metadata of a 2D image,
+   * leaving its requested region alone: what a filter's GenerateOutputInformation() does. */
+  template<typename TImage>
+  void
+  ConfigureImageInformation(TImage * image) const
+  {
     typename TImage::RegionType region;
     region.SetSize(m_Size);
-    image->SetRegions(region);
+    image->SetLargestPossibleRegion(region);
     image->SetSpacing(m_Spacing);
     image->SetOrigin(GetImageOrigin());
     typename TImage::DirectionType direction;

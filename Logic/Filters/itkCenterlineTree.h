@@ -14,6 +14,7 @@ namespace itk
 /** \class CenterlineBranch
  * \brief One vessel section: an ordered polyline in LPS millimetres, an optional lumen radius per point (mm),
  * and an integer id >= 1 that labels the pixels it owns in the reformation.
+ * \ingroup VesselReformation
  */
 struct CenterlineBranch
 {
@@ -29,6 +30,18 @@ struct CenterlineBranch
   {
     return !Radii.empty();
   }
+
+  /** Same id, points and radii, exactly. */
+  bool
+  operator==(const CenterlineBranch & other) const
+  {
+    return Id == other.Id && Points == other.Points && Radii == other.Radii;
+  }
+  bool
+  operator!=(const CenterlineBranch & other) const
+  {
+    return !(*this == other);
+  }
 };
 
 /** \class CenterlineTree
@@ -39,6 +52,7 @@ struct CenterlineBranch
  * TubeTK's .tre files hold.
  *
  * \sa CPRDepthImageFilter, CPRViewGeometry
+ * \ingroup VesselReformation
  */
 class CenterlineTree
 {
@@ -102,6 +116,19 @@ public:
   /** Reads every itk::TubeSpatialObject below \a group, in world space. Radii are kept when any is non-zero. */
   static CenterlineTree
   FromSpatialObject(const GroupType * group);
+
+  /** Same branches in the same order, exactly (filters compare trees so that setting the same one again changes
+   * nothing). */
+  bool
+  operator==(const CenterlineTree & other) const
+  {
+    return m_Branches == other.m_Branches;
+  }
+  bool
+  operator!=(const CenterlineTree & other) const
+  {
+    return !(*this == other);
+  }
 
 private:
   BranchContainer m_Branches;

@@ -18,6 +18,7 @@ namespace itk::detail
  * Everything a thread wrote before its Wait() is visible to every thread after theirs.
  *
  * \sa BilateralDepthRelaxKernel
+ * \ingroup VesselReformation
  */
 class ThreadTeamBarrier
 {

@@ -15,6 +15,7 @@ namespace vr
  *
  * The staged file keeps the final name (so ITK and VTK writers still pick the format from its extension). Without
  * Commit() the destructor removes it. A URI name (vr::IsURIName) is written directly.
+ * \ingroup VesselReformation
  */
 class AtomicOutput
 {

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCenterlineFormats.h"
+#include "vrText.h"
 #include "vrCenterlinePolyData.h"
 #include "vrInputError.h"
 #include "vrText.h"
@@ -20,14 +21,6 @@ namespace vr::detail
 {
 namespace
 {
-bool
-IsXMLPath(const std::string & path)
-{
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  return lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".vtp") == 0;
-}
-
 /** 3D Slicer writes "SPACE=RAS" or "SPACE=LPS" into the legacy header line (vtkMRMLModelStorageNode). */
 CoordinateSpace
 SpaceFromLegacyHeader(const char * header)
@@ -133,8 +126,8 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
   vtkSmartPointer<vtkPolyData> polyData;
   CoordinateSpace              headerSpace = CoordinateSpace::Auto;
   {
-    VTKErrorCapture capture;
-    if (IsXMLPath(path))
+    detail::VTKErrorCapture capture;
+    if (HasExtension(path, ".vtp"))
     {
       report.Format = "VTK XML PolyData (.vtp)";
       auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
@@ -217,9 +210,9 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
 {
   const CoordinateSpace        used = space == CoordinateSpace::LPS ? CoordinateSpace::LPS : CoordinateSpace::RAS;
   vtkSmartPointer<vtkPolyData> polyData = PolyDataFromCenterlineTree(tree, used);
-  VTKErrorCapture              capture;
+  detail::VTKErrorCapture      capture;
   int                          written = 0;
-  if (IsXMLPath(finalPath))
+  if (HasExtension(finalPath, ".vtp"))
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
     capture.Observe(writer);

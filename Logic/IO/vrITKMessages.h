@@ -22,7 +22,9 @@ CondenseITKMessage(const itk::ExceptionObject & exception,
                    const std::string &          finalPath = std::string());
 
 /** While alive, ITK warnings (itkWarningMacro, e.g. GDCMSeriesFileNames' "No Series were found") go nowhere
- * instead of to the terminal: the caller reports what went wrong itself. */
+ * instead of to the terminal: the caller reports what went wrong itself.
+ * \ingroup VesselReformation
+ */
 class ScopedSilentITKOutput
 {
 public:

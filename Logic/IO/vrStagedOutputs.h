@@ -34,6 +34,7 @@ namespace vr
  * gets the name itself, it is neither staged nor renamed, and CommitAll() leaves it alone. So is a path inside
  * another StagedOutputs' staging folder (a writer such as vr::WriteImage2D, which stages what it writes, called by
  * Write()): the enclosing staging already makes it atomic.
+ * \ingroup VesselReformation
  */
 class StagedOutputs
 {

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrSurfaceIO.h"
+#include "vrText.h"
 
 #include "vrAtomicOutput.h"
 #include "vrInputError.h"
@@ -19,15 +20,6 @@ namespace vr
 {
 namespace
 {
-bool
-HasExtension(const std::string & path, const std::string & extension)
-{
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  return lower.size() >= extension.size() &&
-         lower.compare(lower.size() - extension.size(), extension.size(), extension) == 0;
-}
-
 void
 WriteSurfaceIn(vtkPolyData * surface, const std::string & path, CoordinateSpace pointSpace)
 {
@@ -55,9 +47,9 @@ WriteSurfaceIn(vtkPolyData * surface, const std::string & path, CoordinateSpace 
     marked->SetFieldData(fieldData);
   }
 
-  AtomicOutput    output(path);
-  VTKErrorCapture capture;
-  int             written = 0;
+  AtomicOutput            output(path);
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
   if (xml)
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();

@@ -8,7 +8,7 @@
 
 class vtkObject;
 
-namespace vr
+namespace vr::detail
 {
 /** \class VTKErrorCapture
  * \brief Collects the errors and warnings VTK readers and writers report, instead of letting VTK print them.
@@ -21,6 +21,7 @@ namespace vr
  * one that records what it is given, and Observe() adds ErrorEvent/WarningEvent observers to an algorithm (and,
  * for XML readers, to their parser), so a caller can turn the first message into a vr::InputError that names
  * the file. Captures are serialised by a process-wide lock because the output window is global.
+ * \ingroup VesselReformation
  */
 class VTKErrorCapture
 {
@@ -48,6 +49,6 @@ public:
 private:
   std::unique_ptr<Implementation> m_Implementation;
 };
-} // namespace vr
+} // namespace vr::detail
 
 #endif

@@ -21,6 +21,7 @@ namespace vr
  * array "BranchIds" names the branches when each polyline is one.
  *
  * \sa VolumeNode, VesselReformationLogic, vrNodeConversion.h
+ * \ingroup VesselReformation
  */
 class CenterlineNode : public vtkObject
 {

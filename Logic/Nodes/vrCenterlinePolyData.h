@@ -20,7 +20,9 @@ constexpr const char * SlicerRadiusArrayName = "Radius";
 /** The cell array that carries branch ids through the .vtp/.vtk writer and back. */
 constexpr const char * BranchIdsArrayName = "BranchIds";
 
-/** How CenterlineTreeFromPolyData treats points that several polylines share. */
+/** How CenterlineTreeFromPolyData treats points that several polylines share.
+ * \ingroup VesselReformation
+ */
 struct CenterlinePolyDataOptions
 {
   /** Points of different polylines closer than this (mm) are the same point: VMTK and 3D Slicer copy the

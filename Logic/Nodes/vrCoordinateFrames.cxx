@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCoordinateFrames.h"
+#include "vrText.h"
 
 #include "vrInputError.h"
 
@@ -25,8 +26,7 @@ ToString(CoordinateSpace space)
 CoordinateSpace
 ParseCoordinateSpace(const std::string & text, const std::string & what)
 {
-  std::string upper = text;
-  std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return std::toupper(c); });
+  const std::string upper = ToUpper(text);
   if (upper == "RAS")
   {
     return CoordinateSpace::RAS;

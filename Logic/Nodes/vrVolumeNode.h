@@ -23,6 +23,7 @@ namespace vr
  * The logic converts nodes to ITK images in one place, vrNodeConversion.h.
  *
  * \sa CenterlineNode, VesselReformationLogic
+ * \ingroup VesselReformation
  */
 class VolumeNode : public vtkObject
 {

@@ -25,6 +25,7 @@ namespace itk
  * The volume is drawn from the same polylines GetCenterlineTree() returns, so the tree is exact.
  *
  * \sa CPRDepthImageFilter
+ * \ingroup VesselReformation
  */
 class RunoffPhantomImageSource : public ImageSource<Image<float, 3>>
 {

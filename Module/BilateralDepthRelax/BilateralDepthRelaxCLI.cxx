@@ -5,6 +5,7 @@
 #include "vrImageIO.h"
 #include "vrInputError.h"
 #include "vrModuleExport.h"
+#include "vrParameterName.h"
 #include "vrStagedOutputs.h"
 #include "vrVesselReformationLogic.h"
 
@@ -15,6 +16,13 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
+/** The logic's parameters by meaning -> this module's XML parameters. */
+const vr::CLIParameterMap ParameterFlags = {
+  { vr::ParameterName::Relaxation, "relaxation" },     { vr::ParameterName::Anisotropy, "anisotropy" },
+  { vr::ParameterName::Iterations, "iterations" },     { vr::ParameterName::Backend, "backend" },
+  { vr::ParameterName::OpenCLDevice, "openclDevice" },
+};
+
 void
 RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & progress)
 {
@@ -56,7 +64,7 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
     {
       if (progress.AbortRequested())
       {
-        throw vr::InputError("cancelled by the caller");
+        throw vr::Cancelled("relaxation: cancelled by the caller");
       }
       progress.Update(fraction, stage);
     },
@@ -78,5 +86,6 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "BilateralDepthRelax",
                           "Bilateral relaxation of a CPR depth map",
-                          RunBilateralDepthRelax);
+                          RunBilateralDepthRelax,
+                          ParameterFlags);
 }

@@ -17,19 +17,6 @@ namespace vr
 namespace
 {
 std::string
-Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::string
-Spell(const CLIParameter & parameter)
-{
-  return parameter.LongFlag.empty() ? "<" + parameter.Name + ">" : "--" + parameter.LongFlag;
-}
-
-std::string
 Ordinal(int index)
 {
   static const char * names[] = { "first", "second", "third", "fourth", "fifth" };
@@ -48,18 +35,18 @@ FormatNumber(double value)
 std::string
 CheckedValue(const CLIParameter & parameter, const std::string & value)
 {
-  const std::string   what = Spell(parameter) + " \"" + value + "\"";
+  const std::string   what = parameter.Spelling() + " \"" + value + "\"";
   const std::string & tag = parameter.Tag;
   const auto          checkRange = [&](double number)
   {
     if (parameter.HasConstraints && number < parameter.Minimum)
     {
-      throw InputError(Spell(parameter) + " " + value + ": must be >= " + FormatNumber(parameter.Minimum) + " (" +
+      throw InputError(parameter.Spelling() + " " + value + ": must be >= " + FormatNumber(parameter.Minimum) + " (" +
                        parameter.Label + ")");
     }
     if (parameter.HasConstraints && number > parameter.Maximum)
     {
-      throw InputError(Spell(parameter) + " " + value + ": must be <= " + FormatNumber(parameter.Maximum) + " (" +
+      throw InputError(parameter.Spelling() + " " + value + ": must be <= " + FormatNumber(parameter.Maximum) + " (" +
                        parameter.Label + ")");
     }
   };
@@ -103,7 +90,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   {
     for (const auto & element : parameter.Elements)
     {
-      if (Lower(element) == Lower(value))
+      if (ToLower(element) == ToLower(value))
       {
         return element;
       }
@@ -117,7 +104,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   }
   else if (tag == "boolean")
   {
-    const std::string key = Lower(value);
+    const std::string key = ToLower(value);
     if (key != "true" && key != "false")
     {
       throw InputError(what + ": use true or false, or the bare flag for true");
@@ -126,7 +113,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   }
   else if (value.empty() && (tag == "image" || tag == "file" || tag == "geometry" || tag == "directory"))
   {
-    throw InputError(Spell(parameter) + ": the file name is empty (" + parameter.Label + ")");
+    throw InputError(parameter.Spelling() + ": the file name is empty (" + parameter.Label + ")");
   }
   return value;
 }
@@ -206,7 +193,7 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
       arguments.m_Values[parameter->Name] = "true";
       continue;
     }
-    arguments.m_Values[parameter->Name] = CheckedValue(*parameter, takeValue(Spell(*parameter)));
+    arguments.m_Values[parameter->Name] = CheckedValue(*parameter, takeValue(parameter->Spelling()));
   }
   if (arguments.XMLRequested || arguments.HelpRequested)
   {
@@ -261,7 +248,7 @@ CLIArguments::Integer(const std::string & name) const
 std::string
 CLIArguments::Spelling(const std::string & name) const
 {
-  return Spell(m_Description->Find(name));
+  return m_Description->Find(name).Spelling();
 }
 
 std::string

@@ -16,6 +16,7 @@ constexpr const char * ReservedFlags[] = { "xml", "help", "processinformationadd
 
 /** \class CLIArguments
  * \brief A parsed command line of a module: the values given for its parameters, checked against the XML.
+ * \ingroup VesselReformation
  */
 class CLIArguments
 {

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCLIModuleDescription.h"
+#include "vrText.h"
 
 #include <vtkNew.h>
 #include <vtkXMLDataElement.h>
@@ -22,13 +23,7 @@ Trimmed(const char * text)
   {
     return std::string();
   }
-  const std::string value(text);
-  const auto        first = value.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-  {
-    return std::string();
-  }
-  return value.substr(first, value.find_last_not_of(" \t\r\n") - first + 1);
+  return Trim(text);
 }
 
 std::string

@@ -7,7 +7,9 @@
 
 namespace vr
 {
-/** One parameter of a command-line module, as its Slicer Execution Model XML declares it. */
+/** One parameter of a command-line module, as its Slicer Execution Model XML declares it.
+ * \ingroup VesselReformation
+ */
 struct CLIParameter
 {
   /** The XML element: image, file, geometry, float, integer, string, string-enumeration, integer-vector, ... */
@@ -29,6 +31,13 @@ struct CLIParameter
   bool                     HasConstraints{ false };
   double                   Minimum{ 0.0 };
   double                   Maximum{ 0.0 };
+
+  /** \return "--flag" for a flag, "<name>" for a positional parameter: how messages name it. */
+  std::string
+  Spelling() const
+  {
+    return LongFlag.empty() ? "<" + Name + ">" : "--" + LongFlag;
+  }
 };
 
 /** \class CLIModuleDescription
@@ -36,6 +45,7 @@ struct CLIParameter
  *
  * The XML compiled into each module is the single description of its command line: the parser
  * (vrCLIArguments.h) accepts exactly the flags listed here, and --xml prints the same text.
+ * \ingroup VesselReformation
  */
 struct CLIModuleDescription
 {

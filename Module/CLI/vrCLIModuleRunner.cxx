@@ -11,19 +11,30 @@
 
 namespace vr
 {
-int
-RunCLIModule(int                   argc,
-             char *                argv[],
-             const char *          xml,
-             const std::string &   name,
-             const std::string &   comment,
-             const CLIModuleBody & body)
+std::string
+SpellingOfParameter(const CLIModuleDescription & description,
+                    const CLIParameterMap &      parameters,
+                    const std::string &          meaning)
 {
-  int status = 1;
+  const auto entry = parameters.find(meaning);
+  return entry == parameters.end() ? std::string() : description.Find(entry->second).Spelling();
+}
+
+int
+RunCLIModule(int                     argc,
+             char *                  argv[],
+             const char *            xml,
+             const std::string &     name,
+             const std::string &     comment,
+             const CLIModuleBody &   body,
+             const CLIParameterMap & parameters)
+{
+  int                  status = 1;
+  CLIModuleDescription description;
   try
   {
-    const CLIModuleDescription description = CLIModuleDescription::FromXML(xml);
-    const CLIArguments         arguments = CLIArguments::Parse(description, argc, argv);
+    description = CLIModuleDescription::FromXML(xml);
+    const CLIArguments arguments = CLIArguments::Parse(description, argc, argv);
     if (arguments.XMLRequested)
     {
       std::cout << xml;
@@ -47,7 +58,12 @@ RunCLIModule(int                   argc,
   }
   catch (const InputError & error)
   {
-    std::cerr << name << ": error: " << error.what() << std::endl;
+    const std::string flag = SpellingOfParameter(description, parameters, error.Parameter());
+    std::cerr << name << ": error: " << (flag.empty() ? "" : flag + ": ") << error.what() << std::endl;
+  }
+  catch (const Cancelled & cancelled)
+  {
+    std::cerr << name << ": " << cancelled.what() << std::endl;
   }
   catch (const std::bad_alloc &)
   {

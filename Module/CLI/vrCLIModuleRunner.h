@@ -6,6 +6,7 @@
 #include "vrCLIProgress.h"
 
 #include <functional>
+#include <map>
 #include <string>
 
 namespace vr
@@ -13,26 +14,42 @@ namespace vr
 /** The work of a command-line module: reads its arguments, runs, writes its outputs; throws on failure. */
 using CLIModuleBody = std::function<void(const CLIArguments & arguments, CLIProgress & progress)>;
 
+/** Which parameter of a module's XML sets each parameter the logic names by meaning (vr::ParameterName ->
+ * XML parameter name): the one place where the logic's words meet the command line's flags. */
+using CLIParameterMap = std::map<std::string, std::string>;
+
+/** \param description the module's description.
+ * \param parameters the module's map.
+ * \param meaning a parameter by its meaning (vr::ParameterName), or "".
+ * \return how the command line spells it ("--anisotropy"), or "" when the module has no such parameter. */
+std::string
+SpellingOfParameter(const CLIModuleDescription & description,
+                    const CLIParameterMap &      parameters,
+                    const std::string &          meaning);
+
 /** Runs a command-line module the same way from its executable and from its shared library's ModuleEntryPoint:
  * --xml prints \a xml, --help the usage, otherwise the arguments are checked against the XML, progress is
  * reported (see CLIProgress) and \a body runs.
  *
  * Every failure (vr::InputError from bad input, and anything unexpected) is caught and printed on stderr as
- * "<name>: error: <message>"; nothing escapes, so a host process loading the library survives.
+ * "<name>: error: <message>"; nothing escapes, so a host process loading the library survives. An InputError about
+ * a parameter (InputError::Parameter()) is prefixed with that parameter's flag, through \a parameters.
  *
  * \param argc, argv the command line (argv[0] the program or, in-process, the module).
  * \param xml the module's Slicer Execution Model description (its XMLModuleDescription).
  * \param name the module's name, for messages and filter-name.
  * \param comment what it does, for filter-comment.
  * \param body the module's work.
+ * \param parameters the module's map from parameter meanings to its XML parameters.
  * \return 0 on success, 1 on any error. */
 int
-RunCLIModule(int                   argc,
-             char *                argv[],
-             const char *          xml,
-             const std::string &   name,
-             const std::string &   comment,
-             const CLIModuleBody & body);
+RunCLIModule(int                     argc,
+             char *                  argv[],
+             const char *            xml,
+             const std::string &     name,
+             const std::string &     comment,
+             const CLIModuleBody &   body,
+             const CLIParameterMap & parameters = CLIParameterMap());
 } // namespace vr
 
 #endif

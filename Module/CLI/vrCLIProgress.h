@@ -19,6 +19,7 @@ namespace vr
  *   module's name and comment, "<filter-progress>0.42</filter-progress>" at every percent, and "<filter-end>"
  *   with the elapsed time.
  * - Run from a terminal: a progress bar redrawn in place, ended by a newline.
+ * \ingroup VesselReformation
  */
 class CLIProgress
 {

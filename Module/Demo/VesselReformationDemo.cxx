@@ -113,7 +113,8 @@ RunDemo(int argc, char * argv[])
     vr::VesselReformationLogic logic;
     logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom->GetOutput(), "RunoffPhantom"));
     logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom->GetCenterlineTree(), "RunoffCenterlines"));
-    logic.SetWarningCallback([](const std::string & message) { std::cout << "  warning: " << message << std::endl; });
+    logic.SetWarningCallback([](const std::string & message, const std::string &)
+                             { std::cout << "  warning: " << message << std::endl; });
 
     auto run = [&](double a)
     {

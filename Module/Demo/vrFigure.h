@@ -47,7 +47,9 @@ RangeWithin(const FloatImage2DType * image,
             double                   low = 0.0,
             double                   high = 1.0);
 
-/** One picture of a figure and its title. */
+/** One picture of a figure and its title.
+ * \ingroup VesselReformation
+ */
 struct FigurePanel
 {
   RGBImageType::ConstPointer Image;

@@ -9,6 +9,7 @@
 #include "vrInputError.h"
 #include "vrModuleExport.h"
 #include "vrNodeConversion.h"
+#include "vrParameterName.h"
 #include "vrStagedOutputs.h"
 #include "vrVesselReformationLogic.h"
 #include "vrVolumeIO.h"
@@ -24,6 +25,27 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
+/** The logic's parameters by meaning -> this module's XML parameters. */
+const vr::CLIParameterMap ParameterFlags = {
+  { vr::ParameterName::UpAxis, "up" },
+  { vr::ParameterName::Angle, "angle" },
+  { vr::ParameterName::ViewSize, "size" },
+  { vr::ParameterName::PixelSpacing, "spacing" },
+  { vr::ParameterName::DepthMode, "mode" },
+  { vr::ParameterName::FixLumen, "fixLumen" },
+  { vr::ParameterName::Relaxation, "relaxation" },
+  { vr::ParameterName::Anisotropy, "anisotropy" },
+  { vr::ParameterName::Iterations, "iterations" },
+  { vr::ParameterName::Backend, "backend" },
+  { vr::ParameterName::OpenCLDevice, "openclDevice" },
+  { vr::ParameterName::Interpolation, "interpolation" },
+  { vr::ParameterName::SlabThickness, "slabThickness" },
+  { vr::ParameterName::SlabMode, "slabMode" },
+  { vr::ParameterName::Window, "window" },
+  { vr::ParameterName::Level, "level" },
+  { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
+};
+
 std::string
 FileName(const std::string & path)
 {
@@ -99,14 +121,19 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
   logic.SetParameters(parameters);
   logic.SetSurfaceEnabled(outputs.count("outputSurface") != 0);
-  logic.SetWarningCallback([&progress](const std::string & message)
-                           { progress.Print(std::cerr, "warning: " + message); });
+  logic.SetWarningCallback(
+    [&progress, &arguments](const std::string & message, const std::string & parameter)
+    {
+      const auto        entry = ParameterFlags.find(parameter);
+      const std::string hint = entry == ParameterFlags.end() ? "" : " (" + arguments.Spelling(entry->second) + ")";
+      progress.Print(std::cerr, "warning: " + message + hint);
+    });
   logic.SetProgressCallback(
-    [&progress](double fraction, const std::string & stageName)
+    [&progress, &logic](double fraction, const std::string & stageName)
     {
       if (progress.AbortRequested())
       {
-        throw vr::InputError("cancelled by the caller");
+        logic.AbortUpdate();
       }
       progress.Update(fraction, stageName);
     });
@@ -167,5 +194,6 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "VesselReformation",
                           "Multipath curved planar reformation with bilateral depth filtering",
-                          RunVesselReformation);
+                          RunVesselReformation,
+                          ParameterFlags);
 }

@@ -42,8 +42,11 @@ MakeView()
   center[0] = -12.5;
   center[1] = 40.125;
   center[2] = 1.0 / 3.0; // not a short decimal: the text must carry every digit
-  return itk::CPRViewGeometry(
-    itk::detail::MakeVector3(0.0, 0.0, 1.0), 37.5, center, itk::Size<2>{ { 5, 3 } }, itk::detail::MakeVector2(0.7, 0.9));
+  return itk::CPRViewGeometry(itk::detail::MakeVector3(0.0, 0.0, 1.0),
+                              37.5,
+                              center,
+                              itk::Size<2>{ { 5, 3 } },
+                              itk::detail::MakeVector2(0.7, 0.9));
 }
 
 template<typename TImage>

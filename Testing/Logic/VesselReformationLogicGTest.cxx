@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -277,11 +278,94 @@ TEST_F(VesselReformationLogicTest, RecomputesOnlyWhatAChangeInvalidates)
   ExpectCounts(m_Logic.GetStageExecutionCounts(), 4, 7, 9, 6, 9);
   EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 2u);
 
-  // Another volume node: conversion and everything.
+  // Another volume node of the same geometry (another phase of the scan): conversion and resampling only; the
+  // depth map and its relaxation depend on the volume's geometry alone.
   m_Logic.SetVolumeNode(MakeVolumeNode(m_Vessels));
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 5, 8, 10, 7, 10);
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 4, 7, 10, 7, 10);
   EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 3u);
+
+  // A volume of another spacing changes the view's default pixel spacing: everything.
+  auto finer = MakeVolumeNode(m_Vessels);
+  auto matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  matrix->DeepCopy(finer->GetIJKToRASMatrix());
+  matrix->SetElement(2, 2, 0.9);
+  finer->SetIJKToRASMatrix(matrix);
+  m_Logic.SetVolumeNode(finer);
+  m_Logic.Update();
+  ExpectCounts(m_Logic.GetStageExecutionCounts(), 5, 8, 11, 8, 11);
+}
+
+TEST_F(VesselReformationLogicTest, KeepsOneFilterOfEachKindAcrossParameterChanges)
+{
+  m_Logic.Update();
+  // Held here, so a filter made anew could not reuse a freed one's address.
+  const itk::ProcessObject::Pointer depth = m_Logic.GetDepthFilter();
+  const itk::ProcessObject::Pointer relax = m_Logic.GetRelaxFilter();
+  const itk::ProcessObject::Pointer unfiltered = m_Logic.GetUnfilteredResampleFilter();
+  const itk::ProcessObject::Pointer resample = m_Logic.GetResampleFilter();
+  ASSERT_TRUE(depth && relax && unfiltered && resample);
+
+  ReformationParameters                    parameters = m_Logic.GetParameters();
+  const std::vector<std::function<void()>> changes = {
+    [&] { parameters.AngleInDegrees = 45.0; }, [&] { parameters.Relaxation = 0.7; },
+    [&] { parameters.Iterations = 12; },       [&] { parameters.Mode = itk::CPRDepthMode::Nearest; },
+    [&] { parameters.SlabThickness = 1.5; },
+  };
+  unsigned int updates = 1;
+  for (const auto & change : changes)
+  {
+    change();
+    m_Logic.SetParameters(parameters);
+    m_Logic.Update();
+    ++updates;
+    EXPECT_EQ(m_Logic.GetDepthFilter(), depth.GetPointer());
+    EXPECT_EQ(m_Logic.GetRelaxFilter(), relax.GetPointer());
+    EXPECT_EQ(m_Logic.GetUnfilteredResampleFilter(), unfiltered.GetPointer());
+    EXPECT_EQ(m_Logic.GetResampleFilter(), resample.GetPointer());
+  }
+  // Every change reran something, so the same filters did the work.
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().RelaxedSamplings, updates);
+}
+
+TEST_F(VesselReformationLogicTest, AbortUpdateStopsTheRelaxationAndTheNextUpdateRecovers)
+{
+  ReformationParameters parameters = m_Logic.GetParameters();
+  parameters.Iterations = 100000; // far longer than the test waits
+  m_Logic.SetParameters(parameters);
+  unsigned int relaxReports = 0;
+  m_Logic.SetProgressCallback(
+    [&](double, const std::string & stage)
+    {
+      if (stage == "relax" && ++relaxReports == 3)
+      {
+        m_Logic.AbortUpdate();
+      }
+    });
+  EXPECT_THROW(m_Logic.Update(), vr::Cancelled);
+  EXPECT_LT(relaxReports, 10u) << "the relaxation went on after the abort";
+  EXPECT_EQ(m_Logic.GetStageExecutionCounts().RelaxedSamplings, 0u);
+
+  // Without an abort the same logic finishes, and gives what a fresh logic gives.
+  m_Logic.SetProgressCallback({});
+  parameters.Iterations = 40;
+  m_Logic.SetParameters(parameters);
+  const auto             kept = vr::ConvertVolumeNodeToDepthImage(m_Logic.Update().CPR);
+  VesselReformationLogic fresh;
+  fresh.SetVolumeNode(m_Volume);
+  fresh.SetCenterlineNode(m_Centerlines);
+  fresh.SetParameters(parameters);
+  const auto reference = vr::ConvertVolumeNodeToDepthImage(fresh.Update().CPR);
+  const auto count = reference->GetBufferedRegion().GetNumberOfPixels();
+  ASSERT_EQ(kept->GetBufferedRegion().GetNumberOfPixels(), count);
+  EXPECT_TRUE(
+    std::equal(reference->GetBufferPointer(), reference->GetBufferPointer() + count, kept->GetBufferPointer()));
+
+  // An abort asked for outside an update is forgotten.
+  m_Logic.AbortUpdate();
+  parameters.Iterations = 41;
+  m_Logic.SetParameters(parameters);
+  EXPECT_NO_THROW(m_Logic.Update());
 }
 
 TEST_F(VesselReformationLogicTest, NewBackendRerunsRelaxAndResample)
@@ -363,11 +447,19 @@ TEST_F(VesselReformationLogicTest, WarnsWhenMostCenterlinePointsLieOutsideAndCon
   EXPECT_TRUE(m_Logic.GetWarnings().empty()) << m_Logic.GetWarnings().front();
 
   std::vector<std::string> warned;
-  m_Logic.SetWarningCallback([&](const std::string & message) { warned.push_back(message); });
+  std::vector<std::string> parameters;
+  m_Logic.SetWarningCallback(
+    [&](const std::string & message, const std::string & parameter)
+    {
+      warned.push_back(message);
+      parameters.push_back(parameter);
+    });
   m_Logic.SetCenterlineNode(MakeCenterlineNode(m_Vessels, /*forgetRAS=*/true));
   const auto & outputs = m_Logic.Update();
   ASSERT_EQ(warned.size(), 1u);
-  EXPECT_NE(warned[0].find("--centerlineSpace"), std::string::npos) << warned[0];
+  EXPECT_NE(warned[0].find("RAS or LPS"), std::string::npos) << warned[0];
+  EXPECT_EQ(warned[0].find("--"), std::string::npos) << "the logic names no flag: " << warned[0];
+  EXPECT_EQ(parameters[0], vr::ParameterName::CenterlineSpace);
   EXPECT_NE(warned[0].find("100%"), std::string::npos) << warned[0];
   EXPECT_NE(warned[0].find("two-vessels-centerlines"), std::string::npos) << warned[0];
   ASSERT_EQ(m_Logic.GetWarnings().size(), 1u);
@@ -398,9 +490,12 @@ TEST_F(VesselReformationLogicTest, AutoBackendNoticeIsAWarning)
   }
 }
 
-/** Update() must throw vr::InputError whose message holds every one of \a names. */
+/** Update() must throw vr::InputError whose message holds every one of \a names and no command-line flag, and
+ * that names \a parameter (by meaning) as the one at fault. */
 void
-ExpectInputError(VesselReformationLogic & logic, const std::vector<std::string> & names)
+ExpectInputError(VesselReformationLogic &         logic,
+                 const std::vector<std::string> & names,
+                 const std::string &              parameter = "")
 {
   try
   {
@@ -413,6 +508,8 @@ ExpectInputError(VesselReformationLogic & logic, const std::vector<std::string> 
     {
       EXPECT_NE(std::string(error.what()).find(name), std::string::npos) << error.what() << " lacks " << name;
     }
+    EXPECT_EQ(std::string(error.what()).find("--"), std::string::npos) << "the logic names no flag: " << error.what();
+    EXPECT_EQ(error.Parameter(), parameter) << error.what();
   }
 }
 
@@ -421,28 +518,28 @@ TEST_F(VesselReformationLogicTest, BadParametersAreNamedWithTheirValue)
   ReformationParameters parameters = QuickParameters();
   parameters.Relaxation = 2.0;
   m_Logic.SetParameters(parameters);
-  ExpectInputError(m_Logic, { "--relaxation", "2" });
+  ExpectInputError(m_Logic, { "relaxation w", "2" }, vr::ParameterName::Relaxation);
 
   parameters = QuickParameters();
   parameters.Iterations = -5;
   m_Logic.SetParameters(parameters);
-  ExpectInputError(m_Logic, { "--iterations", "-5" });
+  ExpectInputError(m_Logic, { "iterations N", "-5" }, vr::ParameterName::Iterations);
 
   parameters = QuickParameters();
   parameters.ImageSize[0] = 0;
   parameters.ImageSize[1] = 10;
   m_Logic.SetParameters(parameters);
-  ExpectInputError(m_Logic, { "--size", "0,10" });
+  ExpectInputError(m_Logic, { "view size", "0,10" }, vr::ParameterName::ViewSize);
 
   parameters = QuickParameters();
   parameters.Anisotropy = -1.0;
   m_Logic.SetParameters(parameters);
-  ExpectInputError(m_Logic, { "--anisotropy", "-1" });
+  ExpectInputError(m_Logic, { "anisotropy a", "-1" }, vr::ParameterName::Anisotropy);
 
   parameters = QuickParameters();
   parameters.SlabThickness = std::nan("");
   m_Logic.SetParameters(parameters);
-  ExpectInputError(m_Logic, { "--slabThickness", "nan" });
+  ExpectInputError(m_Logic, { "slab thickness", "nan" }, vr::ParameterName::SlabThickness);
 
   EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
 }
@@ -453,7 +550,7 @@ TEST_F(VesselReformationLogicTest, ViewThatDoesNotFitInMemoryIsRefusedBeforeAllo
   parameters.ImageSize[0] = 100000000;
   parameters.ImageSize[1] = 100000000;
   m_Logic.SetParameters(parameters);
-  ExpectInputError(m_Logic, { "--size", "100000000,100000000", "memory" });
+  ExpectInputError(m_Logic, { "view size", "100000000,100000000", "memory" }, vr::ParameterName::ViewSize);
   EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
 
   // The logic recovers: a sensible size runs.
@@ -642,9 +739,12 @@ TEST(NodeConversion, CenterlineNodePointsBecomeLPS)
 TEST(NodeConversion, OutputImageNodeLiesOnTheViewPlane)
 {
   // up S, angle 0: u = LPS (1, 0, 0), v = (0, 1, 0); C = (5, 6, 7), 4 x 3 pixels of 0.5 x 2 mm.
-  const itk::CPRViewGeometry view(
-    itk::detail::MakeVector3(0, 0, 1), 0.0, MakePoint(5, 6, 7), itk::Size<2>{ { 4, 3 } }, itk::detail::MakeVector2(0.5, 2.0));
-  auto image = vr::DepthImageType::New();
+  const itk::CPRViewGeometry view(itk::detail::MakeVector3(0, 0, 1),
+                                  0.0,
+                                  MakePoint(5, 6, 7),
+                                  itk::Size<2>{ { 4, 3 } },
+                                  itk::detail::MakeVector2(0.5, 2.0));
+  auto                       image = vr::DepthImageType::New();
   view.ConfigureImage(image.GetPointer());
   image->Allocate();
   for (int k = 0; k < 12; ++k)
@@ -676,10 +776,13 @@ TEST(NodeConversion, OutputImageNodeLiesOnTheViewPlane)
 TEST(CutSurface, PointsLieAtTheDepthAndJumpsStayOpen)
 {
   // 3 x 2 pixels of 1 mm, C = 0, up S, angle 0. Depths: left column 0, the rest 0 except pixel (2, 1) = 10 mm.
-  const itk::CPRViewGeometry view(
-    itk::detail::MakeVector3(0, 0, 1), 0.0, MakePoint(0, 0, 0), itk::Size<2>{ { 3, 2 } }, itk::detail::MakeVector2(1.0, 1.0));
-  auto depth = vr::DepthImageType::New();
-  auto intensity = vr::DepthImageType::New();
+  const itk::CPRViewGeometry view(itk::detail::MakeVector3(0, 0, 1),
+                                  0.0,
+                                  MakePoint(0, 0, 0),
+                                  itk::Size<2>{ { 3, 2 } },
+                                  itk::detail::MakeVector2(1.0, 1.0));
+  auto                       depth = vr::DepthImageType::New();
+  auto                       intensity = vr::DepthImageType::New();
   view.ConfigureImage(depth.GetPointer());
   view.ConfigureImage(intensity.GetPointer());
   depth->Allocate();

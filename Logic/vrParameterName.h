@@ -1,0 +1,34 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrParameterName_h
+#define vrParameterName_h
+
+namespace vr
+{
+/** The reformation's parameters by their meaning, as vr::InputError::Parameter() and the logic's warnings name
+ * them. Front ends map these to their own controls (the command-line modules to flags, the widgets to fields). */
+namespace ParameterName
+{
+constexpr const char * UpAxis = "up axis";
+constexpr const char * Angle = "angle";
+constexpr const char * ViewCenter = "view centre";
+constexpr const char * ViewSize = "view size";
+constexpr const char * PixelSpacing = "pixel spacing";
+constexpr const char * DepthMode = "depth mode";
+constexpr const char * FixLumen = "lumen fixing";
+constexpr const char * Relaxation = "relaxation";
+constexpr const char * Anisotropy = "anisotropy";
+constexpr const char * Iterations = "iterations";
+constexpr const char * Backend = "relax backend";
+constexpr const char * OpenCLDevice = "OpenCL device";
+constexpr const char * Interpolation = "interpolation";
+constexpr const char * SlabThickness = "slab thickness";
+constexpr const char * SlabMode = "slab mode";
+constexpr const char * Window = "window";
+constexpr const char * Level = "level";
+/** The coordinate system (RAS or LPS) the centerlines were read in. */
+constexpr const char * CenterlineSpace = "centerline coordinate system";
+} // namespace ParameterName
+
+} // namespace vr
+
+#endif
