@@ -847,6 +847,15 @@ VesselReformationLogic::Update()
   }
   catch (const itk::ExceptionObject & error)
   {
+    if (d.Parameters.PixelSpacing[0] > 0.0 && d.Parameters.ImageSize[0] == 0)
+    {
+      // The view's size follows from the spacing when only that was given: name it (e.g. a spacing of 1e-300 mm
+      // asks for more pixels than an integer holds).
+      std::ostringstream stage;
+      stage << "view at pixel spacing " << d.Parameters.PixelSpacing[0] << "," << d.Parameters.PixelSpacing[1]
+            << " mm: " << error.GetDescription();
+      throw InputError(stage.str(), ParameterName::PixelSpacing);
+    }
     RethrowFilterError("view", error);
   }
   d.CheckMemory(d.Depth->GetView());
