@@ -1320,6 +1320,32 @@ TEST_F(BadInputTest, VTPWithOffsetsOrConnectivityOutsideItsArrays)
   ExpectRejected({ Volume(), Write("connectivity.vtp", vtp("0 1 99", "3")) }, { "connectivity.vtp", "99" });
 }
 
+TEST_F(BadInputTest, VTPWhoseBinaryHeadersDeclareMoreThanTheFileHolds)
+{
+  // VTK 9.1 allocates what a binary array's size header declares before reading it (fuzzing found a compressed
+  // header asking for 2.6 GB). Headers written by hand: base64 of little-endian UInt32 words.
+  const auto vtp = [](const std::string & compressor, const std::string & radii)
+  {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt32\"" +
+           compressor +
+           ">\n<PolyData>\n<Piece NumberOfPoints=\"3\" NumberOfVerts=\"0\" NumberOfLines=\"1\" "
+           "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n<PointData>\n<DataArray type=\"Float64\" Name=\"Radius\" "
+           "format=\"binary\">" +
+           radii +
+           "</DataArray>\n</PointData>\n<Points>\n<DataArray type=\"Float32\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">0 0 0 0 0 10 0 0 20</DataArray>\n</Points>\n<Lines>\n<DataArray type=\"Int64\" "
+           "Name=\"connectivity\" format=\"ascii\">0 1 2</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
+           "format=\"ascii\">3</DataArray>\n</Lines>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+  };
+  // Uncompressed: one word, 0x10000000 bytes (256 MiB), then 4 bytes: "AAAAEAAAAAA=".
+  ExpectRejected({ Volume(), Write("uncompressed.vtp", vtp("", "AAAAEAAAAAA=")) }, { "uncompressed.vtp", "declares" });
+  // Compressed: 1 block of 0x9C000000 bytes (2.6 GB), last block 0, compressed size 16: "AQAAAAAAAJwAAAAAEAAAAA==".
+  ExpectRejected(
+    { Volume(), Write("compressed.vtp", vtp(" compressor=\"vtkZLibDataCompressor\"", "AQAAAAAAAJwAAAAAEAAAAA==")) },
+    { "compressed.vtp", "declares" });
+}
+
 TEST_F(BadInputTest, TubeFileDeclaringTwoBillionPoints)
 {
   const std::string tre = Write("huge.tre",
