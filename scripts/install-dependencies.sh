@@ -18,6 +18,7 @@ packages=(
   pocl-opencl-icd ocl-icd-opencl-dev opencl-clhpp-headers clinfo   # OpenCL 3.0 on the CPU through PoCL
   libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
   libxml2-utils                                   # xmllint: the modules' XML against CTK's schema (a test)
+  clang libclang-rt-14-dev                        # scripts/test.sh --sanitize and scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
 export DEBIAN_FRONTEND=noninteractive
