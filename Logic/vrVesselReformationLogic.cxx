@@ -507,8 +507,9 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
   bool                     tryOpenCL = Parameters.Backend == RelaxBackend::OpenCL;
   if (Parameters.Backend != RelaxBackend::CPU && Parameters.Solver == itk::BilateralDepthRelaxSolver::Steady)
   {
-    notice = SteadySolverOnCPUNotice(Parameters.Backend);
-    reason = notice;
+    // Asked for OpenCL by name, the user hears why it is not used; auto simply reports its reason.
+    notice = Parameters.Backend == RelaxBackend::OpenCL ? SteadySolverOnCPUNotice(Parameters.Backend) : "";
+    reason = std::string(ToString(Parameters.Backend)) + ": the steady solver has no OpenCL kernel, so the CPU";
     tryOpenCL = false;
   }
   else if (Parameters.Backend == RelaxBackend::OpenCL)
@@ -1011,7 +1012,7 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   const bool   steady = parameters.Solver == itk::BilateralDepthRelaxSolver::Steady;
   auto         filter =
     CreateRelaxFilter(steady ? RelaxBackend::CPU : parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
-  if (steady && parameters.Backend != RelaxBackend::CPU)
+  if (steady && parameters.Backend == RelaxBackend::OpenCL)
   {
     notice = SteadySolverOnCPUNotice(parameters.Backend);
   }
