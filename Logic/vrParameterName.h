@@ -27,6 +27,11 @@ constexpr const char * Window = "window";
 constexpr const char * Level = "level";
 /** The coordinate system (RAS or LPS) the centerlines were read in. */
 constexpr const char * CenterlineSpace = "centerline coordinate system";
+/** Centerline extraction from a segmentation (vr::CenterlineExtractionParameters). */
+constexpr const char * VesselLabels = "vessel labels";
+constexpr const char * RootPoint = "root point";
+constexpr const char * RootPointTolerance = "root point tolerance";
+constexpr const char * MinimumBranchLength = "minimum branch length";
 } // namespace ParameterName
 
 } // namespace vr

@@ -6,6 +6,7 @@
 #include "itkCPRResampleImageFilter.h"
 #include "itkMinimumMaximumImageCalculator.h"
 #include "vrCutSurface.h"
+#include "vrITKMessages.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
 #include "vrParameterName.h"
@@ -16,6 +17,7 @@
 #include <atomic>
 #include <chrono>
 #include <climits>
+#include <limits>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -51,7 +53,8 @@ RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error
 {
   if (dynamic_cast<const itk::ProcessAborted *>(&error) != nullptr)
   {
-    throw Cancelled(stage + ": cancelled");
+    // The filter says how far it got ("aborted after 2801 of 200000 iterations").
+    throw Cancelled(stage + ": cancelled (" + error.GetDescription() + ")");
   }
   throw InputError(stage + ": " + error.GetDescription());
 }
@@ -65,6 +68,10 @@ ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & par
   filter->SetNumberOfIterations(static_cast<unsigned int>(parameters.Iterations));
 }
 } // namespace
+
+/** Whether updating \a output will run its source (defined below). */
+bool
+WillRun(itk::DataObject * output);
 
 /** One stage of the pipeline as the logic watches it: how often its filter ran, how long the latest run took, and
  * where its progress falls in the whole update. */
@@ -81,6 +88,8 @@ struct VesselReformationLogic::Internals
 {
   vtkSmartPointer<VolumeNode>     VolumeNodeInput;
   vtkSmartPointer<CenterlineNode> CenterlineNodeInput;
+  vtkSmartPointer<VolumeNode>     SegmentationNodeInput;
+  CenterlineExtractionParameters  ExtractionParameters;
   ReformationParameters           Parameters;
   bool                            SurfaceEnabled{ true };
   ProgressCallback                Progress;
@@ -94,9 +103,19 @@ struct VesselReformationLogic::Internals
   VolumeImageType::Pointer Volume;
   float                    VolumeMinimum{ 0.0f };
   itk::CenterlineTree      Tree;
+  bool                     VolumeChanged{ false };
+  // The segmentation's vessel mask, made again only when the node or its vessel labels change.
+  VolumeNode *                  ConvertedSegmentationNode{ nullptr };
+  vtkMTimeType                  ConvertedSegmentationTime{ 0 };
+  std::vector<double>           ConvertedLabels;
+  SegmentationMaskType::Pointer SegmentationMask;
+  // Where Tree came from: a centerline node, or the extraction (its run count when Tree was taken from it).
+  bool         TreeFromExtraction{ false };
+  unsigned int TreeExtractionRuns{ 0 };
 
-  // The pipeline, one filter of each kind for the logic's lifetime: depth -> relax -> resample (relaxed CPR), and
-  // depth -> resample (unfiltered CPR).
+  // The pipeline, one filter of each kind for the logic's lifetime: [extraction ->] depth -> relax -> resample
+  // (relaxed CPR), and depth -> resample (unfiltered CPR).
+  CenterlineExtractionFilterType::Pointer         Extraction = CenterlineExtractionFilterType::New();
   DepthFilterType::Pointer                        Depth = DepthFilterType::New();
   RelaxFilterType::Pointer                        CPURelax = RelaxFilterType::New();
   std::map<std::string, RelaxFilterType::Pointer> OpenCLRelax; // by device request
@@ -107,6 +126,7 @@ struct VesselReformationLogic::Internals
   ResampleFilterType::Pointer                     UnfilteredResample = ResampleFilterType::New();
   ResampleFilterType::Pointer                     RelaxedResample = ResampleFilterType::New();
 
+  StageWatch ExtractionWatch;
   StageWatch DepthWatch;
   StageWatch RelaxWatch;
   StageWatch UnfilteredWatch;
@@ -123,6 +143,8 @@ struct VesselReformationLogic::Internals
   std::atomic<bool> AbortRequested{ false };
 
   std::string InputWarning;
+  std::string SegmentationWarning;
+  std::string ExtractionWarning;
   std::string BackendNotice;
 
   ReformationOutputs Outputs;
@@ -130,6 +152,7 @@ struct VesselReformationLogic::Internals
 
   Internals()
   {
+    Watch(Extraction, ExtractionWatch, "centerlines");
     Watch(Depth, DepthWatch, "depth");
     Watch(CPURelax, RelaxWatch, "relax");
     Watch(UnfilteredResample, UnfilteredWatch, "resample");
@@ -176,6 +199,14 @@ struct VesselReformationLogic::Internals
 
   void
   ConvertInputs();
+  std::string
+  SegmentationName() const;
+  void
+  CheckSegmentationAgainstVolume();
+  void
+  CheckTreeAgainstVolume();
+  void
+  ExtractCenterlines();
   void
   CheckMemory(const itk::CPRViewGeometry & view) const;
   void
@@ -197,11 +228,22 @@ VesselReformationLogic::Internals::ConvertInputs()
 {
   const auto         start = Clock::now();
   const vtkMTimeType volumeTime = VolumeNodeInput->GetMTime();
-  const vtkMTimeType centerlineTime = CenterlineNodeInput->GetMTime();
   const bool volumeChanged = VolumeNodeInput.GetPointer() != ConvertedVolumeNode || volumeTime != ConvertedVolumeTime;
-  const bool centerlinesChanged =
-    CenterlineNodeInput.GetPointer() != ConvertedCenterlineNode || centerlineTime != ConvertedCenterlineTime;
-  if (!volumeChanged && !centerlinesChanged)
+  bool       centerlinesChanged = false;
+  bool       segmentationChanged = false;
+  if (CenterlineNodeInput)
+  {
+    centerlinesChanged = CenterlineNodeInput.GetPointer() != ConvertedCenterlineNode ||
+                         CenterlineNodeInput->GetMTime() != ConvertedCenterlineTime;
+  }
+  else
+  {
+    segmentationChanged = SegmentationNodeInput.GetPointer() != ConvertedSegmentationNode ||
+                          SegmentationNodeInput->GetMTime() != ConvertedSegmentationTime ||
+                          ExtractionParameters.Labels != ConvertedLabels;
+  }
+  VolumeChanged = volumeChanged;
+  if (!volumeChanged && !centerlinesChanged && !segmentationChanged)
   {
     return;
   }
@@ -220,20 +262,74 @@ VesselReformationLogic::Internals::ConvertInputs()
   {
     ConvertedCenterlineNode = nullptr;
     Tree = ConvertCenterlineNodeToTree(CenterlineNodeInput);
+    TreeFromExtraction = false;
     ConvertedCenterlineNode = CenterlineNodeInput;
-    ConvertedCenterlineTime = centerlineTime;
+    ConvertedCenterlineTime = CenterlineNodeInput->GetMTime();
+  }
+  if (segmentationChanged)
+  {
+    ConvertedSegmentationNode = nullptr;
+    const VolumeImageType::Pointer values = ConvertVolumeNodeToItkImage(SegmentationNodeInput);
+    SegmentationReadReport         report;
+    SegmentationMask = MakeSegmentationMask(values, ExtractionParameters.Labels, SegmentationName(), &report);
+    if (report.ForegroundVoxels == 0)
+    {
+      if (ExtractionParameters.Labels.empty())
+      {
+        throw InputError(SegmentationName() + ": no vessel voxel: every voxel is 0");
+      }
+      std::ostringstream labels;
+      for (std::size_t k = 0; k < ExtractionParameters.Labels.size(); ++k)
+      {
+        labels << (k == 0 ? "" : ", ") << ExtractionParameters.Labels[k];
+      }
+      throw InputError(SegmentationName() + ": no voxel with label " + labels.str() + "; its values are " +
+                         report.Values,
+                       ParameterName::VesselLabels);
+    }
+    Extraction->SetInput(SegmentationMask);
+    ConvertedSegmentationNode = SegmentationNodeInput;
+    ConvertedSegmentationTime = SegmentationNodeInput->GetMTime();
+    ConvertedLabels = ExtractionParameters.Labels;
   }
   ++Counts.Conversion;
+  if (SegmentationNodeInput)
+  {
+    CheckSegmentationAgainstVolume();
+  }
+  else
+  {
+    CheckTreeAgainstVolume();
+  }
+  Outputs.Times.Conversion = SecondsSince(start);
+}
 
+std::string
+VesselReformationLogic::Internals::SegmentationName() const
+{
+  const std::string & name = SegmentationNodeInput->GetName();
+  return name.empty() ? std::string("segmentation") : "segmentation \"" + name + "\"";
+}
+
+void
+VesselReformationLogic::Internals::CheckTreeAgainstVolume()
+{
   InputWarning.clear();
   const double outside = FractionOfPointsOutside(Tree, Volume);
   if (outside > 0.5)
   {
     std::ostringstream message;
-    message << "centerlines";
-    if (!CenterlineNodeInput->GetName().empty())
+    if (TreeFromExtraction)
     {
-      message << " \"" << CenterlineNodeInput->GetName() << "\"";
+      message << "the centerlines of " << SegmentationName();
+    }
+    else
+    {
+      message << "centerlines";
+      if (!CenterlineNodeInput->GetName().empty())
+      {
+        message << " \"" << CenterlineNodeInput->GetName() << "\"";
+      }
     }
     message << ": " << std::lround(100.0 * outside) << "% of the " << Tree.GetNumberOfPoints()
             << " points lie outside the volume";
@@ -241,12 +337,170 @@ VesselReformationLogic::Internals::ConvertInputs()
     {
       message << " \"" << VolumeNodeInput->GetName() << "\"";
     }
-    message << "; they may be in the other coordinate system: check whether the centerlines are in RAS or LPS. "
-               "The reformation continues.";
+    message << (TreeFromExtraction ? "; the segmentation covers little of the volume. The reformation continues."
+                                   : "; they may be in the other coordinate system: check whether the centerlines "
+                                     "are in RAS or LPS. The reformation continues.");
     InputWarning = message.str();
-    Warning(InputWarning, ParameterName::CenterlineSpace);
+    Warning(InputWarning, TreeFromExtraction ? std::string() : std::string(ParameterName::CenterlineSpace));
   }
-  Outputs.Times.Conversion = SecondsSince(start);
+}
+
+namespace
+{
+/** The LPS bounding box of an image's voxel centres. */
+void
+PhysicalBounds(const itk::ImageBase<3> * image, itk::Point<double, 3> & low, itk::Point<double, 3> & high)
+{
+  const auto region = image->GetLargestPossibleRegion();
+  low.Fill(std::numeric_limits<double>::infinity());
+  high.Fill(-std::numeric_limits<double>::infinity());
+  for (unsigned int corner = 0; corner < 8; ++corner)
+  {
+    itk::Index<3> index;
+    for (unsigned int axis = 0; axis < 3; ++axis)
+    {
+      index[axis] =
+        region.GetIndex(axis) + ((corner >> axis) & 1 ? static_cast<itk::IndexValueType>(region.GetSize(axis)) - 1 : 0);
+    }
+    itk::Point<double, 3> point;
+    image->TransformIndexToPhysicalPoint(index, point);
+    for (unsigned int axis = 0; axis < 3; ++axis)
+    {
+      low[axis] = std::min(low[axis], point[axis]);
+      high[axis] = std::max(high[axis], point[axis]);
+    }
+  }
+}
+
+bool
+SameGrid(const itk::ImageBase<3> * a, const itk::ImageBase<3> * b)
+{
+  if (a->GetLargestPossibleRegion() != b->GetLargestPossibleRegion())
+  {
+    return false;
+  }
+  for (unsigned int i = 0; i < 3; ++i)
+  {
+    if (std::abs(a->GetSpacing()[i] - b->GetSpacing()[i]) > 1e-6 * a->GetSpacing()[i] ||
+        std::abs(a->GetOrigin()[i] - b->GetOrigin()[i]) > 1e-3)
+    {
+      return false;
+    }
+    for (unsigned int j = 0; j < 3; ++j)
+    {
+      if (std::abs(a->GetDirection()(i, j) - b->GetDirection()(i, j)) > 1e-6)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+std::string
+DescribeGrid(const itk::ImageBase<3> * image)
+{
+  std::ostringstream    text;
+  const auto            size = image->GetLargestPossibleRegion().GetSize();
+  const auto            spacing = image->GetSpacing();
+  itk::Point<double, 3> low;
+  itk::Point<double, 3> high;
+  PhysicalBounds(image, low, high);
+  text << size[0] << " x " << size[1] << " x " << size[2] << " voxels of " << spacing[0] << " x " << spacing[1] << " x "
+       << spacing[2] << " mm spanning LPS " << low << " to " << high;
+  return text.str();
+}
+} // namespace
+
+void
+VesselReformationLogic::Internals::CheckSegmentationAgainstVolume()
+{
+  SegmentationWarning.clear();
+  if (SameGrid(SegmentationMask, Volume))
+  {
+    return;
+  }
+  const std::string     volumeName = VolumeNodeInput->GetName().empty()
+                                       ? std::string("the volume")
+                                       : "the volume \"" + VolumeNodeInput->GetName() + "\"";
+  itk::Point<double, 3> segmentationLow;
+  itk::Point<double, 3> segmentationHigh;
+  itk::Point<double, 3> volumeLow;
+  itk::Point<double, 3> volumeHigh;
+  PhysicalBounds(SegmentationMask, segmentationLow, segmentationHigh);
+  PhysicalBounds(Volume, volumeLow, volumeHigh);
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    if (segmentationHigh[axis] < volumeLow[axis] || segmentationLow[axis] > volumeHigh[axis])
+    {
+      throw InputError(SegmentationName() + " (" + DescribeGrid(SegmentationMask) + ") does not overlap " + volumeName +
+                       " (" + DescribeGrid(Volume) + "); is it the segmentation of this scan?");
+    }
+  }
+  SegmentationWarning = SegmentationName() + " lies on another grid (" + DescribeGrid(SegmentationMask) + ") than " +
+                        volumeName + " (" + DescribeGrid(Volume) +
+                        "); its centerlines are extracted on its own grid, in physical space, and reformed in the "
+                        "volume. The reformation continues.";
+  Warning(SegmentationWarning, "");
+}
+
+void
+VesselReformationLogic::Internals::ExtractCenterlines()
+{
+  ExtractionWatch.From = 0.0;
+  ExtractionWatch.To = 0.0;
+  if (!SegmentationNodeInput)
+  {
+    Outputs.ExtractedCenterlines = nullptr;
+    ExtractionWarning.clear();
+    return;
+  }
+  ConfigureCenterlineExtraction(Extraction, SegmentationMask, SegmentationName(), ExtractionParameters);
+  // The extraction takes a fixed share of the progress bar when it runs; the other stages share the rest.
+  ExtractionWatch.To = WillRun(Extraction->GetOutput()) ? 0.3 : 0.0;
+  const unsigned int runsBefore = ExtractionWatch.Runs;
+  try
+  {
+    Extraction->Update();
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    if (dynamic_cast<const itk::ProcessAborted *>(&error) != nullptr)
+    {
+      throw Cancelled("centerlines: cancelled");
+    }
+    throw InputError(SegmentationName() + ": " + detail::CondenseITKMessage(error));
+  }
+  if (AbortRequested)
+  {
+    throw Cancelled("centerlines: cancelled");
+  }
+  Outputs.Times.Extraction = ExtractionWatch.Runs != runsBefore ? ExtractionWatch.Seconds : 0.0;
+  if (TreeFromExtraction && TreeExtractionRuns == ExtractionWatch.Runs)
+  {
+    if (VolumeChanged)
+    {
+      CheckTreeAgainstVolume();
+    }
+    return;
+  }
+  Tree = Extraction->GetCenterlineTree();
+  TreeFromExtraction = true;
+  TreeExtractionRuns = ExtractionWatch.Runs;
+  ConvertedCenterlineNode = nullptr; // a centerline node set later is converted again
+  const std::string & name = SegmentationNodeInput->GetName();
+  Outputs.ExtractedCenterlines =
+    ConvertTreeToCenterlineNode(Tree, (name.empty() ? "segmentation" : name) + " centerlines");
+  ExtractionWarning.clear();
+  if (Extraction->GetNumberOfComponentsWithoutCenterline() > 0)
+  {
+    ExtractionWarning = SegmentationName() + ": " +
+                        std::to_string(Extraction->GetNumberOfComponentsWithoutCenterline()) + " of its " +
+                        std::to_string(Extraction->GetNumberOfComponents()) +
+                        " connected components are too small or too round to have a centerline; left out";
+    Warning(ExtractionWarning, "");
+  }
+  CheckTreeAgainstVolume();
 }
 
 void
@@ -383,10 +637,12 @@ VesselReformationLogic::Internals::PlanProgress()
   {
     total += runs[k] ? weights[k] : 0.0;
   }
-  double at = 0.0;
+  // After the extraction's share, when it ran.
+  const double base = ExtractionWatch.To;
+  double       at = base;
   for (int k = 0; k < 4; ++k)
   {
-    const double share = runs[k] && total > 0.0 ? weights[k] / total : 0.0;
+    const double share = runs[k] && total > 0.0 ? (1.0 - base) * weights[k] / total : 0.0;
     watches[k]->From = at;
     watches[k]->To = at + share;
     at += share;
@@ -415,7 +671,7 @@ void
 VesselReformationLogic::Internals::ClearAbortFlags()
 {
   AbortRequested = false;
-  std::vector<itk::ProcessObject *> filters = { Depth, CPURelax, UnfilteredResample, RelaxedResample };
+  std::vector<itk::ProcessObject *> filters = { Extraction, Depth, CPURelax, UnfilteredResample, RelaxedResample };
   for (const auto & entry : OpenCLRelax)
   {
     filters.push_back(entry.second);
@@ -488,6 +744,30 @@ VesselReformationLogic::GetCenterlineNode() const
 }
 
 void
+VesselReformationLogic::SetSegmentationNode(VolumeNode * node)
+{
+  m_Internals->SegmentationNodeInput = node;
+}
+
+VolumeNode *
+VesselReformationLogic::GetSegmentationNode() const
+{
+  return m_Internals->SegmentationNodeInput;
+}
+
+void
+VesselReformationLogic::SetCenterlineExtractionParameters(const CenterlineExtractionParameters & parameters)
+{
+  m_Internals->ExtractionParameters = parameters;
+}
+
+const CenterlineExtractionParameters &
+VesselReformationLogic::GetCenterlineExtractionParameters() const
+{
+  return m_Internals->ExtractionParameters;
+}
+
+void
 VesselReformationLogic::SetParameters(const ReformationParameters & parameters)
 {
   m_Internals->Parameters = parameters;
@@ -532,9 +812,17 @@ VesselReformationLogic::Update()
   {
     throw InputError("vessel reformation: no volume node is set");
   }
-  if (!d.CenterlineNodeInput)
+  if (!d.CenterlineNodeInput && !d.SegmentationNodeInput)
   {
-    throw InputError("vessel reformation: no centerline node is set");
+    throw InputError("vessel reformation: no centerline node and no segmentation node is set; set one");
+  }
+  if (d.CenterlineNodeInput && d.SegmentationNodeInput)
+  {
+    throw InputError("vessel reformation: both a centerline node and a segmentation node are set; set only one");
+  }
+  if (d.SegmentationNodeInput)
+  {
+    d.ExtractionParameters.Validate();
   }
   d.AbortRequested = false;
   d.Running = true;
@@ -550,6 +838,7 @@ VesselReformationLogic::Update()
 
   d.Outputs.Times = StageTimes();
   d.ConvertInputs();
+  d.ExtractCenterlines();
   d.ConfigurePipeline();
   try
   {
@@ -613,6 +902,12 @@ VesselReformationLogic::AbortUpdate()
   }
 }
 
+CenterlineExtractionFilterType *
+VesselReformationLogic::GetCenterlineExtractionFilter() const
+{
+  return m_Internals->Extraction;
+}
+
 auto
 VesselReformationLogic::GetDepthFilter() const -> DepthFilterType *
 {
@@ -647,6 +942,7 @@ StageCounts
 VesselReformationLogic::GetStageExecutionCounts() const
 {
   StageCounts counts = m_Internals->Counts;
+  counts.Extraction = m_Internals->ExtractionWatch.Runs;
   counts.Depth = m_Internals->DepthWatch.Runs;
   counts.Relax = m_Internals->RelaxWatch.Runs;
   counts.UnfilteredSamplings = m_Internals->UnfilteredWatch.Runs;
@@ -658,7 +954,10 @@ std::vector<std::string>
 VesselReformationLogic::GetWarnings() const
 {
   std::vector<std::string> warnings;
-  for (const std::string * warning : { &m_Internals->InputWarning, &m_Internals->BackendNotice })
+  for (const std::string * warning : { &m_Internals->SegmentationWarning,
+                                       &m_Internals->ExtractionWarning,
+                                       &m_Internals->InputWarning,
+                                       &m_Internals->BackendNotice })
   {
     if (!warning->empty())
     {
@@ -698,18 +997,24 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
                                         const MaskImageType *         mask,
                                         const ReformationParameters & parameters,
                                         const ProgressCallback &      progress,
-                                        std::vector<std::string> &    warnings)
+                                        std::vector<std::string> &    warnings,
+                                        std::string *                 backendUsed)
 {
   parameters.Validate();
   if (depth == nullptr)
   {
     throw InputError("relaxation: no depth image given");
   }
-  std::string notice;
-  auto        filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice);
+  std::string  notice;
+  RelaxBackend chosen = RelaxBackend::CPU;
+  auto         filter = CreateRelaxFilter(parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
   if (!notice.empty())
   {
     warnings.push_back(notice);
+  }
+  if (backendUsed != nullptr)
+  {
+    *backendUsed = ToString(chosen);
   }
   filter->SetInput(depth);
   filter->SetFixedMask(mask);

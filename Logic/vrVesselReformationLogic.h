@@ -5,6 +5,7 @@
 #include "itkCPRDepthImageFilter.h"
 #include "itkCPRResampleImageFilter.h"
 #include "itkCPRViewGeometry.h"
+#include "vrCenterlineExtraction.h"
 #include "vrCenterlineNode.h"
 #include "vrReformationParameters.h"
 #include "vrRelaxBackend.h"
@@ -27,8 +28,10 @@ namespace vr
  */
 struct StageTimes
 {
-  /** Nodes to ITK images and the centerline tree. */
+  /** Nodes to ITK images and the centerline tree (or the segmentation's vessel mask). */
   double Conversion{ 0.0 };
+  /** CenterlineExtractionFilter: the centerlines of the segmentation node. */
+  double Extraction{ 0.0 };
   /** CPRDepthImageFilter: depth, fixed mask, owner labels. */
   double Depth{ 0.0 };
   /** BilateralDepthRelaxFilter. */
@@ -46,6 +49,8 @@ struct StageTimes
 struct StageCounts
 {
   unsigned int Conversion{ 0 };
+  /** Executions of the centerline extraction (segmentation input only). */
+  unsigned int Extraction{ 0 };
   unsigned int Depth{ 0 };
   unsigned int Relax{ 0 };
   /** Executions of the resample stage, whichever of its two images it sampled. */
@@ -69,6 +74,9 @@ struct ReformationOutputs
   vtkSmartPointer<VolumeNode> OwnerLabels;
   vtkSmartPointer<VolumeNode> UnfilteredCPR;
   vtkSmartPointer<VolumeNode> CPR;
+  /** The centerlines extracted from the segmentation node (RAS, radius per point, one polyline per branch); null
+   * when the centerlines come from a centerline node. */
+  vtkSmartPointer<CenterlineNode> ExtractedCenterlines;
   /** The cut surface coloured by intensity; null while the surface is disabled. */
   vtkSmartPointer<vtkPolyData> Surface;
   /** The resolved view every output lies on. */
@@ -82,13 +90,17 @@ struct ReformationOutputs
  * \brief The module logic of the multipath vessel reformation (DESIGN 3.7), shaped like a 3D Slicer loadable
  * module's logic.
  *
- * It takes a volume node, a centerline node and a parameter object, converts the nodes to ITK (vrNodeConversion.h,
- * the one place RAS meets LPS), and keeps one ITK pipeline for its lifetime: CPRDepthImageFilter, then
+ * It takes a volume node, the centerlines (a centerline node, or a segmentation node whose centerlines it extracts)
+ * and a parameter object, converts the nodes to ITK (vrNodeConversion.h, the one place RAS meets LPS), and keeps one
+ * ITK pipeline for its lifetime: with a segmentation, CenterlineExtractionFilter first; CPRDepthImageFilter, then
  * BilateralDepthRelaxFilter on the backend the parameters ask for (one CPU filter, and one OpenCL filter per device
  * asked for), then a CPRResampleImageFilter on the unfiltered and one on the relaxed depth; then it builds the cut
  * surface. Each Update() passes the parameters to the filters, whose setters change nothing when a value is the
  * same, and updates the two resample filters: ITK's modified times decide what reruns. Output nodes are made
  * anew for the stages that ran. So:
+ * - a new segmentation node (or a change to it), new vessel labels: its vessel mask, the extraction, and everything
+ *   after it when the centerlines differ; new root points or minimum branch length: the extraction, and the rest when
+ *   the centerlines differ;
  * - new centerlines, view (up, angle, centre, size, spacing), depth mode or lumen fixing: everything;
  * - a new volume: resampling and the surface; the depth map and its relaxation too only when the volume's geometry
  *   changed (it supplies the view's defaults);
@@ -142,6 +154,28 @@ public:
   CenterlineNode *
   GetCenterlineNode() const;
 
+  /** The segmentation whose centerlines are reformed (role "segmentation"), instead of a centerline node: a label
+   * map or mask volume node (3D Slicer's vtkMRMLLabelMapVolumeNode; IJK->RAS geometry, any orientation and spacing),
+   * a level set (inside where < 0) or a probability map (>= 0.5), see vr::MakeSegmentationMask. Several masks are
+   * combined before (vr::ReadSegmentation). Set exactly one of the segmentation and centerline nodes; Update() throws
+   * when both or neither are. The segmentation may lie on another grid than the volume (a warning says so); it
+   * must overlap it. The logic keeps a reference; it extracts again only when the node, its vessel labels or the
+   * extraction parameters change, and GetOutputs().ExtractedCenterlines holds the result.
+   * \param node the segmentation, or null to clear it. */
+  void
+  SetSegmentationNode(VolumeNode * node);
+  /** \return the segmentation node, or null. */
+  VolumeNode *
+  GetSegmentationNode() const;
+
+  /** \param parameters vessel labels, root points (RAS) and minimum branch length of the extraction; checked by
+   * Update(). */
+  void
+  SetCenterlineExtractionParameters(const CenterlineExtractionParameters & parameters);
+  /** \return the extraction parameters the next Update() uses. */
+  const CenterlineExtractionParameters &
+  GetCenterlineExtractionParameters() const;
+
   /** \param parameters every setting; checked by Update(). */
   void
   SetParameters(const ReformationParameters & parameters);
@@ -177,6 +211,10 @@ public:
   void
   AbortUpdate();
 
+  /** \return the centerline extraction filter of the pipeline (one for the logic's lifetime; it runs only with a
+   * segmentation node). */
+  CenterlineExtractionFilterType *
+  GetCenterlineExtractionFilter() const;
   /** \return the depth filter of the pipeline (one for the logic's lifetime). */
   DepthFilterType *
   GetDepthFilter() const;
@@ -213,13 +251,15 @@ public:
    * \param parameters Relaxation, Anisotropy, Iterations, Backend and OpenCLDevice are used.
    * \param progress receives progress; may be empty.
    * \param warnings receives the backend notice, if any.
+   * \param backendUsed if not null, receives the backend that relaxed ("cpu" or "opencl").
    * \return the relaxed depth, with the input's metadata. Throws vr::InputError. */
   static DepthImageType::Pointer
   RelaxDepthImage(const DepthImageType *        depth,
                   const MaskImageType *         mask,
                   const ReformationParameters & parameters,
                   const ProgressCallback &      progress,
-                  std::vector<std::string> &    warnings);
+                  std::vector<std::string> &    warnings,
+                  std::string *                 backendUsed = nullptr);
 
   /** \param size a view's size in pixels.
    * \return the bytes the reformation of that view needs: depth, mask, labels, relaxation buffers, both CPRs,

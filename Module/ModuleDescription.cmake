@@ -17,3 +17,7 @@ set(VR_MODULE_ACKNOWLEDGEMENTS [=[Implements the method of Jan Kretschmer, Bernh
 # The relax-only module shares everything but its title and help.
 set(VR_RELAX_MODULE_TITLE "Bilateral Depth Relax")
 set(VR_RELAX_MODULE_HELP [=[The bilateral depth filter of the Vessel Reformation module on its own, for pipelines of your own: relaxes a depth map (for example the outputDepth of Vessel Reformation) with the iterated 4-neighbour bilateral filter of Kretschmer et al. (Eq. 1 and 2), keeping the pixels of an optional fixed mask unchanged. The output keeps the input's metadata, including the CPR view.]=])
+
+# The centerline extraction module: a segmentation in, centerlines out, for the reformation or any other tool.
+set(VR_EXTRACT_MODULE_TITLE "Extract Centerlines")
+set(VR_EXTRACT_MODULE_HELP [=[Extracts the centerline tree of the vessels in a segmentation, with the lumen radius at every point, and writes it in every format the Vessel Reformation module reads. The segmentation is a label map or binary mask (from TotalSegmentator, an nnU-Net model, thresholding or 3D Slicer's Segment Editor), a VMTK level set (inside where negative) or a probability map; labels can be chosen, and several masks combined. Each connected component gives a tree rooted at its widest end or at a given point, split at bifurcations, with spurious short branches pruned; any orientation and voxel spacing.]=])

@@ -215,7 +215,7 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   state->ForcedGPULayout = m_ForcedGPULayout;
   try
   {
-    state->Device = vr::GetOpenCLDevice(chosen);
+    state->Device = vr::GetOpenCLDevice(chosen.PlatformIndex, chosen.DeviceIndex);
     state->Context = cl::Context(state->Device);
     state->Queue = cl::CommandQueue(state->Context, state->Device);
     state->Shape = ChooseKernelShape(state->Device, m_ForcedVectorWidth, m_ForcedGPULayout);

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrOpenCLDevices.h"
+#include "vrText.h"
 
 #include "vrInputError.h"
 #include "vrOpenCLRuntime.h"
@@ -15,13 +16,6 @@ namespace vr
 {
 namespace
 {
-std::string
-Lowercase(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
 // Drivers pad some strings with trailing NULs or spaces.
 std::string
 Trimmed(std::string text)
@@ -196,11 +190,11 @@ ChooseOpenCLDevice(const std::vector<OpenCLDeviceInfo> & devices,
   }
   else
   {
-    const std::string wanted = Lowercase(request);
+    const std::string wanted = ToLower(request);
     for (const auto & candidate : devices)
     {
-      if (Lowercase(candidate.DeviceName).find(wanted) != std::string::npos ||
-          Lowercase(candidate.PlatformName).find(wanted) != std::string::npos)
+      if (ToLower(candidate.DeviceName).find(wanted) != std::string::npos ||
+          ToLower(candidate.PlatformName).find(wanted) != std::string::npos)
       {
         match = &candidate;
         break;

@@ -91,20 +91,20 @@ DescribeOpenCLError(const cl::Error & error)
 }
 
 cl::Device
-GetOpenCLDevice(const OpenCLDeviceInfo & device)
+GetOpenCLDevice(unsigned int platformIndex, unsigned int deviceIndex)
 {
   std::vector<cl::Platform> platforms;
   cl::Platform::get(&platforms);
-  if (device.PlatformIndex >= platforms.size())
+  if (platformIndex >= platforms.size())
   {
     throw cl::Error(CL_INVALID_PLATFORM, "clGetPlatformIDs");
   }
   std::vector<cl::Device> devices;
-  platforms[device.PlatformIndex].getDevices(CL_DEVICE_TYPE_ALL, &devices);
-  if (device.DeviceIndex >= devices.size())
+  platforms[platformIndex].getDevices(CL_DEVICE_TYPE_ALL, &devices);
+  if (deviceIndex >= devices.size())
   {
     throw cl::Error(CL_DEVICE_NOT_FOUND, "clGetDeviceIDs");
   }
-  return devices[device.DeviceIndex];
+  return devices[deviceIndex];
 }
 } // namespace vr

@@ -7,8 +7,6 @@
 // OpenCL call throws cl::Error naming the call.
 #include <CL/opencl.hpp>
 
-#include "vrOpenCLDevices.h"
-
 #include <string>
 
 namespace vr
@@ -21,10 +19,10 @@ OpenCLErrorName(cl_int status);
 std::string
 DescribeOpenCLError(const cl::Error & error);
 
-/** The cl::Device that \a device describes (found again by its platform and device index). Throws cl::Error when
- * the device has gone. */
+/** The device \a deviceIndex of platform \a platformIndex in clGetPlatformIDs' and clGetDeviceIDs' lists (as
+ * OpenCLDeviceInfo records them). Throws cl::Error when the device has gone. */
 cl::Device
-GetOpenCLDevice(const OpenCLDeviceInfo & device);
+GetOpenCLDevice(unsigned int platformIndex, unsigned int deviceIndex);
 } // namespace vr
 
 #endif

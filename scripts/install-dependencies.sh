@@ -17,6 +17,7 @@ packages=(
   libvtk9-dev                                     # VTK 9.1: polydata IO, FreeType text in figures
   pocl-opencl-icd ocl-icd-opencl-dev opencl-clhpp-headers clinfo   # OpenCL 3.0 on the CPU through PoCL
   libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  libxml2-utils                                   # xmllint: the modules' XML against CTK's schema (a test)
 )
 
 export DEBIAN_FRONTEND=noninteractive

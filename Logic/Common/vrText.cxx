@@ -66,6 +66,18 @@ Trim(const std::string & text)
   return first < last ? std::string(first, last) : std::string();
 }
 
+bool
+EndsWith(const std::string & text, const std::string & suffix)
+{
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+bool
+HasExtension(const std::string & path, const std::string & extension)
+{
+  return EndsWith(ToLower(path), extension);
+}
+
 std::vector<std::string>
 SplitAndTrim(const std::string & text, char separator)
 {

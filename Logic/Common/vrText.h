@@ -41,6 +41,18 @@ ToUpper(std::string text);
 std::string
 Trim(const std::string & text);
 
+/** \param text any text.
+ * \param suffix the ending looked for.
+ * \return whether \a text ends with \a suffix, exactly. */
+bool
+EndsWith(const std::string & text, const std::string & suffix);
+
+/** \param path a file path.
+ * \param extension an extension with its dot, in lower case (".vtp", ".mrk.json").
+ * \return whether \a path ends with \a extension, ignoring case. */
+bool
+HasExtension(const std::string & path, const std::string & extension);
+
 /** \param text a list such as "1, 2,3".
  * \param separator the character between items.
  * \return the items, each trimmed; an empty text gives none, a trailing separator a last empty item. */

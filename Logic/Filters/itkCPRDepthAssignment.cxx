@@ -243,18 +243,6 @@ AssignNearest(const CPRCenterlinePixels & pixels,
 }
 } // namespace
 
-CPRDepthAssignment
-AssignDepth(const CPRCenterlinePixels & pixels,
-            CPRDepthMode                mode,
-            const Vector<double, 2> &   spacing,
-            bool                        fixLumen,
-            MultiThreaderBase *         threader)
-{
-  CPRDepthAssignment result;
-  AssignDepth(pixels, mode, spacing, fixLumen, threader, result);
-  return result;
-}
-
 void
 AssignDepth(const CPRCenterlinePixels & pixels,
             CPRDepthMode                mode,

@@ -24,14 +24,8 @@ struct CPRDepthAssignment
  * then (scanline) the left or (rows) the upper candidate. Centerline pixels are fixed; with \a fixLumen, so are
  * pixels whose distance in mm to their owner's centerline pixel (along the row in Scanline mode, in 2D in
  * Nearest mode) is at most that pixel's lumen radius. \a spacing is (sx, sy) in mm. Rows are processed in
- * parallel by \a threader. Throws when no centerline pixel lies in the image. */
-CPRDepthAssignment
-AssignDepth(const CPRCenterlinePixels & pixels,
-            CPRDepthMode                mode,
-            const Vector<double, 2> &   spacing,
-            bool                        fixLumen,
-            MultiThreaderBase *         threader);
-/** As above, into \a result, reusing its memory (a view that rotates needs no new allocation). */
+ * parallel by \a threader. Throws when no centerline pixel lies in the image. The result goes into \a result,
+ * reusing its memory (a view that rotates needs no new allocation). */
 void
 AssignDepth(const CPRCenterlinePixels & pixels,
             CPRDepthMode                mode,

@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 
 namespace itk
 {
@@ -51,8 +50,8 @@ template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetDefaultValue(OutputPixelType value)
 {
-  // Compared bit for bit so that NaN (rejected later) still counts as a change.
-  if (!m_UseVolumeMinimumAsDefault && std::memcmp(&m_DefaultValue, &value, sizeof(value)) == 0)
+  const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
+  if (!m_UseVolumeMinimumAsDefault && same(static_cast<double>(m_DefaultValue), static_cast<double>(value)))
   {
     return;
   }

@@ -2,6 +2,7 @@
 #include "vrAtomicOutput.h"
 
 #include "vrInputError.h"
+#include "vrURINames.h"
 
 #include <atomic>
 #include <cerrno>
@@ -28,6 +29,12 @@ AtomicOutput::AtomicOutput(std::string finalPath)
   : m_FinalPath(std::move(finalPath))
 {
   namespace fs = std::filesystem;
+  if (IsURIName(m_FinalPath))
+  {
+    m_TemporaryPath = m_FinalPath;
+    m_Direct = true;
+    return;
+  }
   const fs::path path(m_FinalPath);
   if (path.filename().empty())
   {
@@ -49,7 +56,7 @@ AtomicOutput::AtomicOutput(std::string finalPath)
 
 AtomicOutput::~AtomicOutput()
 {
-  if (!m_Committed)
+  if (!m_Committed && !m_Direct)
   {
     std::remove(m_TemporaryPath.c_str());
   }
@@ -58,6 +65,11 @@ AtomicOutput::~AtomicOutput()
 void
 AtomicOutput::Commit()
 {
+  if (m_Direct)
+  {
+    m_Committed = true;
+    return;
+  }
   if (std::rename(m_TemporaryPath.c_str(), m_FinalPath.c_str()) != 0)
   {
     const std::string reason = std::strerror(errno);

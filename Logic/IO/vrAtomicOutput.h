@@ -11,7 +11,9 @@ namespace vr
  * so an existing result is never half-overwritten (DESIGN section 5).
  *
  * The temporary name keeps the final extension (".name.tmp-<pid>-<n>.nrrd") so ITK and VTK writers still
- * pick the format from it. Without Commit() the destructor removes the temporary file.
+ * pick the format from it. Without Commit() the destructor removes the temporary file. A URI name (vr::IsURIName,
+ * e.g. 3D Slicer's in-memory "slicer:0x...#node") is no file: it is written directly, for the ImageIO of the host
+ * process that owns the scheme.
  * \ingroup VesselReformation
  */
 class AtomicOutput
@@ -43,6 +45,7 @@ private:
   std::string m_FinalPath;
   std::string m_TemporaryPath;
   bool        m_Committed{ false };
+  bool        m_Direct{ false };
 };
 } // namespace vr
 

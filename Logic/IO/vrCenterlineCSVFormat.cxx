@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCenterlineFormats.h"
+#include "vrText.h"
 #include "vrInputError.h"
 
 #include <algorithm>
@@ -17,16 +18,11 @@ namespace vr::detail
 {
 namespace
 {
+/** A field without the white space and the double quotes around it. */
 std::string
-Trim(const std::string & text)
+Unquoted(const std::string & text)
 {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-  {
-    return std::string();
-  }
-  const auto  last = text.find_last_not_of(" \t\r\n");
-  std::string trimmed = text.substr(first, last - first + 1);
+  std::string trimmed = Trim(text);
   if (trimmed.size() >= 2 && trimmed.front() == '"' && trimmed.back() == '"')
   {
     trimmed = trimmed.substr(1, trimmed.size() - 2);
@@ -42,7 +38,7 @@ SplitFields(const std::string & line)
   std::string              field;
   while (std::getline(stream, field, ','))
   {
-    fields.push_back(Trim(field));
+    fields.push_back(Unquoted(field));
   }
   if (!line.empty() && line.back() == ',')
   {
@@ -74,9 +70,8 @@ ParseHeader(const std::string & line, const std::string & where)
   bool hasRAS = false;
   for (std::size_t c = 0; c < names.size(); ++c)
   {
-    std::string name = names[c];
-    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char ch) { return std::tolower(ch); });
-    int * slot = nullptr;
+    const std::string name = ToLower(names[c]);
+    int *             slot = nullptr;
     if (name == "branch")
     {
       slot = &columns.Branch;

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCenterlineIO.h"
+#include "vrText.h"
 
 #include "vrAtomicOutput.h"
 #include "vrCenterlineFormats.h"
@@ -24,17 +25,10 @@ enum class CenterlineFormat
   CSV
 };
 
-bool
-EndsWith(const std::string & text, const std::string & suffix)
-{
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
-
 CenterlineFormat
 FormatOf(const std::string & path, const std::string & role)
 {
-  std::string lower = std::filesystem::path(path).filename().string();
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string lower = ToLower(std::filesystem::path(path).filename().string());
   if (EndsWith(lower, ".vtp") || EndsWith(lower, ".vtk"))
   {
     return CenterlineFormat::VTK;
@@ -73,6 +67,12 @@ FlipRASLPS(const itk::CenterlineTree & tree)
   return flipped;
 }
 } // namespace detail
+
+void
+CheckCenterlineFileName(const std::string & path, const std::string & role)
+{
+  FormatOf(path, role);
+}
 
 itk::CenterlineTree
 ReadCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadReport * report)

@@ -18,8 +18,14 @@ ReadCenterlines(const std::string &    path,
                 CoordinateSpace        space = CoordinateSpace::Auto,
                 CenterlineReadReport * report = nullptr);
 
+/** Checks, before any work, that \a path names a centerline format WriteCenterlines knows; throws vr::InputError
+ * naming \a role ("<outputCenterlines>") and the formats otherwise. */
+void
+CheckCenterlineFileName(const std::string & path, const std::string & role);
+
 /** Writes \a tree (LPS) to .vtp, .vtk, .mrk.json, .tre or .csv, in \a space (Auto: LPS for .tre, RAS for VTK
- * and markups, LPS for CSV), atomically. Throws vr::InputError on failure. */
+ * and markups, LPS for CSV), atomically. VTK files carry the radius twice, as MaximumInscribedSphereRadius (VMTK)
+ * and Radius (3D Slicer), and the ids in the cell array BranchIds. Throws vr::InputError on failure. */
 void
 WriteCenterlines(const itk::CenterlineTree & tree,
                  const std::string &         path,

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCenterlineFormats.h"
+#include "vrText.h"
 #include "vrInputError.h"
 
 #include <nlohmann/json.hpp>
@@ -27,13 +28,6 @@ constexpr int ArcLengthSteps = 64;
 
 const char * const SchemaURL = "https://raw.githubusercontent.com/slicer/slicer/master/Modules/Loadable/Markups/"
                                "Resources/Schema/markups-schema-v1.0.3.json#";
-
-std::string
-Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
 
 /** A short rendering of a JSON value for messages. */
 std::string
@@ -130,7 +124,7 @@ MarkupSpace(const Json & markup, const std::string & where)
     return CoordinateSpace::LPS; // the markups schema's default
   }
   const Json &      value = markup["coordinateSystem"];
-  const std::string text = value.is_string() ? Lower(value.get<std::string>()) : std::string();
+  const std::string text = value.is_string() ? ToLower(value.get<std::string>()) : std::string();
   if (text == "lps")
   {
     return CoordinateSpace::LPS;
@@ -179,7 +173,7 @@ RadiusValues(const Json & markup, const std::string & where, std::size_t control
     {
       continue;
     }
-    const std::string name = Lower(measurement["name"].get<std::string>());
+    const std::string name = ToLower(measurement["name"].get<std::string>());
     if ((name != "radius" && name != "maximuminscribedsphereradius") || !measurement.contains("controlPointValues"))
     {
       continue;

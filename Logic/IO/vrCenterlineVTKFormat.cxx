@@ -1,9 +1,12 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCenterlineFormats.h"
+#include "vrText.h"
 #include "vrCenterlinePolyData.h"
 #include "vrInputError.h"
 #include "vrVTKErrorCapture.h"
 
+#include <vtkDoubleArray.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
@@ -17,14 +20,6 @@ namespace vr::detail
 {
 namespace
 {
-bool
-IsXMLPath(const std::string & path)
-{
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  return lower.size() >= 4 && lower.compare(lower.size() - 4, 4, ".vtp") == 0;
-}
-
 /** 3D Slicer writes "SPACE=RAS" or "SPACE=LPS" into the legacy header line (vtkMRMLModelStorageNode). */
 CoordinateSpace
 SpaceFromLegacyHeader(const char * header)
@@ -48,8 +43,8 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
   vtkSmartPointer<vtkPolyData> polyData;
   CoordinateSpace              headerSpace = CoordinateSpace::Auto;
   {
-    VTKErrorCapture capture;
-    if (IsXMLPath(path))
+    detail::VTKErrorCapture capture;
+    if (HasExtension(path, ".vtp"))
     {
       report.Format = "VTK XML PolyData (.vtp)";
       auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
@@ -122,9 +117,18 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
 {
   const CoordinateSpace        used = space == CoordinateSpace::LPS ? CoordinateSpace::LPS : CoordinateSpace::RAS;
   vtkSmartPointer<vtkPolyData> polyData = PolyDataFromCenterlineTree(tree, used);
-  VTKErrorCapture              capture;
-  int                          written = 0;
-  if (IsXMLPath(finalPath))
+  // The radius under VMTK's name as well as 3D Slicer's: vmtk scripts (vmtkcenterlineresampling,
+  // vmtkbranchextractor, ...) look for MaximumInscribedSphereRadius, 3D Slicer for Radius.
+  if (vtkDataArray * radius = polyData->GetPointData()->GetArray(SlicerRadiusArrayName))
+  {
+    auto vmtkRadius = vtkSmartPointer<vtkDoubleArray>::New();
+    vmtkRadius->DeepCopy(radius);
+    vmtkRadius->SetName(VMTKRadiusArrayName);
+    polyData->GetPointData()->AddArray(vmtkRadius);
+  }
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
+  if (HasExtension(finalPath, ".vtp"))
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
     capture.Observe(writer);

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrITKMessages.h"
+#include "vrText.h"
 
 #include <mutex>
 #include <sstream>
@@ -9,14 +10,6 @@ namespace vr::detail
 {
 namespace
 {
-std::string
-Trim(const std::string & text)
-{
-  const auto first = text.find_first_not_of(" \t\r\n");
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
-}
-
 void
 ReplaceAll(std::string & text, const std::string & from, const std::string & to)
 {

@@ -4,6 +4,7 @@
 #include "vrAtomicOutput.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
 #include "itkImageFileReader.h"
@@ -57,11 +58,12 @@ Open2DImage(const std::string & path, const std::string & role)
   namespace fs = std::filesystem;
   const std::string where = role + " " + path;
   std::error_code   error;
-  if (!fs::exists(path, error))
+  const bool        uri = IsURIName(path); // a name for an ImageIO of the host process goes to ITK as it is
+  if (!uri && !fs::exists(path, error))
   {
     throw InputError(where + ": no such file");
   }
-  if (fs::is_directory(path, error))
+  if (!uri && fs::is_directory(path, error))
   {
     throw InputError(where + ": is a folder, not an image file");
   }

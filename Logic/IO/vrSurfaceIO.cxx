@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrSurfaceIO.h"
+#include "vrText.h"
 
 #include "vrAtomicOutput.h"
 #include "vrInputError.h"
@@ -7,27 +8,37 @@
 
 #include <vtkFieldData.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 
 namespace vr
 {
 namespace
 {
-bool
-HasExtension(const std::string & path, const std::string & extension)
+/** The space a 3D Slicer marker names: "LPS" or "RAS" anywhere in \a text (Slicer matches substrings too). */
+CoordinateSpace
+SpaceNamedIn(const std::string & text)
 {
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return std::tolower(c); });
-  return lower.size() >= extension.size() &&
-         lower.compare(lower.size() - extension.size(), extension.size(), extension) == 0;
+  if (text.find("LPS") != std::string::npos)
+  {
+    return CoordinateSpace::LPS;
+  }
+  if (text.find("RAS") != std::string::npos)
+  {
+    return CoordinateSpace::RAS;
+  }
+  return CoordinateSpace::Auto;
 }
 
+/** Writes \a surface, whose points are in \a fileSpace already, marking \a fileSpace (nothing for Auto). */
 void
 WriteSurfaceIn(vtkPolyData * surface, const std::string & path, CoordinateSpace pointSpace)
 {
@@ -55,9 +66,9 @@ WriteSurfaceIn(vtkPolyData * surface, const std::string & path, CoordinateSpace 
     marked->SetFieldData(fieldData);
   }
 
-  AtomicOutput    output(path);
-  VTKErrorCapture capture;
-  int             written = 0;
+  AtomicOutput            output(path);
+  detail::VTKErrorCapture capture;
+  int                     written = 0;
   if (xml)
   {
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
@@ -97,8 +108,76 @@ WriteSurface(vtkPolyData * surface, const std::string & path)
 }
 
 void
-WriteSurface(vtkPolyData * surface, const std::string & path, CoordinateSpace pointSpace)
+WriteSurface(vtkPolyData * surface, const std::string & path, CoordinateSpace pointSpace, CoordinateSpace fileSpace)
 {
-  WriteSurfaceIn(surface, path, pointSpace);
+  if (fileSpace == CoordinateSpace::Auto)
+  {
+    fileSpace = pointSpace;
+  }
+  WriteSurfaceIn(ConvertPolyDataSpace(surface, pointSpace, fileSpace), path, fileSpace);
+}
+
+vtkSmartPointer<vtkPolyData>
+ReadSurface(const std::string & path, CoordinateSpace pointSpace, CoordinateSpace * fileSpace)
+{
+  const bool xml = HasExtension(path, ".vtp");
+  if (!xml && !HasExtension(path, ".vtk"))
+  {
+    throw InputError("surface " + path + ": unknown extension; use .vtp (VTK XML) or .vtk (legacy VTK)");
+  }
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+  {
+    throw InputError("surface " + path + ": no such file");
+  }
+  vtkSmartPointer<vtkPolyData> surface;
+  CoordinateSpace              marked = CoordinateSpace::Auto;
+  detail::VTKErrorCapture      capture;
+  if (xml)
+  {
+    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    capture.Observe(reader);
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    surface = reader->GetOutput();
+    auto * space = surface ? vtkStringArray::SafeDownCast(surface->GetFieldData()->GetAbstractArray("SPACE")) : nullptr;
+    if (space != nullptr && space->GetNumberOfValues() > 0)
+    {
+      marked = SpaceNamedIn(space->GetValue(0));
+      surface->GetFieldData()->RemoveArray("SPACE");
+    }
+  }
+  else
+  {
+    auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
+    capture.Observe(reader);
+    reader->SetFileName(path.c_str());
+    if (reader->IsFilePolyData() == 0)
+    {
+      throw InputError("surface " + path + ": not a legacy VTK file of DATASET POLYDATA");
+    }
+    reader->Update();
+    surface = reader->GetOutput();
+    const char *      header = reader->GetHeader();
+    const std::string text = header ? header : "";
+    marked = text.find("SPACE=LPS") != std::string::npos   ? CoordinateSpace::LPS
+             : text.find("SPACE=RAS") != std::string::npos ? CoordinateSpace::RAS
+                                                           : CoordinateSpace::Auto;
+  }
+  if (capture.HasErrors())
+  {
+    throw InputError("surface " + path + ": not readable (truncated or corrupt?): " + capture.FirstError());
+  }
+  if (surface == nullptr || surface->GetNumberOfPoints() == 0)
+  {
+    throw InputError("surface " + path + ": holds no point");
+  }
+  // 3D Slicer reads a model without a marker as LPS (vtkMRMLModelStorageNode's default).
+  const CoordinateSpace stored = marked == CoordinateSpace::Auto ? CoordinateSpace::LPS : marked;
+  if (fileSpace != nullptr)
+  {
+    *fileSpace = stored;
+  }
+  return ConvertPolyDataSpace(surface, stored, pointSpace == CoordinateSpace::Auto ? stored : pointSpace);
 }
 } // namespace vr

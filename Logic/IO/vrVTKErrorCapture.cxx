@@ -11,7 +11,7 @@
 
 #include <mutex>
 
-namespace vr
+namespace vr::detail
 {
 namespace
 {
@@ -173,4 +173,4 @@ VTKErrorCapture::Errors() const
 {
   return m_Implementation->m_Recorder->m_Errors;
 }
-} // namespace vr
+} // namespace vr::detail

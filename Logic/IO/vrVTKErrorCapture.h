@@ -8,7 +8,7 @@
 
 class vtkObject;
 
-namespace vr
+namespace vr::detail
 {
 /** \class VTKErrorCapture
  * \brief Collects the errors VTK readers and writers report, instead of letting VTK print them.
@@ -46,6 +46,6 @@ public:
 private:
   std::unique_ptr<Implementation> m_Implementation;
 };
-} // namespace vr
+} // namespace vr::detail
 
 #endif

@@ -4,6 +4,7 @@
 #include "vrAtomicOutput.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
 // (ITK_IO_FACTORY_REGISTER_MANAGER): NRRD, NIfTI, MetaImage, PNG and GDCM are known to this translation unit.
@@ -130,6 +131,11 @@ VolumeImageType::Pointer
 ReadVolume(const std::string & path)
 {
   namespace fs = std::filesystem;
+  if (IsURIName(path))
+  {
+    // No file: a name for an ImageIO of the host process (3D Slicer's "slicer:0x...#node"), handed to ITK as it is.
+    return ReadVolumeFile(path);
+  }
   std::error_code error;
   if (!fs::exists(path, error))
   {

@@ -4,6 +4,12 @@
 
 #include "itkPoint.h"
 
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+
 namespace vr
 {
 /** The coordinate systems a file or a platform node may use. Auto: take it from the file, else RAS. */
@@ -30,6 +36,17 @@ LPSToRAS(const itk::Point<double, 3> & point)
 {
   return RASToLPS(point);
 }
+
+/** A copy of \a polyData whose points (and its point normals and vectors, cell normals, as 3D Slicer's model storage
+ * turns them) are taken from \a from to \a to (x and y negated when the two differ); everything else is shared with
+ * \a polyData, which is left as it was. Auto on either side, or
+ * the same space on both, converts nothing.
+ * \param polyData a surface or polylines.
+ * \param from the space its points are in.
+ * \param to the space wanted.
+ * \return the converted copy (null for a null \a polyData). */
+vtkSmartPointer<vtkPolyData>
+ConvertPolyDataSpace(vtkPolyData * polyData, CoordinateSpace from, CoordinateSpace to);
 
 /** "RAS", "LPS" or "auto". */
 const char *

@@ -307,8 +307,12 @@ ConvertVolumeNodeToItkImage(VolumeNode * node)
   return image;
 }
 
+namespace
+{
+/** A 3D ITK image in LPS as a volume node of voxels of \a vtkType (the image's pixel type). */
+template<typename TImage>
 vtkSmartPointer<VolumeNode>
-ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & name)
+Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name)
 {
   if (image == nullptr)
   {
@@ -323,10 +327,10 @@ ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & n
     extent[2 * axis + 1] = static_cast<int>(region.GetIndex(axis) + region.GetSize(axis)) - 1;
   }
   data->SetExtent(extent);
-  data->AllocateScalars(VTK_FLOAT, 1);
+  data->AllocateScalars(vtkType, 1);
   std::copy(image->GetBufferPointer(),
             image->GetBufferPointer() + region.GetNumberOfPixels(),
-            static_cast<float *>(data->GetScalarPointer()));
+            static_cast<typename TImage::PixelType *>(data->GetScalarPointer()));
 
   const auto & direction = image->GetDirection();
   const auto & spacing = image->GetSpacing();
@@ -351,6 +355,19 @@ ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & n
   node->SetImageData(data);
   node->SetIJKToRASMatrix(matrix);
   return node;
+}
+} // namespace
+
+vtkSmartPointer<VolumeNode>
+ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & name)
+{
+  return Convert3DImageToNode(image, VTK_FLOAT, name);
+}
+
+vtkSmartPointer<VolumeNode>
+ConvertItkImageToVolumeNode(const LabelMapVolumeType * image, const std::string & name)
+{
+  return Convert3DImageToNode(image, VTK_UNSIGNED_CHAR, name);
 }
 
 vtkSmartPointer<VolumeNode>

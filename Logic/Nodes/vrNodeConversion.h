@@ -30,6 +30,10 @@ ConvertVolumeNodeToItkImage(VolumeNode * node);
  * \return a new node with a copy of the voxels (float) and the IJK->RAS matrix. */
 vtkSmartPointer<VolumeNode>
 ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & name);
+/** The same for a label map or vessel mask: a node of unsigned char voxels, as 3D Slicer's label map volume node
+ * holds them. */
+vtkSmartPointer<VolumeNode>
+ConvertItkImageToVolumeNode(const LabelMapVolumeType * image, const std::string & name);
 
 /** A 2D output of the reformation as a one-slice volume node placed on the view plane: voxel (i, j, 0) lies at
  * B(i, j) in RAS, the third axis along the view direction. The view (and the rest of the image's metadata

@@ -9,6 +9,8 @@
 #include "vrStagedOutputs.h"
 #include "vrVesselReformationLogic.h"
 
+#include <chrono>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -56,6 +58,8 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
   }
 
   std::vector<std::string> warnings;
+  std::string              backend = "cpu";
+  const auto               start = std::chrono::steady_clock::now();
   const auto               relaxed = vr::VesselReformationLogic::RelaxDepthImage(
     depth,
     mask,
@@ -68,13 +72,22 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
       }
       progress.Update(fraction, stage);
     },
-    warnings);
+    warnings,
+    &backend);
   for (const auto & warning : warnings)
   {
     progress.Print(std::cerr, "warning: " + warning);
   }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   staged.Write(output, [&relaxed](const std::string & path) { vr::WriteImage2D(relaxed.GetPointer(), path); });
   staged.CommitAll();
+
+  const auto &       size = relaxed->GetLargestPossibleRegion().GetSize();
+  std::ostringstream milliseconds;
+  milliseconds << std::fixed << std::setprecision(3) << 1e3 * seconds;
+  progress.SetReturnValue("backendUsed", backend);
+  progress.SetReturnValue("imageSize", std::to_string(size[0]) + "," + std::to_string(size[1]));
+  progress.SetReturnValue("relaxTime", milliseconds.str());
 }
 } // namespace
 

@@ -17,13 +17,6 @@ namespace vr
 namespace
 {
 std::string
-Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::string
 Ordinal(int index)
 {
   static const char * names[] = { "first", "second", "third", "fourth", "fifth" };
@@ -93,11 +86,29 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
                        ")");
     }
   }
+  else if (tag == "point")
+  {
+    // Three coordinates "x,y,z", as 3D Slicer passes a point (in the XML's coordinateSystem).
+    std::istringstream stream(value);
+    std::string        part;
+    int                count = 0;
+    bool               valid = !value.empty() && value.back() != ',';
+    while (valid && std::getline(stream, part, ','))
+    {
+      double number = 0.0;
+      valid = ParseWholeDouble(part, number);
+      ++count;
+    }
+    if (!valid || count != 3)
+    {
+      throw InputError(what + ": expected a point as three comma-separated numbers x,y,z (" + parameter.Label + ")");
+    }
+  }
   else if (tag == "string-enumeration")
   {
     for (const auto & element : parameter.Elements)
     {
-      if (Lower(element) == Lower(value))
+      if (ToLower(element) == ToLower(value))
       {
         return element;
       }
@@ -111,7 +122,7 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
   }
   else if (tag == "boolean")
   {
-    const std::string key = Lower(value);
+    const std::string key = ToLower(value);
     if (key != "true" && key != "false")
     {
       throw InputError(what + ": use true or false, or the bare flag for true");
@@ -123,6 +134,24 @@ CheckedValue(const CLIParameter & parameter, const std::string & value)
     throw InputError(parameter.Spelling() + ": the file name is empty (" + parameter.Label + ")");
   }
   return value;
+}
+/** Whether \a value is a valid value of one of the values the module returns: what a host passes after the positional
+ * arguments when it reads return parameters as index-1000 parameters. */
+bool
+IsValueOfAReturnParameter(const CLIModuleDescription & description, const std::string & value)
+{
+  for (const CLIParameter * parameter : description.ReturnValues())
+  {
+    try
+    {
+      CheckedValue(*parameter, value);
+      return true;
+    }
+    catch (const InputError &)
+    {
+    }
+  }
+  return false;
 }
 } // namespace
 
@@ -190,6 +219,15 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
       arguments.ProcessInformation = reinterpret_cast<void *>(static_cast<std::uintptr_t>(number));
       continue;
     }
+    if (flag == "returnparameterfile")
+    {
+      arguments.ReturnParameterFile = takeValue("--returnparameterfile");
+      if (arguments.ReturnParameterFile.empty())
+      {
+        throw InputError("--returnparameterfile: the file name is empty");
+      }
+      continue;
+    }
     const CLIParameter * parameter = description.FindFlag(flag);
     if (parameter == nullptr)
     {
@@ -206,7 +244,31 @@ CLIArguments::Parse(const CLIModuleDescription & description, int argc, char * a
   {
     return arguments;
   }
-  const auto expected = description.Positionals();
+  // 3D Slicer appends the value of a returned parameter as one more argument; it is not an input.
+  const auto declared = description.Positionals();
+  if (positionals.size() == declared.size() + 1 && IsValueOfAReturnParameter(description, positionals.back()))
+  {
+    positionals.pop_back();
+  }
+  // A positional parameter whose XML gives a <default> may be left out: with fewer arguments than positional
+  // parameters, such ones are skipped, first ones first, and the arguments fill the others in order.
+  std::vector<const CLIParameter *> expected = declared;
+  const std::size_t                 optional = static_cast<std::size_t>(
+    std::count_if(declared.begin(), declared.end(), [](const CLIParameter * p) { return p->HasDefault; }));
+  if (positionals.size() < declared.size() && declared.size() - positionals.size() <= optional)
+  {
+    std::size_t skip = declared.size() - positionals.size();
+    expected.clear();
+    for (const CLIParameter * parameter : declared)
+    {
+      if (skip > 0 && parameter->HasDefault)
+      {
+        --skip;
+        continue;
+      }
+      expected.push_back(parameter);
+    }
+  }
   if (positionals.size() > expected.size())
   {
     throw InputError("unexpected argument \"" + positionals[expected.size()] + "\": this module takes " +
@@ -265,7 +327,7 @@ CLIArguments::Usage(const CLIModuleDescription & description, const std::string 
   usage << description.Title << "\n\nUsage: " << program << " [flags]";
   for (const CLIParameter * positional : description.Positionals())
   {
-    usage << " <" << positional->Name << ">";
+    usage << (positional->HasDefault ? " [<" : " <") << positional->Name << (positional->HasDefault ? ">]" : ">");
   }
   usage << "\n\nArguments:\n";
   for (const CLIParameter * positional : description.Positionals())
@@ -295,10 +357,22 @@ CLIArguments::Usage(const CLIModuleDescription & description, const std::string 
     }
     usage << "  " << parameter.Label << ". " << parameter.Description << "\n";
   }
+  const auto returned = description.ReturnValues();
+  if (!returned.empty())
+  {
+    usage << "\nReturned values (to --returnparameterfile as name = value lines, else as <filter-result> lines when "
+             "stdout is not a terminal):\n";
+    for (const CLIParameter * parameter : returned)
+    {
+      usage << "  " << parameter->Name << " <" << parameter->Tag << ">  " << parameter->Label << ". "
+            << parameter->Description << "\n";
+    }
+  }
   usage << "\nAlso:\n"
         << "  --xml  print the Slicer Execution Model description and exit\n"
         << "  --help  print this text and exit\n"
-        << "  --processinformationaddress <address>  used by 3D Slicer when it runs the module in-process\n";
+        << "  --processinformationaddress <address>  used by 3D Slicer when it runs the module in-process\n"
+        << "  --returnparameterfile <file>  write the returned values there, one name = value line each (3D Slicer)\n";
   return usage.str();
 }
 } // namespace vr

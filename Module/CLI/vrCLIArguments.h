@@ -10,9 +10,10 @@
 namespace vr
 {
 /** The flags every module accepts besides those of its XML, as 3D Slicer's generated modules do: --xml (print
- * the description), --help (print the usage) and --processinformationaddress (Slicer hands a running shared
- * library module its progress structure). */
-constexpr const char * ReservedFlags[] = { "xml", "help", "processinformationaddress" };
+ * the description), --help (print the usage), --processinformationaddress (Slicer hands a running shared
+ * library module its progress structure) and --returnparameterfile (where Slicer wants the values the module
+ * returns, one "name = value" line each). */
+constexpr const char * ReservedFlags[] = { "xml", "help", "processinformationaddress", "returnparameterfile" };
 
 /** \class CLIArguments
  * \brief A parsed command line of a module: the values given for its parameters, checked against the XML.
@@ -24,9 +25,16 @@ public:
   /** Parses argv[1..] against \a description.
    *
    * Flags are "--flag value" or "--flag=value"; a boolean parameter is a bare flag (true when present, as 3D Slicer
-   * passes it). Positional parameters fill the indices in order. Values are checked by type: whole numbers for
-   * integer, finite numbers for float and double, comma lists of numbers for the vectors, one of the elements
-   * (any case) for string-enumeration; numbers must lie within the XML's constraints.
+   * passes it). Positional parameters fill the indices in order; one whose XML gives a <default> may be left out
+   * (with fewer arguments than indices, such ones are skipped, first ones first), as when another flag stands in
+   * for it. Values are checked by type: whole numbers for integer, finite numbers for float and double, comma lists of
+   * numbers for the vectors, three numbers for a point, one of the elements (any case) for string-enumeration;
+   * numbers must lie within the XML's constraints.
+   *
+   * A module that returns values (CLIModuleDescription::ReturnValues) accepts one argument after its positional ones
+   * when it is a valid value of one of them, and ignores it: a host that reads the CTK flavour of the description
+   * (index 1000) passes the current value of a return parameter there, as CTK's local-process backend and 3D Slicer
+   * both do (each keeps one value per index).
    *
    * \param description the module's description (kept by reference).
    * \param argc, argv the command line; argv[0] is the program.
@@ -39,6 +47,8 @@ public:
   bool HelpRequested{ false };
   /** The address 3D Slicer gave with --processinformationaddress, or null. */
   void * ProcessInformation{ nullptr };
+  /** The file given with --returnparameterfile, or empty. */
+  std::string ReturnParameterFile;
 
   /** \param name a parameter's name in the XML.
    * \return whether the command line gave it. Throws std::logic_error when the XML has no such parameter. */
@@ -63,7 +73,8 @@ public:
 
   /** \param description the module's description.
    * \param program the module's name.
-   * \return the usage text: every flag with its type, default and description, then the reserved flags. */
+   * \return the usage text: every flag with its type, default and description, the values the module returns, then
+   * the reserved flags. */
   static std::string
   Usage(const CLIModuleDescription & description, const std::string & program);
 

@@ -1,5 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCLIModuleDescription.h"
+#include "vrText.h"
 
 #include <vtkNew.h>
 #include <vtkXMLDataElement.h>
@@ -22,13 +23,7 @@ Trimmed(const char * text)
   {
     return std::string();
   }
-  const std::string value(text);
-  const auto        first = value.find_first_not_of(" \t\r\n");
-  if (first == std::string::npos)
-  {
-    return std::string();
-  }
-  return value.substr(first, value.find_last_not_of(" \t\r\n") - first + 1);
+  return Trim(text);
 }
 
 std::string
@@ -88,9 +83,10 @@ ReadParameter(vtkXMLDataElement * element)
       parameter.Maximum = std::strtod(ChildText(child, "maximum").c_str(), nullptr);
     }
   }
-  if (parameter.Name.empty() || (parameter.LongFlag.empty() && parameter.Index < 0))
+  if (parameter.Name.empty() || (parameter.LongFlag.empty() && parameter.Index < 0 && !parameter.IsReturnValue()))
   {
-    throw std::logic_error("module XML: a <" + parameter.Tag + "> parameter needs a name and a longflag or index");
+    throw std::logic_error("module XML: a <" + parameter.Tag +
+                           "> parameter needs a name and a longflag or index, unless it is an output it returns");
   }
   return parameter;
 }
@@ -168,7 +164,7 @@ CLIModuleDescription::Positionals() const
   std::vector<const CLIParameter *> positionals;
   for (const auto & parameter : Parameters)
   {
-    if (parameter.Index >= 0)
+    if (parameter.Index >= 0 && !parameter.IsReturnValue())
     {
       positionals.push_back(&parameter);
     }
@@ -177,5 +173,19 @@ CLIModuleDescription::Positionals() const
             positionals.end(),
             [](const CLIParameter * a, const CLIParameter * b) { return a->Index < b->Index; });
   return positionals;
+}
+
+std::vector<const CLIParameter *>
+CLIModuleDescription::ReturnValues() const
+{
+  std::vector<const CLIParameter *> values;
+  for (const auto & parameter : Parameters)
+  {
+    if (parameter.IsReturnValue())
+    {
+      values.push_back(&parameter);
+    }
+  }
+  return values;
 }
 } // namespace vr

@@ -17,7 +17,7 @@ struct CLIParameter
   std::string Name;
   /** Without the leading "--"; empty for a positional parameter. */
   std::string LongFlag;
-  /** Position among the positional parameters; -1 for a flag. */
+  /** Position among the positional parameters; -1 for a flag; ReturnValueIndex for a value the module returns. */
   int         Index{ -1 };
   std::string Label;
   std::string Description;
@@ -32,11 +32,24 @@ struct CLIParameter
   double                   Minimum{ 0.0 };
   double                   Maximum{ 0.0 };
 
+  /** The index CTK's schema reserves for output parameters that the module returns rather than takes
+   * ("simple return parameters"). */
+  static constexpr int ReturnValueIndex = 1000;
+
   /** \return "--flag" for a flag, "<name>" for a positional parameter: how messages name it. */
   std::string
   Spelling() const
   {
     return LongFlag.empty() ? "<" + Name + ">" : "--" + LongFlag;
+  }
+
+  /** \return whether the module returns this parameter's value instead of taking it: an output parameter that has
+   * index 1000 (CTK's rule) or neither flag nor index (3D Slicer's rule, ModuleParameter::IsReturnParameter). The two
+   * flavours of a module's description declare the same values these two ways (Module/CLI/CMakeLists.txt). */
+  bool
+  IsReturnValue() const
+  {
+    return Channel == "output" && (Index == ReturnValueIndex || (LongFlag.empty() && Index < 0));
   }
 };
 
@@ -54,7 +67,8 @@ struct CLIModuleDescription
   std::vector<CLIParameter> Parameters;
 
   /** Parses \a xml (with VTK's expat-based parser). Throws std::logic_error when the XML is malformed or a
-   * parameter lacks a name, or has neither a longflag nor an index: a build error, not a user error.
+   * parameter lacks a name, or has neither a longflag nor an index without being a return value: a build error, not a
+   * user error.
    * \param xml the module's description.
    * \return the description. */
   static CLIModuleDescription
@@ -68,9 +82,12 @@ struct CLIModuleDescription
    * \return the parameter with that flag, or null. */
   const CLIParameter *
   FindFlag(const std::string & flag) const;
-  /** \return the positional parameters, ordered by index. */
+  /** \return the positional parameters the command line gives, ordered by index (return values excluded). */
   std::vector<const CLIParameter *>
   Positionals() const;
+  /** \return the values the module returns (CLIParameter::IsReturnValue), in the order of the XML. */
+  std::vector<const CLIParameter *>
+  ReturnValues() const;
 };
 } // namespace vr
 

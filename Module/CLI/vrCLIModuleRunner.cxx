@@ -1,16 +1,59 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCLIModuleRunner.h"
 
+#include "vrAtomicOutput.h"
 #include "vrInputError.h"
 
 #include "itkMacro.h"
 
+#include <fstream>
 #include <iostream>
+#include <memory>
 #include <new>
+#include <stdexcept>
 #include <unistd.h>
 
 namespace vr
 {
+namespace
+{
+/** \return the return values in 3D Slicer's parameter-file format, one "name = value" line per return parameter of
+ * the description, in its order. Throws std::logic_error when the module set no value for one of them. */
+std::string
+ReturnParameterText(const CLIModuleDescription & description, const CLIProgress & progress)
+{
+  const auto & values = progress.GetReturnValues();
+  std::string  text;
+  for (const CLIParameter * parameter : description.ReturnValues())
+  {
+    auto value = values.begin();
+    while (value != values.end() && value->first != parameter->Name)
+    {
+      ++value;
+    }
+    if (value == values.end())
+    {
+      throw std::logic_error("the module set no value for its return parameter " + parameter->Name);
+    }
+    text += parameter->Name + " = " + value->second + "\n";
+  }
+  return text;
+}
+
+void
+WriteReturnParameterFile(AtomicOutput & output, const std::string & text)
+{
+  std::ofstream file(output.TemporaryPath(), std::ios::binary | std::ios::trunc);
+  file << text;
+  file.close();
+  if (!file)
+  {
+    throw InputError("--returnparameterfile " + output.FinalPath() + ": could not be written");
+  }
+  output.Commit();
+}
+} // namespace
+
 std::string
 SpellingOfParameter(const CLIModuleDescription & description,
                     const CLIParameterMap &      parameters,
@@ -47,11 +90,29 @@ RunCLIModule(int                     argc,
     }
     else
     {
+      // The return-parameter file's folder is checked before the work, like every output's.
+      std::unique_ptr<AtomicOutput> returnFile;
+      if (!arguments.ReturnParameterFile.empty())
+      {
+        try
+        {
+          returnFile = std::make_unique<AtomicOutput>(arguments.ReturnParameterFile);
+        }
+        catch (const InputError & problem)
+        {
+          throw InputError(std::string("--returnparameterfile: ") + problem.what());
+        }
+      }
       auto *      information = static_cast<vrModuleProcessInformation *>(arguments.ProcessInformation);
       CLIProgress progress(
         name, comment, information, std::cout, information == nullptr && ::isatty(STDOUT_FILENO) == 1);
       progress.Start();
       body(arguments, progress);
+      const std::string returned = ReturnParameterText(description, progress);
+      if (returnFile)
+      {
+        WriteReturnParameterFile(*returnFile, returned);
+      }
       progress.End();
       status = 0;
     }
@@ -64,6 +125,7 @@ RunCLIModule(int                     argc,
   catch (const Cancelled & cancelled)
   {
     std::cerr << name << ": " << cancelled.what() << std::endl;
+    status = ExitCodeCancelled;
   }
   catch (const std::bad_alloc &)
   {

@@ -110,6 +110,10 @@ CLIProgress::End()
     }
     return;
   }
+  for (const auto & [name, value] : m_ReturnValues)
+  {
+    m_Out << "<filter-result name=\"" << name << "\">" << value << "</filter-result>\n";
+  }
   m_Out << "<filter-end>\n<filter-name>" << m_Name << "</filter-name>\n<filter-time>" << ElapsedSeconds()
         << "</filter-time>\n</filter-end>" << std::endl;
 }
@@ -123,6 +127,20 @@ CLIProgress::Print(std::ostream & stream, const std::string & text)
     m_BarOpen = false;
   }
   stream << text << std::endl;
+}
+
+void
+CLIProgress::SetReturnValue(const std::string & name, const std::string & value)
+{
+  for (auto & entry : m_ReturnValues)
+  {
+    if (entry.first == name)
+    {
+      entry.second = value;
+      return;
+    }
+  }
+  m_ReturnValues.emplace_back(name, value);
 }
 
 bool

@@ -7,11 +7,13 @@
 #include <chrono>
 #include <ostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace vr
 {
 /** \class CLIProgress
- * \brief Reports a command-line module's progress the three ways its callers expect.
+ * \brief Reports a command-line module's progress, and the values it returns, the three ways its callers expect.
  *
  * - In-process in 3D Slicer (a ModuleProcessInformation address was given): fills the structure and calls its
  *   callback; prints nothing.
@@ -19,6 +21,10 @@ namespace vr
  *   module's name and comment, "<filter-progress>0.42</filter-progress>" at every percent, and "<filter-end>"
  *   with the elapsed time.
  * - Run from a terminal: a progress bar redrawn in place, ended by a newline.
+ *
+ * The values the module returns (its description's return parameters) are kept by SetReturnValue(); the runner
+ * writes them to 3D Slicer's --returnparameterfile, and End() prints them as CTK's
+ * "<filter-result name=\"...\">value</filter-result>" lines (before "<filter-end>") when a program runs it.
  * \ingroup VesselReformation
  */
 class CLIProgress
@@ -56,18 +62,31 @@ public:
   bool
   AbortRequested() const;
 
+  /** Keeps a value the module returns; a second value for the same name replaces the first.
+   * \param name the return parameter's name in the module's XML.
+   * \param value its value as Slicer's parameter file and CTK write it ("cpu", "512,1024", "12.5"). */
+  void
+  SetReturnValue(const std::string & name, const std::string & value);
+  /** \return the values kept, in the order they were first set. */
+  const std::vector<std::pair<std::string, std::string>> &
+  GetReturnValues() const
+  {
+    return m_ReturnValues;
+  }
+
 private:
   double
   ElapsedSeconds() const;
 
-  std::string                           m_Name;
-  std::string                           m_Comment;
-  vrModuleProcessInformation *          m_Information;
-  std::ostream &                        m_Out;
-  bool                                  m_Terminal;
-  double                                m_Reported{ -1.0 };
-  bool                                  m_BarOpen{ false };
-  std::chrono::steady_clock::time_point m_Start;
+  std::string                                      m_Name;
+  std::string                                      m_Comment;
+  vrModuleProcessInformation *                     m_Information;
+  std::ostream &                                   m_Out;
+  bool                                             m_Terminal;
+  double                                           m_Reported{ -1.0 };
+  bool                                             m_BarOpen{ false };
+  std::chrono::steady_clock::time_point            m_Start;
+  std::vector<std::pair<std::string, std::string>> m_ReturnValues;
 };
 } // namespace vr
 

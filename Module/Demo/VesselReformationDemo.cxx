@@ -155,7 +155,8 @@ RunDemo(int argc, char * argv[])
     vr::WriteImage2D(bilateral.Depth, path("depth-relaxed.nrrd"));
     vr::WriteImage2D(bilateral.CPR, path("cpr.nrrd"));
     vr::WriteImage2D(unfiltered.CPR, path("cpr-unfiltered.nrrd"));
-    vr::WriteSurface(outputs.Surface, path("cut-surface.vtp"));
+    // As 3D Slicer writes models (LPS, the space recorded in the file), so Slicer loads it in place.
+    vr::WriteSurface(outputs.Surface, path("cut-surface.vtp"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
 
     const std::string  unfilteredTitle = "unfiltered (w = 0)";
     const std::string  isotropicTitle = "isotropic (" + Parameters(1.0, 0.0) + ")";

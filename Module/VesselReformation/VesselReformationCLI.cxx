@@ -1,8 +1,10 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// The VesselReformation command-line module: volume + centerlines -> CPR images, depth maps, surface, PNG.
+// The VesselReformation command-line module: volume + centerlines (or a vessel segmentation) -> CPR images, depth
+// maps, surface, PNG.
 // It only collects parameters and files; vr::VesselReformationLogic computes.
 
 #include "vrCLIModuleRunner.h"
+#include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrImageIO.h"
 #include "vrSurfaceIO.h"
@@ -16,6 +18,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <cmath>
 #include <map>
 #include <iomanip>
 #include <iostream>
@@ -50,6 +53,15 @@ std::string
 FileName(const std::string & path)
 {
   return std::filesystem::path(path).filename().string();
+}
+
+/** \return \a seconds in milliseconds with three decimals, as the return values give times. */
+std::string
+Milliseconds(double seconds)
+{
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(3) << 1e3 * seconds;
+  return text.str();
 }
 
 vr::ReformationParameters
@@ -109,16 +121,48 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     }
   }
 
-  const std::string            volumePath = arguments.String("inputVolume");
-  const std::string            centerlinePath = arguments.String("inputCenterlines");
-  vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
-  vr::CenterlineReadReport     report;
-  const itk::CenterlineTree    tree = vr::ReadCenterlines(centerlinePath, centerlineSpace, &report);
+  // The centerlines come from a file, or are extracted from a segmentation: one of the two.
+  const bool fromSegmentation = arguments.Given("segmentation");
+  if (fromSegmentation && arguments.Given("inputCenterlines"))
+  {
+    throw vr::InputError("both " + arguments.Spelling("inputCenterlines") + " and " +
+                         arguments.Spelling("segmentation") + " give centerlines; give one");
+  }
+  if (!fromSegmentation && !arguments.Given("inputCenterlines"))
+  {
+    throw vr::InputError("no centerlines: give " + arguments.Spelling("inputCenterlines") +
+                         " (the second argument) or a vessel segmentation with " + arguments.Spelling("segmentation"));
+  }
 
-  vr::VesselReformationLogic logic;
+  const std::string            volumePath = arguments.String("inputVolume");
+  vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
+  vr::VesselReformationLogic   logic;
   logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, FileName(volumePath)));
   volume = nullptr; // the node holds the voxels now
-  logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
+  std::string source;
+  if (fromSegmentation)
+  {
+    std::vector<std::string> warnings;
+    const vr::Segmentation   segmentation =
+      vr::ReadSegmentation(vr::SplitSegmentationPaths(arguments.String("segmentation")), {}, warnings);
+    for (const auto & warning : warnings)
+    {
+      progress.Print(std::cerr, "warning: " + warning);
+    }
+    logic.SetSegmentationNode(vr::ConvertItkImageToVolumeNode(segmentation.Mask.GetPointer(), segmentation.Name));
+    for (const auto & description : segmentation.Descriptions)
+    {
+      source += (source.empty() ? "extracted from " : "; ") + description;
+    }
+  }
+  else
+  {
+    const std::string         centerlinePath = arguments.String("inputCenterlines");
+    vr::CenterlineReadReport  report;
+    const itk::CenterlineTree tree = vr::ReadCenterlines(centerlinePath, centerlineSpace, &report);
+    logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, FileName(centerlinePath)));
+    source = report.Format + ", " + vr::ToString(report.FileSpace);
+  }
   logic.SetParameters(parameters);
   logic.SetSurfaceEnabled(outputs.count("outputSurface") != 0);
   logic.SetWarningCallback(
@@ -162,7 +206,11 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
         [&](const std::string & path)
         { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.UnfilteredCPR), path); });
   write("outputSurface",
-        [&](const std::string & path) { vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS); });
+        [&](const std::string & path)
+        {
+          // As 3D Slicer writes models: LPS, the space recorded in the file.
+          vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+        });
   write("outputPNG",
         [&](const std::string & path)
         {
@@ -173,15 +221,27 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
         });
   staged.CommitAll();
 
-  const auto &       size = results.View.GetSize();
-  const auto &       times = results.Times;
+  const auto & size = results.View.GetSize();
+  const auto & times = results.Times;
+  progress.SetReturnValue("backendUsed", results.RelaxBackendUsed);
+  progress.SetReturnValue("imageSize", std::to_string(size[0]) + "," + std::to_string(size[1]));
+  progress.SetReturnValue("numberOfBranches", std::to_string(tree.GetNumberOfBranches()));
+  progress.SetReturnValue("conversionTime", Milliseconds(times.Conversion));
+  progress.SetReturnValue("depthTime", Milliseconds(times.Depth));
+  progress.SetReturnValue("relaxTime", Milliseconds(times.Relax));
+  progress.SetReturnValue("resampleTime", Milliseconds(times.Resample));
+  progress.SetReturnValue("surfaceTime", Milliseconds(times.Surface));
+
   std::ostringstream summary;
-  summary << "VesselReformation: " << tree.GetNumberOfBranches() << " branches (" << report.Format << ", "
-          << vr::ToString(report.FileSpace) << "), view " << size[0] << " x " << size[1] << " pixels of "
-          << results.View.GetSpacing()[0] << " x " << results.View.GetSpacing()[1] << " mm; times (ms): " << std::fixed
-          << std::setprecision(1) << "conversion " << 1e3 * times.Conversion << ", depth " << 1e3 * times.Depth
-          << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", " << parameters.Iterations
-          << " iterations), resample " << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface;
+  const std::size_t  branches = logic.GetDepthFilter()->GetCenterlineTree().GetNumberOfBranches();
+  summary << "VesselReformation: " << branches << " branches (" << source << "), view " << size[0] << " x " << size[1]
+          << " pixels of " << results.View.GetSpacing()[0] << " x " << results.View.GetSpacing()[1]
+          << " mm; times (ms): " << std::fixed << std::setprecision(1) << "conversion " << 1e3 * times.Conversion
+          << (fromSegmentation ? ", centerline extraction " : "")
+          << (fromSegmentation ? std::to_string(std::lround(1e3 * times.Extraction)) : std::string()) << ", depth "
+          << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", "
+          << parameters.Iterations << " iterations), resample " << 1e3 * times.Resample << ", surface "
+          << 1e3 * times.Surface;
   progress.Print(std::cout, summary.str());
 }
 } // namespace

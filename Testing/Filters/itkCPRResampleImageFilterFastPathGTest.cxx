@@ -251,8 +251,11 @@ TEST(CPRResampleImageFilterFastPath, PhantomAtSeveralAnglesEqualsITKInterpolator
 TEST(CPRResampleImageFilterFastPath, KeptMinimumFollowsAChangedVolume)
 {
   const auto                 volume = MakeObliqueRandomVolume();
-  const itk::CPRViewGeometry view(
-    itk::detail::MakeVector3(0.0, 0.0, 1.0), 0.0, PointInsideObliqueVolume(volume), { { 5, 5 } }, itk::detail::MakeVector2(1.0, 1.0));
+  const itk::CPRViewGeometry view(itk::detail::MakeVector3(0.0, 0.0, 1.0),
+                                  0.0,
+                                  PointInsideObliqueVolume(volume),
+                                  { { 5, 5 } },
+                                  itk::detail::MakeVector2(1.0, 1.0));
   // Every sample 1 m away along v: all outside.
   auto depth = vr::test::MakeDepthImage(5, 5, std::vector<float>(25, 1000.0f));
   view.ConfigureImage(depth.GetPointer());

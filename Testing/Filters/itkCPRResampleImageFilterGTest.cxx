@@ -83,7 +83,8 @@ TEST(CPRResampleImageFilter, LinearVolumeGivesTheAnalyticValueEverywhere)
 {
   // Volume covers [-20, 20]^3 at 1 mm; the surface stays well inside it. Linear interpolation is exact for a
   // linear function, so each pixel equals f(B(i, j) + d(i, j) v).
-  const auto volume = MakeVolume({ { 41, 41, 41 } }, itk::detail::MakeVector3(1, 1, 1), P(-20, -20, -20), Identity(), Linear);
+  const auto volume =
+    MakeVolume({ { 41, 41, 41 } }, itk::detail::MakeVector3(1, 1, 1), P(-20, -20, -20), Identity(), Linear);
   const auto view = MakeView(35.0, P(1, -2, 0.5), 24, 30, 0.7, 0.9);
   const auto depth = MakeDepth(view, [](int i, int j) { return 0.3 * i - 0.2 * j + 1.0; });
   auto       filter = FilterType::New();
@@ -208,7 +209,8 @@ TEST(CPRResampleImageFilter, SlabMaximumFindsABrightVoxelTheSurfaceMisses)
 
 TEST(CPRResampleImageFilter, NearestAndCubicInterpolation)
 {
-  const auto volume = MakeVolume({ { 41, 41, 41 } }, itk::detail::MakeVector3(1, 1, 1), P(-20, -20, -20), Identity(), Linear);
+  const auto volume =
+    MakeVolume({ { 41, 41, 41 } }, itk::detail::MakeVector3(1, 1, 1), P(-20, -20, -20), Identity(), Linear);
   const auto view = MakeView(0.0, P(0, 0, 0), 9, 9, 1.0, 1.0);
   // Nearest at depths that land 0.3 mm off a voxel centre returns the voxel's own value.
   const auto depth = MakeDepth(view, [](int, int) { return 2.3; });

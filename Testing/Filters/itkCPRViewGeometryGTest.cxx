@@ -67,7 +67,8 @@ TEST(CPRViewGeometry, AngleRotatesAboutUpByTheRightHandRule)
 
 TEST(CPRViewGeometry, UIsVCrossUpForAnyUp)
 {
-  for (const VectorType & up : { itk::detail::MakeVector3(1, 2, 3), itk::detail::MakeVector3(-1, 0, 0.2), itk::detail::MakeVector3(0, 0, -1) })
+  for (const VectorType & up :
+       { itk::detail::MakeVector3(1, 2, 3), itk::detail::MakeVector3(-1, 0, 0.2), itk::detail::MakeVector3(0, 0, -1) })
   {
     for (const double angle : { 0.0, 37.0, -120.0 })
     {
@@ -226,8 +227,9 @@ TEST(CPRViewGeometry, RejectsBadValues)
   const auto   c = P(0, 0, 0);
   EXPECT_THROW(itk::CPRViewGeometry(itk::detail::MakeVector3(0, 0, 0), 0, c, good, itk::detail::MakeVector2(1, 1)),
                itk::ExceptionObject);
-  EXPECT_THROW(itk::CPRViewGeometry(itk::detail::MakeVector3(0, 0, 1), std::nan(""), c, good, itk::detail::MakeVector2(1, 1)),
-               itk::ExceptionObject);
+  EXPECT_THROW(
+    itk::CPRViewGeometry(itk::detail::MakeVector3(0, 0, 1), std::nan(""), c, good, itk::detail::MakeVector2(1, 1)),
+    itk::ExceptionObject);
   EXPECT_THROW(itk::CPRViewGeometry(itk::detail::MakeVector3(0, 0, 1), 0, c, empty, itk::detail::MakeVector2(1, 1)),
                itk::ExceptionObject);
   EXPECT_THROW(itk::CPRViewGeometry(itk::detail::MakeVector3(0, 0, 1), 0, c, good, itk::detail::MakeVector2(-1, 1)),

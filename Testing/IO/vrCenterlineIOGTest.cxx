@@ -19,6 +19,9 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -378,6 +381,33 @@ TEST(CenterlineRoundTrip, VTKFilesInLPSCarryTheirSpace)
   EXPECT_NE(vr::test::ReadTextFile(folder.File("lps.vtk")).find("SPACE=LPS"), std::string::npos);
 }
 
+TEST(CenterlineRoundTrip, VTKFilesNameTheRadiusAsVMTKAndSlicerDo)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const itk::CenterlineTree       tree = MakeYTree();
+  const std::string               path = folder.File("tree.vtp");
+  vr::WriteCenterlines(tree, path);
+  auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPointData * points = reader->GetOutput()->GetPointData();
+  vtkDataArray * vmtk = points->GetArray("MaximumInscribedSphereRadius");
+  vtkDataArray * slicer = points->GetArray("Radius");
+  ASSERT_NE(vmtk, nullptr);
+  ASSERT_NE(slicer, nullptr);
+  ASSERT_EQ(vmtk->GetNumberOfTuples(), static_cast<vtkIdType>(tree.GetNumberOfPoints()));
+  std::size_t k = 0;
+  for (const auto & branch : tree.GetBranches())
+  {
+    for (const double radius : branch.Radii)
+    {
+      EXPECT_EQ(vmtk->GetTuple1(static_cast<vtkIdType>(k)), radius);
+      EXPECT_EQ(slicer->GetTuple1(static_cast<vtkIdType>(k)), radius);
+      ++k;
+    }
+  }
+}
+
 TEST(CenterlineRoundTrip, MarkupsCurvesPassThroughEveryWrittenPoint)
 {
   vr::test::ScopedTemporaryFolder folder;
@@ -441,6 +471,88 @@ TEST(HandWrittenCenterlines, LegacyVTKHeaderSpaceDecidesTheFrame)
   }
   // The override wins over the header.
   EXPECT_EQ(vr::ReadCenterlines(folder.File("lps.vtk"), CoordinateSpace::RAS).GetBranches()[0].Points[1], P(-4, -5, 6));
+}
+
+TEST(HandWrittenCenterlines, AModelInSlicersOwnLayoutReadsAsCenterlines)
+{
+  // A VMTK-style centerline model as 3D Slicer's model storage writes it for a command-line module: the points in
+  // LPS, the space recorded (a "SPACE" field-data array in .vtp, appended and zlib-compressed; "3D Slicer output.
+  // SPACE=LPS" in the binary version 4.2 .vtk header), one polyline per path from the root, overlapping along the
+  // trunk, and the maximum inscribed sphere radius as the point array "Radius" (SlicerVMTK's ExtractCenterline).
+  vr::test::ScopedTemporaryFolder folder;
+  auto                            points = vtkSmartPointer<vtkPoints>::New();
+  auto                            lines = vtkSmartPointer<vtkCellArray>::New();
+  auto                            radius = vtkSmartPointer<vtkDoubleArray>::New();
+  radius->SetName("Radius");
+  // Trunk from (10, 20, 0) up to z = 10, then one path bends to +x, the other to -x (LPS mm).
+  for (const double side : { 1.0, -1.0 })
+  {
+    lines->InsertNextCell(21);
+    for (int k = 0; k <= 20; ++k)
+    {
+      const double z = k;
+      const double x = 10.0 + (k > 10 ? side * (k - 10) : 0.0);
+      lines->InsertCellPoint(points->InsertNextPoint(x, 20.0, z));
+      radius->InsertNextValue(k > 10 ? 1.0 : 2.0);
+    }
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetLines(lines);
+  polyData->GetPointData()->AddArray(radius);
+  {
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(polyData);
+    auto space = vtkSmartPointer<vtkStringArray>::New();
+    space->SetName("SPACE");
+    space->InsertNextValue("LPS");
+    copy->GetFieldData()->AddArray(space);
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    writer->SetInputData(copy);
+    writer->SetFileName(folder.File("centerline-model.vtp").c_str());
+    writer->SetCompressorType(vtkXMLWriter::ZLIB);
+    writer->SetDataMode(vtkXMLWriter::Appended);
+    ASSERT_EQ(writer->Write(), 1);
+  }
+  {
+    auto writer = vtkSmartPointer<vtkPolyDataWriter>::New();
+    writer->SetInputData(polyData);
+    writer->SetFileName(folder.File("centerline-model.vtk").c_str());
+    writer->SetFileVersion(42);
+    writer->SetFileType(VTK_BINARY);
+    writer->SetHeader("3D Slicer output. SPACE=LPS");
+    ASSERT_EQ(writer->Write(), 1);
+  }
+  for (const std::string name : { "centerline-model.vtp", "centerline-model.vtk" })
+  {
+    vr::CenterlineReadReport  report;
+    const itk::CenterlineTree tree = vr::ReadCenterlines(folder.File(name), CoordinateSpace::Auto, &report);
+    EXPECT_EQ(report.FileSpace, CoordinateSpace::LPS) << name;
+    EXPECT_EQ(report.RadiusArray, "Radius") << name;
+    // The shared trunk is one branch, the two bends two more; the points stay where they are (LPS), radii kept.
+    ASSERT_EQ(tree.GetNumberOfBranches(), 3U) << name;
+    std::size_t trunkPoints = 0;
+    for (const auto & branch : tree.GetBranches())
+    {
+      for (std::size_t k = 0; k < branch.Points.size(); ++k)
+      {
+        const auto & point = branch.Points[k];
+        EXPECT_EQ(point[1], 20.0) << name;
+        if (point[2] < 10.0)
+        {
+          ++trunkPoints;
+          EXPECT_EQ(point[0], 10.0) << name;
+          EXPECT_EQ(branch.Radii[k], 2.0) << name;
+        }
+        else if (point[2] > 10.0)
+        {
+          EXPECT_EQ(std::abs(point[0] - 10.0), point[2] - 10.0) << name;
+          EXPECT_EQ(branch.Radii[k], 1.0) << name;
+        }
+      }
+    }
+    EXPECT_EQ(trunkPoints, 10U) << name << ": the trunk was not merged into one branch";
+  }
 }
 
 TEST(HandWrittenCenterlines, CSVInEachHeaderForm)

@@ -42,8 +42,11 @@ MakeView()
   center[0] = -12.5;
   center[1] = 40.125;
   center[2] = 1.0 / 3.0; // not a short decimal: the text must carry every digit
-  return itk::CPRViewGeometry(
-    itk::detail::MakeVector3(0.0, 0.0, 1.0), 37.5, center, itk::Size<2>{ { 5, 3 } }, itk::detail::MakeVector2(0.7, 0.9));
+  return itk::CPRViewGeometry(itk::detail::MakeVector3(0.0, 0.0, 1.0),
+                              37.5,
+                              center,
+                              itk::Size<2>{ { 5, 3 } },
+                              itk::detail::MakeVector2(0.7, 0.9));
 }
 
 template<typename TImage>
@@ -251,6 +254,100 @@ TEST(SurfaceIO, VTPAndVTKKeepPointsCellsAndIntensity)
   legacy->Update();
   ExpectSameSurface(surface, legacy->GetOutput());
   EXPECT_NE(std::string(legacy->GetHeader()).find("SPACE=RAS"), std::string::npos);
+}
+
+TEST(SurfaceIO, WritesModelsAsSlicerDoesInLPSWithTheSpaceRecorded)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  auto                            surface = MakeSurface(); // RAS, as the logic's cut surface
+  auto                            normals = vtkSmartPointer<vtkFloatArray>::New();
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  for (int k = 0; k < 4; ++k)
+  {
+    normals->InsertNextTuple3(0.6, 0.8, 0.0);
+  }
+  surface->GetPointData()->SetNormals(normals);
+  vr::WriteSurface(surface, folder.File("model.vtp"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+  vr::WriteSurface(surface, folder.File("model.vtk"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+  EXPECT_EQ(folder.Entries(), (std::vector<std::string>{ "model.vtk", "model.vtp" }));
+  // The caller's surface is as it was.
+  EXPECT_EQ(surface->GetPoint(1)[0], 1.5);
+  EXPECT_EQ(surface->GetPointData()->GetNormals()->GetComponent(0, 0), 0.6f);
+
+  auto xml = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  xml->SetFileName(folder.File("model.vtp").c_str());
+  xml->Update();
+  auto legacy = vtkSmartPointer<vtkPolyDataReader>::New();
+  legacy->SetFileName(folder.File("model.vtk").c_str());
+  legacy->Update();
+  auto * space = vtkStringArray::SafeDownCast(xml->GetOutput()->GetFieldData()->GetAbstractArray("SPACE"));
+  ASSERT_NE(space, nullptr);
+  EXPECT_EQ(space->GetValue(0), "LPS");
+  EXPECT_NE(std::string(legacy->GetHeader()).find("SPACE=LPS"), std::string::npos) << legacy->GetHeader();
+  for (vtkPolyData * read : { xml->GetOutput(), legacy->GetOutput() })
+  {
+    ASSERT_EQ(read->GetNumberOfPoints(), 4);
+    for (vtkIdType k = 0; k < 4; ++k)
+    {
+      // RAS (x, y, z) is LPS (-x, -y, z); normals turn with the points, as in Slicer's model storage.
+      EXPECT_EQ(read->GetPoint(k)[0], -surface->GetPoint(k)[0]);
+      EXPECT_EQ(read->GetPoint(k)[1], -surface->GetPoint(k)[1]);
+      EXPECT_EQ(read->GetPoint(k)[2], surface->GetPoint(k)[2]);
+      EXPECT_FLOAT_EQ(static_cast<float>(read->GetPointData()->GetNormals()->GetComponent(k, 0)), -0.6f);
+      EXPECT_FLOAT_EQ(static_cast<float>(read->GetPointData()->GetNormals()->GetComponent(k, 1)), -0.8f);
+    }
+    EXPECT_EQ(read->GetPointData()->GetArray("Intensity")->GetTuple1(1), 1850.0);
+  }
+}
+
+TEST(SurfaceIO, ReadsTheRecordedSpaceAndTakesAnUnmarkedModelAsLPSAsSlicerDoes)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  auto                            surface = MakeSurface();
+  vr::WriteSurface(surface, folder.File("lps.vtp"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+  vr::WriteSurface(surface, folder.File("lps.vtk"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+  vr::WriteSurface(surface, folder.File("ras.vtp"), vr::CoordinateSpace::RAS);
+  vr::WriteSurface(surface, folder.File("ras.vtk"), vr::CoordinateSpace::RAS);
+  vr::WriteSurface(surface, folder.File("plain.vtp"));
+  const auto expect = [&](const std::string & name, vr::CoordinateSpace stored, double sign)
+  {
+    vr::CoordinateSpace found = vr::CoordinateSpace::Auto;
+    const auto          ras = vr::ReadSurface(folder.File(name), vr::CoordinateSpace::RAS, &found);
+    EXPECT_EQ(found, stored) << name;
+    ASSERT_EQ(ras->GetNumberOfPoints(), 4) << name;
+    // Back in RAS: the written surface itself, except the unmarked file, whose RAS points are taken for LPS.
+    EXPECT_EQ(ras->GetPoint(1)[0], sign * 1.5) << name;
+    EXPECT_EQ(ras->GetPoint(2)[1], sign * 2.0) << name;
+    EXPECT_EQ(ras->GetPoint(2)[2], -0.5) << name;
+    EXPECT_EQ(ras->GetFieldData()->GetAbstractArray("SPACE"), nullptr) << name << ": Slicer drops the marker";
+    const auto asStored = vr::ReadSurface(folder.File(name), vr::CoordinateSpace::Auto);
+    EXPECT_EQ(asStored->GetPoint(1)[0], stored == vr::CoordinateSpace::LPS ? -sign * 1.5 : 1.5) << name;
+  };
+  expect("lps.vtp", vr::CoordinateSpace::LPS, 1.0);
+  expect("lps.vtk", vr::CoordinateSpace::LPS, 1.0);
+  expect("ras.vtp", vr::CoordinateSpace::RAS, 1.0);
+  expect("ras.vtk", vr::CoordinateSpace::RAS, 1.0);
+  expect("plain.vtp", vr::CoordinateSpace::LPS, -1.0);
+}
+
+TEST(BadSurfaceInput, MissingUnknownAndBrokenFilesNameTheFile)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  std::string                     message = InputErrorOf([&] { vr::ReadSurface(folder.File("missing.vtp")); });
+  EXPECT_MESSAGE_HAS(message, folder.File("missing.vtp"));
+  EXPECT_MESSAGE_HAS(message, "no such file");
+  vr::test::WriteTextFile(folder.File("surface.stl"), "solid\n");
+  message = InputErrorOf([&] { vr::ReadSurface(folder.File("surface.stl")); });
+  EXPECT_MESSAGE_HAS(message, "unknown extension");
+  vr::WriteSurface(MakeSurface(), folder.File("whole.vtp"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+  const std::string whole = vr::test::ReadTextFile(folder.File("whole.vtp"));
+  vr::test::WriteTextFile(folder.File("truncated.vtp"), whole.substr(0, whole.size() / 2));
+  message = InputErrorOf([&] { vr::ReadSurface(folder.File("truncated.vtp")); });
+  EXPECT_MESSAGE_HAS(message, folder.File("truncated.vtp"));
+  vr::test::WriteTextFile(folder.File("text.vtk"), "not a VTK file\n");
+  message = InputErrorOf([&] { vr::ReadSurface(folder.File("text.vtk")); });
+  EXPECT_MESSAGE_HAS(message, folder.File("text.vtk"));
 }
 
 TEST(BadImageOutput, FailedWritesLeaveExistingFilesAndNoTemporaryOnes)

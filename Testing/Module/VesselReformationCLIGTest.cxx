@@ -372,10 +372,12 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   EXPECT_EQ(acknowledgements, vr::ModuleDescription::Acknowledgements);
   EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
 
-  // Inside a parameter: name, longflag or index, label, description, default, (elements,) channel, constraints.
-  const std::map<std::string, int> rank = { { "name", 0 },    { "longflag", 1 },    { "index", 1 },
-                                            { "label", 2 },   { "description", 3 }, { "default", 4 },
-                                            { "element", 5 }, { "channel", 6 },     { "constraints", 7 } };
+  // Inside a parameter, CTK's schema (paramType and its extensions) fixes the order: name, longflag or index,
+  // description, label, default, channel, then the type's own elements or constraints. DESIGN 3.8 had label before
+  // description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the whole schema with xmllint.
+  const std::map<std::string, int> rank = { { "name", 0 },        { "longflag", 1 }, { "index", 1 },
+                                            { "description", 2 }, { "label", 3 },    { "default", 4 },
+                                            { "channel", 5 },     { "element", 6 },  { "constraints", 6 } };
   std::set<std::string>            names;
   for (const auto & parameter : ParametersOf(root))
   {
@@ -389,7 +391,15 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
       previous = rank.at(child);
     }
     const bool isFile = parameter.Tag == "image" || parameter.Tag == "file" || parameter.Tag == "geometry";
-    EXPECT_EQ(isFile, !parameter.Channel.empty()) << parameter.Name << ": files and only files have a channel";
+    // A value the module returns: an output with CTK's index 1000 (the flavour --xml prints).
+    const bool isReturned = parameter.Index == "1000";
+    EXPECT_EQ(isFile || isReturned, !parameter.Channel.empty())
+      << parameter.Name << ": files and returned values, and nothing else, have a channel";
+    if (isReturned)
+    {
+      EXPECT_EQ(parameter.Channel, "output") << parameter.Name;
+      EXPECT_FALSE(parameter.Default.empty()) << parameter.Name << ": a host passes the value of index 1000";
+    }
     if (parameter.Tag == "string-enumeration")
     {
       EXPECT_FALSE(parameter.Elements.empty()) << parameter.Name;
@@ -448,7 +458,7 @@ ExpectFlagsAreExactlyTheXMLs(const std::string & executable, const std::set<std:
   const auto        xmlFlags = FlagsOfXML(xml);
   EXPECT_EQ(xmlFlags, expectedFlags);
 
-  // The usage lists exactly the XML's flags and the three every Slicer module takes.
+  // The usage lists exactly the XML's flags and the four every Slicer module takes.
   const RunResult help = RunProgram({ executable, "--help" });
   ASSERT_EQ(help.ExitCode, 0) << help.Err;
   std::set<std::string> helpFlags;
@@ -459,7 +469,7 @@ ExpectFlagsAreExactlyTheXMLs(const std::string & executable, const std::set<std:
     helpFlags.insert((*it)[2]);
   }
   std::set<std::string> withReserved = xmlFlags;
-  withReserved.insert({ "xml", "help", "processinformationaddress" });
+  withReserved.insert({ "xml", "help", "processinformationaddress", "returnparameterfile" });
   EXPECT_EQ(helpFlags, withReserved) << help.Out;
 
   // The parser accepts each XML flag (it then misses the positional arguments), and nothing else.
@@ -505,6 +515,7 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
                                  "slabThickness",
                                  "slabMode",
                                  "centerlineSpace",
+                                 "segmentation",
                                  "outputDepth",
                                  "outputRelaxedDepth",
                                  "outputMask",
@@ -656,7 +667,7 @@ TEST(SharedLibraries, ReformationEntryPointWritesWhatTheExecutableWrites)
   }
 }
 
-TEST(SharedLibraries, ReportProgressThroughSlicersStructureAndHonourAbort)
+TEST(SharedLibraries, ReportProgressThroughSlicersStructure)
 {
   const fs::path folder = TestFolder();
   WriteSmallDepthAndMask(folder / "depth.nrrd", folder / "mask.nrrd");
@@ -684,21 +695,157 @@ TEST(SharedLibraries, ReportProgressThroughSlicersStructureAndHonourAbort)
   EXPECT_GE(information.ElapsedTime, 0.0);
   EXPECT_FALSE(Contains(run.Out, "<filter-progress>")) << "in-process progress goes to the structure, not stdout";
   EXPECT_TRUE(fs::exists(folder / "out.nrrd"));
+}
 
-  information.Abort = 1;
-  const RunResult aborted = RunInProcess(RelaxLibrary,
-                                         { "BilateralDepthRelax",
-                                           "--processinformationaddress",
-                                           address,
-                                           "--iterations",
-                                           "100",
-                                           "--backend",
-                                           "cpu",
-                                           (folder / "depth.nrrd").string(),
-                                           (folder / "aborted.nrrd").string() });
-  EXPECT_EQ(aborted.ExitCode, 1);
-  EXPECT_TRUE(Contains(aborted.Err, "cancelled")) << aborted.Err;
-  EXPECT_FALSE(fs::exists(folder / "aborted.nrrd"));
+// ---------------------------------------------------------------------------------------------------------------
+// Cancelling through Slicer's structure (issue 12): 3D Slicer sets Abort while the module runs in its processing
+// thread; the run must stop within the iteration it is in, write nothing, and return what Slicer's CLI logic reads
+// as "Cancelled": 0 (a non-zero value turns the status into "Completed with errors").
+
+/** What Slicer's progress callback sees during a run that it cancels as soon as the relaxation reports. */
+struct CancelProbe
+{
+  SlicerProcessInformation * Information{ nullptr };
+  bool                       AbortSet{ false };
+  float                      ProgressAtAbort{ 0.0f };
+  int                        CallsBeforeAbort{ 0 };
+  int                        CallsAfterAbort{ 0 };
+};
+
+void
+CancelWhenTheRelaxationReports(void * data)
+{
+  auto * probe = static_cast<CancelProbe *>(data);
+  if (probe->AbortSet)
+  {
+    ++probe->CallsAfterAbort;
+    return;
+  }
+  ++probe->CallsBeforeAbort;
+  if (std::strcmp(probe->Information->ProgressMessage, "relax") == 0)
+  {
+    probe->Information->Abort = 1;
+    probe->AbortSet = true;
+    probe->ProgressAtAbort = probe->Information->Progress;
+  }
+}
+
+/** Runs \a library in this process with \a arguments after Slicer's first three (target, the structure's flag and
+ * address), cancelling at the first progress report of the relaxation. */
+RunResult
+RunCancelledInProcess(const std::string &      library,
+                      const std::string &      target,
+                      std::vector<std::string> arguments,
+                      CancelProbe &            probe)
+{
+  static SlicerProcessInformation information;
+  information = SlicerProcessInformation{};
+  probe = CancelProbe{};
+  probe.Information = &information;
+  information.ProgressCallbackFunction = CancelWhenTheRelaxationReports;
+  information.ProgressCallbackClientData = &probe;
+  char address[64];
+  std::snprintf(address, sizeof(address), "%p", static_cast<void *>(&information));
+  arguments.insert(arguments.begin(), { target, "--processinformationaddress", address });
+  return RunInProcess(library, arguments);
+}
+
+/** The iterations the relax filter did before it stopped, from its "aborted after N of M iterations". */
+long
+IterationsDoneBeforeTheAbort(const std::string & message, long & of)
+{
+  std::smatch      match;
+  const std::regex pattern("aborted after ([0-9]+) of ([0-9]+) iterations");
+  if (!std::regex_search(message, match, pattern))
+  {
+    return -1;
+  }
+  of = std::stol(match[2]);
+  return std::stol(match[1]);
+}
+
+TEST(SlicerCancel, ReformationStopsMidRelaxationReturnsZeroAndWritesNothing)
+{
+  const fs::path folder = TestFolder();
+  WriteText(folder / "cpr.nrrd", "an earlier result that must survive");
+  const auto  before = FilesIn(folder);
+  CancelProbe probe;
+  // 200 000 iterations of 256 x 256 pixels: seconds of relaxation that a run ignoring Abort would go through,
+  // reporting progress at every percent.
+  const RunResult run = RunCancelledInProcess(ReformationLibrary,
+                                              "VesselReformation",
+                                              { "--up",
+                                                "auto",
+                                                "--size",
+                                                "256,256",
+                                                "--iterations",
+                                                "200000",
+                                                "--backend",
+                                                "cpu",
+                                                "--outputDepth",
+                                                (folder / "depth.nrrd").string(),
+                                                "--outputSurface",
+                                                (folder / "surface.vtp").string(),
+                                                "--returnparameterfile",
+                                                (folder / "returned.params").string(),
+                                                (DataFolder / "aorta.mha").string(),
+                                                (DataFolder / "aorta-centerline.vtp").string(),
+                                                (folder / "cpr.nrrd").string() },
+                                              probe);
+  ASSERT_TRUE(probe.AbortSet) << "the relaxation never reported: " << run.Err;
+  EXPECT_EQ(run.ExitCode, 0) << "3D Slicer reads a non-zero value as 'Completed with errors'\n" << run.Err;
+  EXPECT_TRUE(Contains(run.Err, "VesselReformation: relaxation: cancelled")) << run.Err;
+  EXPECT_FALSE(Contains(run.Err, "error")) << run.Err;
+  // Quickly: no progress report after the abort (a run that went on would report every percent), and the filter
+  // stopped within an iteration of the one it was in when Slicer asked.
+  EXPECT_EQ(probe.CallsAfterAbort, 0);
+  long       of = 0;
+  const long done = IterationsDoneBeforeTheAbort(run.Err, of);
+  EXPECT_EQ(of, 200000) << run.Err;
+  EXPECT_GT(done, 0) << run.Err;
+  EXPECT_LT(done, 200000 / 20) << "the relaxation went on after Abort: " << run.Err;
+  // Nothing written: no output, no return-parameter file, no stray file, the earlier result intact.
+  EXPECT_EQ(FilesIn(folder), before);
+  EXPECT_EQ(ReadText(folder / "cpr.nrrd"), "an earlier result that must survive");
+  std::cout << "cancelled at overall progress " << probe.ProgressAtAbort << " after " << probe.CallsBeforeAbort
+            << " progress reports; the relax filter stopped after " << done << " of " << of << " iterations"
+            << std::endl;
+}
+
+TEST(SlicerCancel, RelaxModuleStopsMidRelaxationReturnsZeroAndWritesNothing)
+{
+  const fs::path folder = TestFolder();
+  // A 512 x 512 depth map with a step: 100 000 iterations that a run ignoring Abort would go through.
+  auto                                 depth = vr::DepthImageType::New();
+  const vr::DepthImageType::RegionType region({ { 0, 0 } }, { { 512, 512 } });
+  depth->SetRegions(region);
+  depth->Allocate();
+  for (unsigned int k = 0; k < 512 * 512; ++k)
+  {
+    depth->GetBufferPointer()[k] = (k % 512) < 256 ? 2.0f : 9.0f;
+  }
+  vr::WriteImage2D(depth.GetPointer(), (folder / "depth.nrrd").string());
+  const auto      before = FilesIn(folder);
+  CancelProbe     probe;
+  const RunResult run = RunCancelledInProcess(RelaxLibrary,
+                                              "BilateralDepthRelax",
+                                              { "--iterations",
+                                                "100000",
+                                                "--backend",
+                                                "cpu",
+                                                "--returnparameterfile",
+                                                (folder / "returned.params").string(),
+                                                (folder / "depth.nrrd").string(),
+                                                (folder / "relaxed.nrrd").string() },
+                                              probe);
+  ASSERT_TRUE(probe.AbortSet) << run.Err;
+  EXPECT_EQ(run.ExitCode, 0) << run.Err;
+  EXPECT_TRUE(Contains(run.Err, "BilateralDepthRelax: relaxation: cancelled")) << run.Err;
+  EXPECT_FALSE(Contains(run.Err, "error")) << run.Err;
+  EXPECT_EQ(probe.CallsAfterAbort, 0);
+  // The module stopped at its next progress report: the relaxation's progress is its fraction of iterations done.
+  EXPECT_LT(probe.ProgressAtAbort, 0.05f);
+  EXPECT_EQ(FilesIn(folder), before);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
