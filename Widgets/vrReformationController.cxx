@@ -8,6 +8,7 @@
 
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -52,12 +53,16 @@ ReformationController::ReformationController(QObject * parent)
   m_Logic.SetProgressCallback(
     [this](double fraction, const std::string & stage)
     {
-      // Throttled: the relaxation reports every few iterations, the status bar needs a few steps per second.
-      if (fraction < 1.0 && std::abs(fraction - m_LastProgress) < 0.02)
+      // Throttled by time: the relaxation reports every few iterations, the status bar needs a few steps per second,
+      // and each repaint of the window costs the processor the logic runs on (its OpenGL views are composed again).
+      const auto now = std::chrono::steady_clock::now();
+      if (fraction < 1.0 && m_ProgressStarted &&
+          std::chrono::duration<double>(now - m_LastProgressTime).count() < ProgressIntervalSeconds)
       {
         return;
       }
-      m_LastProgress = fraction;
+      m_ProgressStarted = true;
+      m_LastProgressTime = now;
       const QString name = QString::fromStdString(stage);
       Post([this, fraction, name] { emit progressChanged(fraction, name); });
     });
@@ -119,7 +124,7 @@ ReformationController::Request(const ReformationParameters & parameters, Request
     {
       ++m_Statistics.Superseded;
     }
-    m_PendingJob = Job{ id, kind, parameters };
+    m_PendingJob = Job{ id, kind, parameters, std::chrono::steady_clock::now() };
     if (kind == RequestKind::Final)
     {
       m_DisplayFloor = id;
@@ -164,6 +169,26 @@ std::shared_ptr<const ReformationResult>
 ReformationController::GetLatestResult() const
 {
   return m_Latest;
+}
+
+void
+ReformationController::SetSurfaceWaitsForDisplay(bool wait)
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_SurfaceWaitsForDisplay = wait;
+  }
+  m_Wake.notify_all();
+}
+
+void
+ReformationController::ImageShown(std::uint64_t requestId)
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_ShownId = std::max(m_ShownId, requestId);
+  }
+  m_Wake.notify_all();
 }
 
 void
@@ -264,8 +289,15 @@ ReformationController::RunJob(const Job & job)
     return;
   }
   {
-    std::lock_guard<std::mutex> lock(m_Mutex);
-    if (m_PendingJob || m_PendingLoad || m_Quit)
+    std::unique_lock<std::mutex> lock(m_Mutex);
+    const auto                   superseded = [this] { return m_PendingJob || m_PendingLoad || m_Quit; };
+    if (m_SurfaceWaitsForDisplay)
+    {
+      m_Wake.wait_for(lock,
+                      std::chrono::duration<double>(SurfaceDisplayWaitSeconds),
+                      [&] { return superseded() || !m_SurfaceWaitsForDisplay || m_ShownId >= job.Id; });
+    }
+    if (superseded())
     {
       return; // superseded: its surface would be stale before it is drawn
     }
@@ -291,7 +323,7 @@ ReformationController::Update(const Job & job, bool surface)
   }
   m_Logic.SetParameters(job.Parameters);
   m_Logic.SetSurfaceEnabled(surface);
-  m_LastProgress = -1.0;
+  m_ProgressStarted = false;
   const StageCounts before = m_Logic.GetStageExecutionCounts();
   const auto        start = Clock::now();
   std::string       failure;
@@ -307,6 +339,8 @@ ReformationController::Update(const Job & job, bool surface)
     result->Outputs = outputs;
     result->Inputs = m_WorkerInputs;
     result->UpdateSeconds = seconds;
+    result->RequestTime = job.Time;
+    result->StartTime = start;
     result->CountsAfter = m_Logic.GetStageExecutionCounts();
     result->StagesRun = Difference(result->CountsAfter, before);
     m_Logic.GetDisplayWindowLevel(result->LogicWindow, result->LogicLevel);
@@ -316,7 +350,9 @@ ReformationController::Update(const Job & job, bool surface)
       const auto & size = outputs.View.GetSize();
       result->PreviewStride =
         PreviewSurfaceStride(static_cast<unsigned int>(size[0]), static_cast<unsigned int>(size[1]));
+      const auto previewStart = Clock::now();
       result->PreviewSurface = BuildPreviewSurface(outputs, result->PreviewStride);
+      result->PreviewSeconds = std::chrono::duration<double>(Clock::now() - previewStart).count();
     }
     std::lock_guard<std::mutex> lock(m_Mutex);
     m_Counts = result->CountsAfter;
@@ -359,6 +395,7 @@ ReformationController::Post(std::function<void()> call)
 void
 ReformationController::Deliver(std::shared_ptr<ReformationResult> result)
 {
+  result->ReadyTime = std::chrono::steady_clock::now();
   Post(
     [this, result]
     {

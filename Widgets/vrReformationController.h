@@ -9,6 +9,7 @@
 #include <QObject>
 #include <QString>
 
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -61,6 +62,13 @@ struct ReformationResult
   StageCounts CountsAfter;
   /** Wall time of VesselReformationLogic::Update() for this result, in seconds. */
   double UpdateSeconds{ 0.0 };
+  /** Wall time of building PreviewSurface on the worker after the update, in seconds (0 when not built). */
+  double PreviewSeconds{ 0.0 };
+  /** When the request was made, when the worker began its update, and when the worker handed the result to the GUI
+   * thread (the time from this to the display is the GUI's). */
+  std::chrono::steady_clock::time_point RequestTime;
+  std::chrono::steady_clock::time_point StartTime;
+  std::chrono::steady_clock::time_point ReadyTime;
   /** The window and level the logic gives for display (VesselReformationLogic::GetDisplayWindowLevel). */
   double LogicWindow{ 1.0 };
   double LogicLevel{ 0.0 };
@@ -103,7 +111,9 @@ struct RequestStatistics
  *
  * Each request runs in two steps: the images (depth, relaxation, both CPRs) with the logic's cut surface off, shown
  * at once with a preview surface; then, for Final requests not yet superseded, the cut surface alone (the logic reruns
- * only that stage), shown as a second result of the same request.
+ * only that stage), shown as a second result of the same request. With SetSurfaceWaitsForDisplay(true), the cut
+ * surface waits until ImageShown() says the images are on screen (or SurfaceDisplayWaitSeconds pass), so that it does
+ * not compete with the drawing of the images for the processor.
  *
  * Inputs are loaded on the worker thread as well (files, phantoms): a loader that throws vr::InputError leaves the
  * inputs in use as they were and reports its message through inputsFailed().
@@ -150,6 +160,17 @@ public:
   std::shared_ptr<const ReformationResult>
   GetLatestResult() const;
 
+  /** Whether a Final request's cut surface waits for ImageShown() of its images (default false: it follows at once). */
+  void
+  SetSurfaceWaitsForDisplay(bool wait);
+  /** Says that the images of request \a requestId (or a later one) are on screen. Any thread. */
+  void
+  ImageShown(std::uint64_t requestId);
+  /** How long a cut surface waits for ImageShown() at most, in seconds. */
+  static constexpr double SurfaceDisplayWaitSeconds = 1.0;
+  /** The least time between two progressChanged() signals, in seconds (the first and the last always come). */
+  static constexpr double ProgressIntervalSeconds = 0.1;
+
 signals:
   void
   inputsLoaded(std::shared_ptr<const vr::ReformationInputs> inputs);
@@ -175,9 +196,10 @@ signals:
 private:
   struct Job
   {
-    std::uint64_t         Id{ 0 };
-    RequestKind           Kind{ RequestKind::Final };
-    ReformationParameters Parameters;
+    std::uint64_t                         Id{ 0 };
+    RequestKind                           Kind{ RequestKind::Final };
+    ReformationParameters                 Parameters;
+    std::chrono::steady_clock::time_point Time;
   };
   struct Load
   {
@@ -205,7 +227,8 @@ private:
   // Worker-only state.
   VesselReformationLogic                   m_Logic;
   std::shared_ptr<const ReformationInputs> m_WorkerInputs;
-  double                                   m_LastProgress{ -1.0 };
+  std::chrono::steady_clock::time_point    m_LastProgressTime;
+  bool                                     m_ProgressStarted{ false };
 
   // Shared state, under m_Mutex.
   mutable std::mutex      m_Mutex;
@@ -218,6 +241,8 @@ private:
   std::uint64_t           m_NextId{ 1 };
   StageCounts             m_Counts;
   RequestStatistics       m_Statistics;
+  bool                    m_SurfaceWaitsForDisplay{ false };
+  std::uint64_t           m_ShownId{ 0 };
 
   // GUI-thread state.
   std::shared_ptr<const ReformationInputs> m_Inputs;

@@ -183,7 +183,16 @@ ViewerWindow::ConnectParts()
           &CPRView::readoutChanged,
           this,
           [this](const PixelReadout & readout) { m_Readout->setText(readout.ToText()); });
-  connect(m_CPRView, &CPRView::imageDisplayed, this, [this] { m_ThreeDView->ScheduleRender(); });
+  // The cut surface of a Final request is built once its images are on screen, not while they are drawn.
+  m_Controller->SetSurfaceWaitsForDisplay(true);
+  connect(m_CPRView,
+          &CPRView::imageDisplayed,
+          this,
+          [this](std::uint64_t requestId)
+          {
+            m_Controller->ImageShown(requestId);
+            m_ThreeDView->ScheduleRender();
+          });
   connect(m_ThreeDView, &ThreeDView::rendered, this, [this] { ShowTimes(); });
 
   connect(m_Controller,
