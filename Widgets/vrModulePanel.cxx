@@ -5,6 +5,8 @@
 #include "vrParameterName.h"
 #include "vrRelaxBackend.h"
 
+#include <QFileInfo>
+#include <QLabel>
 #include <QSignalBlocker>
 
 #include <cmath>
@@ -63,6 +65,10 @@ ModulePanel::ModulePanel(QWidget * parent)
   , m_Ui(std::make_unique<Ui::ModulePanel>())
 {
   m_Ui->setupUi(this);
+  for (QLabel * label : { m_Ui->volumeLabel, m_Ui->centerlineLabel })
+  {
+    label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
+  }
   m_Ui->presetCombo->setCurrentText(QString::fromLatin1(CTAPreset.Name));
   Connect();
 }
@@ -365,9 +371,15 @@ ModulePanel::GetOutputSelection() const
 void
 ModulePanel::SetInputDescription(const QString & volume, const QString & centerlines)
 {
-  auto elide = [](const QString & text) { return text.size() > 38 ? QStringLiteral("…") + text.right(37) : text; };
-  m_Ui->volumeLabel->setText(elide(volume));
-  m_Ui->centerlineLabel->setText(elide(centerlines));
+  // A file by its name (the whole path in the status tip), a phantom by its description; the label shows what fits and
+  // never widens the panel (its size policy is Ignored), so that the captions beside it stay whole.
+  auto shortName = [](const QString & text)
+  {
+    const QFileInfo file(text);
+    return text.contains(QLatin1Char('/')) && !file.fileName().isEmpty() ? file.fileName() : text;
+  };
+  m_Ui->volumeLabel->setText(shortName(volume));
+  m_Ui->centerlineLabel->setText(shortName(centerlines));
   m_Ui->volumeLabel->setStatusTip(volume);
   m_Ui->centerlineLabel->setStatusTip(centerlines);
 }

@@ -211,10 +211,12 @@ ViewerWindow::ConnectParts()
             {
               m_FullRangeOnNextResult = true;
             }
-            statusBar()->showMessage(
-              tr("Loaded %1 and %2")
-                .arg(QString::fromStdString(inputs->VolumeSource), QString::fromStdString(inputs->CenterlineSource)),
-              5000);
+            const QString loaded = inputs->IsPhantom && inputs->CenterlineSource.find('/') == std::string::npos
+                                     ? tr("Loaded %1").arg(QString::fromStdString(inputs->VolumeSource))
+                                     : tr("Loaded %1 and %2")
+                                         .arg(QFileInfo(QString::fromStdString(inputs->VolumeSource)).fileName(),
+                                              QFileInfo(QString::fromStdString(inputs->CenterlineSource)).fileName());
+            statusBar()->showMessage(loaded, 5000);
             RequestReformation(RequestKind::Final);
           });
   connect(m_Controller,
@@ -510,13 +512,14 @@ ViewerWindow::WriteScreenshot(const QString & path)
 {
   try
   {
-    const QImage image = grab().toImage();
+    // Opaque RGB, compressed as much as PNG allows (quality 0), so that screenshots stay small enough to share.
+    const QImage image = grab().toImage().convertToFormat(QImage::Format_RGB888);
     if (image.isNull())
     {
       return tr("the window could not be rendered into an image");
     }
     AtomicOutput output(path.toStdString());
-    if (!image.save(QString::fromStdString(output.TemporaryPath()), "PNG"))
+    if (!image.save(QString::fromStdString(output.TemporaryPath()), "PNG", 0))
     {
       return tr("%1: cannot write the PNG").arg(path);
     }
