@@ -2,6 +2,7 @@
 #include "vrCenterlineExtraction.h"
 
 #include "vrCoordinateFrames.h"
+#include "vrImageGrid.h"
 #include "vrITKMessages.h"
 #include "vrParameterName.h"
 #include "vrInputError.h"
@@ -43,43 +44,6 @@ ListLabels(const std::vector<double> & labels)
     text += (text.empty() ? "" : ", ") + FormatNumber(label);
   }
   return text;
-}
-
-/** Whether two masks share a grid: size, spacing, origin and direction (to round-off). */
-bool
-SameGrid(const SegmentationMaskType * a, const SegmentationMaskType * b)
-{
-  if (a->GetLargestPossibleRegion() != b->GetLargestPossibleRegion())
-  {
-    return false;
-  }
-  for (unsigned int i = 0; i < 3; ++i)
-  {
-    if (std::abs(a->GetSpacing()[i] - b->GetSpacing()[i]) > 1e-6 * a->GetSpacing()[i] ||
-        std::abs(a->GetOrigin()[i] - b->GetOrigin()[i]) > 1e-3)
-    {
-      return false;
-    }
-    for (unsigned int j = 0; j < 3; ++j)
-    {
-      if (std::abs(a->GetDirection()(i, j) - b->GetDirection()(i, j)) > 1e-6)
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-std::string
-DescribeGrid(const SegmentationMaskType * image)
-{
-  std::ostringstream text;
-  const auto         size = image->GetLargestPossibleRegion().GetSize();
-  const auto         spacing = image->GetSpacing();
-  text << size[0] << " x " << size[1] << " x " << size[2] << " voxels of " << spacing[0] << " x " << spacing[1] << " x "
-       << spacing[2] << " mm at " << image->GetOrigin();
-  return text.str();
 }
 
 /** The distance (mm) from \a point (LPS) to the centre of the nearest vessel voxel of \a mask. */
@@ -199,10 +163,10 @@ ReadSegmentation(const std::vector<std::string> & paths,
       segmentation.Mask = mask;
       continue;
     }
-    if (!SameGrid(mask, segmentation.Mask))
+    if (!detail::SameGrid(mask, segmentation.Mask))
     {
-      warnings.push_back("segmentation " + paths[k] + " is on another grid (" + DescribeGrid(mask) + ") than " +
-                         paths[0] + " (" + DescribeGrid(segmentation.Mask) +
+      warnings.push_back("segmentation " + paths[k] + " is on another grid (" + detail::DescribeGrid(mask) + ") than " +
+                         paths[0] + " (" + detail::DescribeGrid(segmentation.Mask) +
                          "); resampled onto the latter's (nearest neighbour)");
       mask = ResampleOnto(mask, segmentation.Mask);
     }

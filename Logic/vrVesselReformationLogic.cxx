@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrVesselReformationLogic.h"
 
+#include "vrImageGrid.h"
+
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRDepthImageFilter.h"
 #include "itkCPRResampleImageFilter.h"
@@ -345,78 +347,11 @@ VesselReformationLogic::Internals::CheckTreeAgainstVolume()
   }
 }
 
-namespace
-{
-/** The LPS bounding box of an image's voxel centres. */
-void
-PhysicalBounds(const itk::ImageBase<3> * image, itk::Point<double, 3> & low, itk::Point<double, 3> & high)
-{
-  const auto region = image->GetLargestPossibleRegion();
-  low.Fill(std::numeric_limits<double>::infinity());
-  high.Fill(-std::numeric_limits<double>::infinity());
-  for (unsigned int corner = 0; corner < 8; ++corner)
-  {
-    itk::Index<3> index;
-    for (unsigned int axis = 0; axis < 3; ++axis)
-    {
-      index[axis] =
-        region.GetIndex(axis) + ((corner >> axis) & 1 ? static_cast<itk::IndexValueType>(region.GetSize(axis)) - 1 : 0);
-    }
-    itk::Point<double, 3> point;
-    image->TransformIndexToPhysicalPoint(index, point);
-    for (unsigned int axis = 0; axis < 3; ++axis)
-    {
-      low[axis] = std::min(low[axis], point[axis]);
-      high[axis] = std::max(high[axis], point[axis]);
-    }
-  }
-}
-
-bool
-SameGrid(const itk::ImageBase<3> * a, const itk::ImageBase<3> * b)
-{
-  if (a->GetLargestPossibleRegion() != b->GetLargestPossibleRegion())
-  {
-    return false;
-  }
-  for (unsigned int i = 0; i < 3; ++i)
-  {
-    if (std::abs(a->GetSpacing()[i] - b->GetSpacing()[i]) > 1e-6 * a->GetSpacing()[i] ||
-        std::abs(a->GetOrigin()[i] - b->GetOrigin()[i]) > 1e-3)
-    {
-      return false;
-    }
-    for (unsigned int j = 0; j < 3; ++j)
-    {
-      if (std::abs(a->GetDirection()(i, j) - b->GetDirection()(i, j)) > 1e-6)
-      {
-        return false;
-      }
-    }
-  }
-  return true;
-}
-
-std::string
-DescribeGrid(const itk::ImageBase<3> * image)
-{
-  std::ostringstream    text;
-  const auto            size = image->GetLargestPossibleRegion().GetSize();
-  const auto            spacing = image->GetSpacing();
-  itk::Point<double, 3> low;
-  itk::Point<double, 3> high;
-  PhysicalBounds(image, low, high);
-  text << size[0] << " x " << size[1] << " x " << size[2] << " voxels of " << spacing[0] << " x " << spacing[1] << " x "
-       << spacing[2] << " mm spanning LPS " << low << " to " << high;
-  return text.str();
-}
-} // namespace
-
 void
 VesselReformationLogic::Internals::CheckSegmentationAgainstVolume()
 {
   SegmentationWarning.clear();
-  if (SameGrid(SegmentationMask, Volume))
+  if (detail::SameGrid(SegmentationMask, Volume))
   {
     return;
   }
@@ -427,18 +362,18 @@ VesselReformationLogic::Internals::CheckSegmentationAgainstVolume()
   itk::Point<double, 3> segmentationHigh;
   itk::Point<double, 3> volumeLow;
   itk::Point<double, 3> volumeHigh;
-  PhysicalBounds(SegmentationMask, segmentationLow, segmentationHigh);
-  PhysicalBounds(Volume, volumeLow, volumeHigh);
+  detail::PhysicalBounds(SegmentationMask, segmentationLow, segmentationHigh);
+  detail::PhysicalBounds(Volume, volumeLow, volumeHigh);
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     if (segmentationHigh[axis] < volumeLow[axis] || segmentationLow[axis] > volumeHigh[axis])
     {
-      throw InputError(SegmentationName() + " (" + DescribeGrid(SegmentationMask) + ") does not overlap " + volumeName +
-                       " (" + DescribeGrid(Volume) + "); is it the segmentation of this scan?");
+      throw InputError(SegmentationName() + " (" + detail::DescribeGrid(SegmentationMask) + ") does not overlap " +
+                       volumeName + " (" + detail::DescribeGrid(Volume) + "); is it the segmentation of this scan?");
     }
   }
-  SegmentationWarning = SegmentationName() + " lies on another grid (" + DescribeGrid(SegmentationMask) + ") than " +
-                        volumeName + " (" + DescribeGrid(Volume) +
+  SegmentationWarning = SegmentationName() + " lies on another grid (" + detail::DescribeGrid(SegmentationMask) +
+                        ") than " + volumeName + " (" + detail::DescribeGrid(Volume) +
                         "); its centerlines are extracted on its own grid, in physical space, and reformed in the "
                         "volume. The reformation continues.";
   Warning(SegmentationWarning, "");
@@ -847,6 +782,15 @@ VesselReformationLogic::Update()
   }
   catch (const itk::ExceptionObject & error)
   {
+    if (d.Parameters.PixelSpacing[0] > 0.0 && d.Parameters.ImageSize[0] == 0)
+    {
+      // The view's size follows from the spacing when only that was given: name it (e.g. a spacing of 1e-300 mm
+      // asks for more pixels than an integer holds).
+      std::ostringstream stage;
+      stage << "view at pixel spacing " << d.Parameters.PixelSpacing[0] << "," << d.Parameters.PixelSpacing[1]
+            << " mm: " << error.GetDescription();
+      throw InputError(stage.str(), ParameterName::PixelSpacing);
+    }
     RethrowFilterError("view", error);
   }
   d.CheckMemory(d.Depth->GetView());

@@ -20,6 +20,7 @@ packages=(
   libxml2-utils                                   # xmllint: the modules' XML against CTK's schema (a test)
   qtbase5-dev libvtk9-qt-dev                      # the widgets and VesselReformationViewer: Qt 5 Widgets, VTK's Qt support
   xvfb xauth                                      # a virtual X server: the widgets' tests and headless screenshots
+  clang libclang-rt-14-dev                        # scripts/test.sh --sanitize and scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 
 export DEBIAN_FRONTEND=noninteractive

@@ -47,9 +47,15 @@ private:
   CPRCenterlinePixels & m_Pixels;
 };
 
+/** The pixel cell holding a view coordinate; -1 (outside every image) for one beyond what a long holds. */
 long
 CellOf(double coordinate)
 {
+  constexpr double Limit = 1e15;
+  if (!(coordinate > -Limit && coordinate < Limit))
+  {
+    return -1;
+  }
   return static_cast<long>(std::floor(coordinate + 0.5));
 }
 

@@ -300,9 +300,20 @@ CPRViewGeometry::Resolve(const CPRViewSpecification & specification,
     }
     spacing.Fill(isotropic);
   }
+  // Checked as doubles before any conversion: a tiny spacing or a huge tree asks for more pixels than any
+  // integer holds.
+  const double columns = std::ceil(2.0 * halfWidth / spacing[0]);
+  const double rows = std::ceil(2.0 * halfHeight / spacing[1]);
+  if ((width == 0 && !(columns <= MaximumPixelsPerSide)) || (height == 0 && !(rows <= MaximumPixelsPerSide)))
+  {
+    itkGenericExceptionMacro(<< "CPRViewGeometry: the tree spans " << 2.0 * halfWidth << " x " << 2.0 * halfHeight
+                             << " mm; at a pixel spacing of " << spacing[0] << " x " << spacing[1] << " mm that is "
+                             << columns << " x " << rows << " pixels, more than " << MaximumPixelsPerSide
+                             << " per side: choose a larger spacing or an image size");
+  }
   SizeType size;
-  size[0] = width > 0 ? width : std::max<SizeValueType>(1, std::ceil(2.0 * halfWidth / spacing[0]));
-  size[1] = height > 0 ? height : std::max<SizeValueType>(1, std::ceil(2.0 * halfHeight / spacing[1]));
+  size[0] = width > 0 ? width : std::max<SizeValueType>(1, static_cast<SizeValueType>(columns));
+  size[1] = height > 0 ? height : std::max<SizeValueType>(1, static_cast<SizeValueType>(rows));
   return CPRViewGeometry(up, specification.AngleInDegrees, center, size, spacing);
 }
 

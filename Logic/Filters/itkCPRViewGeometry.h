@@ -93,6 +93,9 @@ public:
   CPRViewGeometry();
   /** A view from explicit values; throws itk::ExceptionObject naming the bad value (zero or non-finite up,
    * non-finite angle or centre, zero size, spacing not > 0). */
+  /** The most pixels per side Resolve() computes from a tree and a spacing (2^31 - 1). */
+  static constexpr double MaximumPixelsPerSide = 2147483647.0;
+
   CPRViewGeometry(const VectorType &  up,
                   double              angleInDegrees,
                   const PointType &   center,
@@ -101,7 +104,8 @@ public:
 
   /** Completes \a specification: centre, size and spacing default from \a tree (and \a volume, may be null)
    * so that the tree fits at every angle about up, at the volume's smallest spacing (1 mm without a volume).
-   * Throws when the specification is invalid or the tree is empty. */
+   * Throws when the specification is invalid, the tree is empty, or the size it computes would exceed
+   * MaximumPixelsPerSide (checked before any conversion to an integer). */
   static CPRViewGeometry
   Resolve(const CPRViewSpecification & specification, const CenterlineTree & tree, const ImageBase<3> * volume);
 

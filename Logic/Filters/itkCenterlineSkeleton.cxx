@@ -42,7 +42,9 @@ SkeletonTracer::Sweep(const std::vector<uint32_t> & component, uint32_t source, 
   queue.emplace(0.0, source);
   while (!queue.empty())
   {
-    const auto [cost, voxel] = queue.top();
+    // Plain variables, not a structured binding: the lambda below captures them (C++20 for bindings; clang 14).
+    const double cost = queue.top().first;
+    const auto   voxel = queue.top().second;
     queue.pop();
     if (m_Done[voxel])
     {

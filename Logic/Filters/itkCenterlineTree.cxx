@@ -117,6 +117,18 @@ CenterlineTree::Validate() const
         itkGenericExceptionMacro(<< "CenterlineTree: branch " << branch.Id << ", point " << p
                                  << " has a non-finite coordinate " << point);
       }
+      if (std::abs(point[0]) > MaximumCoordinate || std::abs(point[1]) > MaximumCoordinate ||
+          std::abs(point[2]) > MaximumCoordinate)
+      {
+        itkGenericExceptionMacro(<< "CenterlineTree: branch " << branch.Id << ", point " << p << " is at " << point
+                                 << " mm, farther than " << MaximumCoordinate
+                                 << " mm from the origin; not a position in a scanner's frame (wrong units?)");
+      }
+      if (branch.HasRadii() && branch.Radii[p] > MaximumCoordinate)
+      {
+        itkGenericExceptionMacro(<< "CenterlineTree: branch " << branch.Id << ", point " << p << " has radius "
+                                 << branch.Radii[p] << " mm, more than " << MaximumCoordinate << " mm (wrong units?)");
+      }
       if (branch.HasRadii() && !(std::isfinite(branch.Radii[p]) && branch.Radii[p] >= 0.0))
       {
         itkGenericExceptionMacro(<< "CenterlineTree: branch " << branch.Id << ", point " << p << " has radius "

@@ -100,10 +100,15 @@ public:
   GetBoundingBoxCenter() const;
 
   /** Throws itk::ExceptionObject naming the branch and point when the tree is empty, a branch has no point,
-   * an id is < 1 or repeated, a coordinate or radius is not finite, a radius is negative, or the radius count
+   * an id is < 1 or repeated, a coordinate or radius is not finite, a coordinate lies farther than
+   * MaximumCoordinate from the origin, a radius is negative or above MaximumCoordinate, or the radius count
    * differs from the point count. */
   void
   Validate() const;
+
+  /** The largest coordinate magnitude and radius accepted, in mm: 10 km, far beyond any scanner's frame, and far
+   * below where view coordinates in pixels could overflow an integer. */
+  static constexpr double MaximumCoordinate = 1e7;
 
   /** Tube spatial objects (one per branch, id = branch id) under a group; positions in world (LPS) space. */
   GroupType::Pointer

@@ -2,26 +2,28 @@
 #ifndef vrAtomicOutput_h
 #define vrAtomicOutput_h
 
+#include "vrStagedOutputs.h"
+
 #include <string>
 
 namespace vr
 {
 /** \class AtomicOutput
- * \brief Writes a result under a temporary name beside its final path and renames it into place on Commit(),
- * so an existing result is never half-overwritten (DESIGN section 5).
+ * \brief One output file written into a staging folder beside its final path and published on Commit(), so an
+ * existing result is never half-overwritten and a killed run leaves nothing the next one does not clean up
+ * (DESIGN section 5). A vr::StagedOutputs of one file; see there for the staging and its recovery.
  *
- * The temporary name keeps the final extension (".name.tmp-<pid>-<n>.nrrd") so ITK and VTK writers still
- * pick the format from it. Without Commit() the destructor removes the temporary file. A URI name (vr::IsURIName,
- * e.g. 3D Slicer's in-memory "slicer:0x...#node") is no file: it is written directly, for the ImageIO of the host
- * process that owns the scheme.
+ * The staged file keeps the final name (so ITK and VTK writers still pick the format from its extension). Without
+ * Commit() the destructor removes it. A URI name (vr::IsURIName) is written directly.
  * \ingroup VesselReformation
  */
 class AtomicOutput
 {
 public:
-  /** Throws vr::InputError when the folder of \a finalPath does not exist. */
+  /** Throws vr::InputError when the folder of \a finalPath does not exist or cannot be written, or the path is a
+   * folder or another non-regular file. */
   explicit AtomicOutput(std::string finalPath);
-  ~AtomicOutput();
+  ~AtomicOutput() = default;
   AtomicOutput(const AtomicOutput &) = delete;
   AtomicOutput &
   operator=(const AtomicOutput &) = delete;
@@ -30,22 +32,21 @@ public:
   const std::string &
   TemporaryPath() const
   {
-    return m_TemporaryPath;
+    return m_Staged.StagedPath(m_Handle);
   }
   const std::string &
   FinalPath() const
   {
     return m_FinalPath;
   }
-  /** Renames the temporary file onto the final path; throws vr::InputError naming the path on failure. */
+  /** Publishes the file onto the final path; throws vr::InputError naming the path on failure. */
   void
   Commit();
 
 private:
-  std::string m_FinalPath;
-  std::string m_TemporaryPath;
-  bool        m_Committed{ false };
-  bool        m_Direct{ false };
+  std::string   m_FinalPath;
+  StagedOutputs m_Staged;
+  std::size_t   m_Handle{ 0 };
 };
 } // namespace vr
 

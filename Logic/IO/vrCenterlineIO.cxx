@@ -6,6 +6,7 @@
 #include "vrCenterlineFormats.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrInputFileChecks.h"
 
 #include "itkMacro.h"
 
@@ -77,20 +78,13 @@ CheckCenterlineFileName(const std::string & path, const std::string & role)
 itk::CenterlineTree
 ReadCenterlines(const std::string & path, CoordinateSpace space, CenterlineReadReport * report)
 {
-  namespace fs = std::filesystem;
   const CenterlineFormat format = FormatOf(path, "centerline file");
-  std::error_code        error;
-  if (!fs::exists(path, error))
+  detail::CheckInputPath(path, "centerline file");
+  if (detail::InputFileSize(path) > MaximumCenterlineFileBytes)
   {
-    throw InputError("centerline file " + path + ": no such file");
-  }
-  if (fs::is_directory(path, error))
-  {
-    throw InputError("centerline file " + path + ": is a folder, not a file");
-  }
-  if (fs::file_size(path, error) == 0 && !error)
-  {
-    throw InputError("centerline file " + path + ": is empty");
+    throw InputError("centerline file " + path + ": is " + std::to_string(detail::InputFileSize(path)) +
+                     " bytes; centerline files of more than " + std::to_string(MaximumCenterlineFileBytes) +
+                     " bytes are refused");
   }
 
   CenterlineReadReport found;

@@ -2,6 +2,7 @@
 #include "vrCenterlineFormats.h"
 #include "vrText.h"
 #include "vrInputError.h"
+#include "vrInputFileChecks.h"
 
 #include <nlohmann/json.hpp>
 #include <vtkCardinalSpline.h>
@@ -20,6 +21,9 @@ namespace
 {
 using PointType = itk::CenterlineBranch::PointType;
 using Json = nlohmann::json;
+
+/** The deepest nesting of JSON arrays and objects accepted; a 3D Slicer markups file has about 6 levels. */
+constexpr std::size_t MaximumJSONNesting = 64;
 
 /** Spacing of the points the reader puts along an interpolated curve, in mm. */
 constexpr double CurveSampleSpacing = 0.5;
@@ -204,7 +208,14 @@ ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineRea
 {
   report.Format = "3D Slicer markups (.mrk.json)";
   const std::string file = "centerline file " + path;
-  std::ifstream     input(path);
+  // nlohmann::json builds and destroys nested values recursively: measure the nesting before it parses.
+  const std::size_t depth = JSONNestingDepth(path, "centerline file");
+  if (depth > MaximumJSONNesting)
+  {
+    throw InputError(file + ": arrays and objects nest " + std::to_string(depth) + " levels deep; a markups file " +
+                     "needs about 6, and more than " + std::to_string(MaximumJSONNesting) + " are refused");
+  }
+  std::ifstream input(path);
   if (!input)
   {
     throw InputError(file + ": cannot be opened");

@@ -2,6 +2,7 @@
 #include "vrITKMessages.h"
 #include "vrText.h"
 
+#include <iostream>
 #include <mutex>
 #include <sstream>
 #include <vector>
@@ -125,6 +126,46 @@ ScopedSilentITKOutput::ScopedSilentITKOutput()
   OutputWindowMutex().lock();
   m_Previous = itk::OutputWindow::GetInstance();
   itk::OutputWindow::SetInstance(SilentOutputWindow::New());
+}
+
+ScopedConsoleCapture::ScopedConsoleCapture()
+  : m_PreviousError(std::cerr.rdbuf(m_Text.rdbuf()))
+  , m_PreviousOutput(std::cout.rdbuf(m_Text.rdbuf()))
+{
+}
+
+ScopedConsoleCapture::~ScopedConsoleCapture()
+{
+  std::cerr.rdbuf(m_PreviousError);
+  std::cout.rdbuf(m_PreviousOutput);
+}
+
+std::string
+ScopedConsoleCapture::FirstLine() const
+{
+  const std::string text = m_Text.str();
+  const auto        first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos)
+  {
+    return std::string();
+  }
+  return Trim(text.substr(first, text.find('\n', first) - first));
+}
+
+std::string
+ScopedConsoleCapture::FirstLineStartingWith(const std::string & prefix) const
+{
+  std::istringstream lines(m_Text.str());
+  std::string        line;
+  while (std::getline(lines, line))
+  {
+    line = Trim(line);
+    if (line.rfind(prefix, 0) == 0)
+    {
+      return line;
+    }
+  }
+  return std::string();
 }
 
 ScopedSilentITKOutput::~ScopedSilentITKOutput()

@@ -6,6 +6,7 @@
 #include "itkObjectFactory.h"
 #include "itkOutputWindow.h"
 
+#include <sstream>
 #include <string>
 
 /** Turning ITK's error and warning text into the one-line messages vr::InputError carries. Not installed: an
@@ -35,6 +36,32 @@ public:
 
 private:
   itk::OutputWindow::Pointer m_Previous;
+};
+
+/** While alive, what is printed on std::cout and std::cerr is kept instead of shown: MetaIO (MetaImage, the .tre
+ * reader) reports trouble there besides (or instead of) failing, e.g. "data not read completely" for a truncated
+ * file that it otherwise accepts. */
+class ScopedConsoleCapture
+{
+public:
+  ScopedConsoleCapture();
+  ~ScopedConsoleCapture();
+  ScopedConsoleCapture(const ScopedConsoleCapture &) = delete;
+  ScopedConsoleCapture &
+  operator=(const ScopedConsoleCapture &) = delete;
+
+  /** The first line printed (MetaIO repeats itself line by line), trimmed; empty when nothing was printed. */
+  std::string
+  FirstLine() const;
+  /** The first line printed that starts with \a prefix ("Meta": MetaIO's complaints, not ITK's warnings), trimmed;
+   * empty when none. */
+  std::string
+  FirstLineStartingWith(const std::string & prefix) const;
+
+private:
+  std::ostringstream m_Text;
+  std::streambuf *   m_PreviousError;
+  std::streambuf *   m_PreviousOutput;
 };
 } // namespace vr::detail
 

@@ -4,6 +4,7 @@
 #include "vrAtomicOutput.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrInputFileChecks.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
@@ -14,17 +15,25 @@
 #include "itkPNGImageIO.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <sstream>
 
 namespace vr
 {
 namespace
 {
+/** The most pixels a 2D input may declare (2^31): more means a corrupt or hostile header. */
+constexpr std::uintmax_t MaximumImagePixels = std::uintmax_t{ 1 } << 31;
+
 template<typename TImage>
 void
-WriteImageAtomically(const TImage * image, const std::string & path, itk::ImageIOBase * io = nullptr)
+WriteImageAtomically(const TImage *                                   image,
+                     const std::string &                              path,
+                     itk::ImageIOBase *                               io = nullptr,
+                     const std::function<void(const std::string &)> & verify = {})
 {
   if (image == nullptr)
   {
@@ -48,6 +57,10 @@ WriteImageAtomically(const TImage * image, const std::string & path, itk::ImageI
     throw InputError("output " + path +
                      ": could not be written: " + detail::CondenseITKMessage(exception, output.TemporaryPath(), path));
   }
+  if (verify)
+  {
+    verify(output.TemporaryPath());
+  }
   output.Commit();
 }
 
@@ -55,17 +68,14 @@ WriteImageAtomically(const TImage * image, const std::string & path, itk::ImageI
 itk::ImageIOBase::Pointer
 Open2DImage(const std::string & path, const std::string & role)
 {
-  namespace fs = std::filesystem;
   const std::string where = role + " " + path;
-  std::error_code   error;
-  const bool        uri = IsURIName(path); // a name for an ImageIO of the host process goes to ITK as it is
-  if (!uri && !fs::exists(path, error))
+  if (!IsURIName(path))
   {
-    throw InputError(where + ": no such file");
-  }
-  if (!uri && fs::is_directory(path, error))
-  {
-    throw InputError(where + ": is a folder, not an image file");
+    detail::CheckInputPath(path, role);
+    for (const std::string & dataFile : detail::DetachedDataFiles(path))
+    {
+      detail::CheckInputPath(dataFile, where + ": the data file");
+    }
   }
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
@@ -73,14 +83,17 @@ Open2DImage(const std::string & path, const std::string & role)
   {
     throw InputError(where + ": no ITK reader recognises this file (is the header corrupt?)");
   }
-  try
   {
-    io->SetFileName(path);
-    io->ReadImageInformation();
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
+    const detail::ScopedConsoleCapture console;
+    try
+    {
+      io->SetFileName(path);
+      io->ReadImageInformation();
+    }
+    catch (const itk::ExceptionObject & exception)
+    {
+      throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
+    }
   }
   const unsigned int dimensions = io->GetNumberOfDimensions();
   if (!(dimensions == 2 || (dimensions == 3 && io->GetDimensions(2) == 1)))
@@ -91,6 +104,18 @@ Open2DImage(const std::string & path, const std::string & role)
   {
     throw InputError(where + ": the image has " + std::to_string(io->GetNumberOfComponents()) +
                      " components per pixel; it must be scalar");
+  }
+  std::uintmax_t pixels = 1;
+  for (unsigned int d = 0; d < dimensions; ++d)
+  {
+    const auto size = io->GetDimensions(d);
+    if (size == 0 || pixels > MaximumImagePixels / size)
+    {
+      throw InputError(where + ": the image is " + std::to_string(io->GetDimensions(0)) + " x " +
+                       std::to_string(io->GetDimensions(1)) + " pixels; an axis is empty or there are more than " +
+                       std::to_string(MaximumImagePixels) + " in all (is the header corrupt?)");
+    }
+    pixels *= size;
   }
   return io;
 }
@@ -103,14 +128,22 @@ Read2DImage(const std::string & path, const std::string & role)
   auto                      reader = itk::ImageFileReader<TImage>::New();
   reader->SetImageIO(io);
   reader->SetFileName(path);
-  try
   {
-    reader->Update();
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(role + " " + path +
-                     ": the pixel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
+    const detail::ScopedConsoleCapture console; // MetaIO says "data not read completely" there, and carries on
+    try
+    {
+      reader->Update();
+    }
+    catch (const itk::ExceptionObject & exception)
+    {
+      throw InputError(role + " " + path +
+                       ": the pixel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
+    }
+    const std::string metaIO = console.FirstLineStartingWith("Meta"); // not ITK's warnings about valid files
+    if (!metaIO.empty())
+    {
+      throw InputError(role + " " + path + ": the pixel data cannot be read (truncated?): " + metaIO);
+    }
   }
   typename TImage::Pointer image = reader->GetOutput();
   image->DisconnectPipeline();
@@ -215,6 +248,31 @@ WriteWindowedPNG(const DepthImageType * image, double window, double level, cons
   {
     grey[k] = WindowLevelToByte(values[k], window, level);
   }
-  WriteImageAtomically<MaskImageType>(bytes, path, itk::PNGImageIO::New());
+  // ITK's PNG writer ignores a failed fclose, so a full disk can leave a truncated PNG behind a successful write:
+  // read the file back and compare before it is published.
+  const auto verify = [&](const std::string & written)
+  {
+    bool same = false;
+    try
+    {
+      auto reader = itk::ImageFileReader<MaskImageType>::New();
+      reader->SetImageIO(itk::PNGImageIO::New());
+      reader->SetFileName(written);
+      const detail::ScopedConsoleCapture console; // libpng's warnings about the truncation
+      reader->Update();
+      const MaskImageType * back = reader->GetOutput();
+      same = back->GetLargestPossibleRegion().GetSize() == bytes->GetLargestPossibleRegion().GetSize() &&
+             std::equal(grey, grey + count, back->GetBufferPointer());
+    }
+    catch (const itk::ExceptionObject &)
+    {
+      same = false;
+    }
+    if (!same)
+    {
+      throw InputError("PNG output " + path + ": could not be written (the file reads back incomplete: disk full?)");
+    }
+  };
+  WriteImageAtomically<MaskImageType>(bytes, path, itk::PNGImageIO::New(), verify);
 }
 } // namespace vr

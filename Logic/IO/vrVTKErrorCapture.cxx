@@ -58,7 +58,8 @@ public:
   void
   Execute(vtkObject *, unsigned long event, void * callData) override
   {
-    if (event == vtkCommand::ErrorEvent)
+    // A reader's warning ("Error reading ascii data", a short array) leaves its output half-filled: a failure too.
+    if (event == vtkCommand::ErrorEvent || event == vtkCommand::WarningEvent)
     {
       m_Errors.push_back(CleanMessage(static_cast<const char *>(callData)));
     }
@@ -88,12 +89,14 @@ public:
   {
   }
   void
-  DisplayWarningText(const char *) override
+  DisplayWarningText(const char * text) override
   {
+    DisplayErrorText(text);
   }
   void
-  DisplayGenericWarningText(const char *) override
+  DisplayGenericWarningText(const char * text) override
   {
+    DisplayErrorText(text);
   }
   void
   DisplayDebugText(const char *) override

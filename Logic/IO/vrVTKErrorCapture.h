@@ -11,7 +11,10 @@ class vtkObject;
 namespace vr::detail
 {
 /** \class VTKErrorCapture
- * \brief Collects the errors VTK readers and writers report, instead of letting VTK print them.
+ * \brief Collects the errors and warnings VTK readers and writers report, instead of letting VTK print them.
+ *
+ * Warnings count as errors: a reader that warns (a short array, a value it could not parse) has left its output
+ * partly uninitialised, so HasErrors() is true after one.
  *
  * VTK reports file errors through vtkErrorMacro (an ErrorEvent on the object, else text on the global
  * vtkOutputWindow), never through exceptions. While a capture lives, the output window is replaced by a silent

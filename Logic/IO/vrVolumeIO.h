@@ -4,15 +4,31 @@
 
 #include "vrImageTypes.h"
 
+#include "itkImageIOBase.h"
+
+#include <cstdint>
 #include <string>
 
 namespace vr
 {
+/** The most voxels a volume may declare (2^32, 16 GiB as float): more means a corrupt or hostile header. */
+constexpr std::uintmax_t MaximumVolumeVoxels = std::uintmax_t{ 1 } << 32;
+
 /** Reads a scalar volume (LPS, origin/spacing/direction kept) as float: NRRD, NIfTI, MetaImage, or a DICOM
- * series when \a path is a folder (the series with the most files). Throws vr::InputError naming the file and
- * what is wrong (missing, unreadable header, not 3D, not scalar, empty folder). */
+ * series when \a path is a folder (the series with the most files). A URI name (vr::IsURIName, e.g. 3D Slicer's
+ * "slicer:0x...#vtkMRMLScalarVolumeNode1") goes to ITK's reader untouched.
+ * Throws vr::InputError naming the file and what is wrong: missing; a named pipe, device or socket (refused before
+ * anything opens it, also as a detached header's data file); an unreadable header; not 3D (a 4D file says so);
+ * not scalar; more than MaximumVolumeVoxels; a spacing, origin or direction that is not finite; voxel data that
+ * is truncated (also where ITK's MetaImage reader would carry on with what it read); a NaN or infinite voxel
+ * (named by its index); an empty DICOM folder. */
 VolumeImageType::Pointer
 ReadVolume(const std::string & path);
+
+/** Opens a volume file and reads and checks its header as ReadVolume() does, without reading the voxels.
+ * \return the ImageIO, ready to read. Throws vr::InputError as ReadVolume(). */
+itk::ImageIOBase::Pointer
+InspectVolumeFile(const std::string & path);
 
 /** Writes a volume atomically, format from the extension. */
 void

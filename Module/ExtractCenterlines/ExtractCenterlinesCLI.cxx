@@ -107,6 +107,16 @@ RunExtractCenterlines(const vr::CLIArguments & arguments, vr::CLIProgress & prog
   {
     roots += parent == 0 ? 1 : 0;
   }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.SetReturnValue("numberOfBranches", std::to_string(tree.GetNumberOfBranches()));
+  progress.SetReturnValue("numberOfTrees", std::to_string(roots));
+  std::ostringstream number;
+  number << std::fixed << std::setprecision(1) << length;
+  progress.SetReturnValue("centerlineLength", number.str());
+  number.str("");
+  number << std::fixed << std::setprecision(1) << 1e3 * seconds;
+  progress.SetReturnValue("extractionTime", number.str());
+
   std::ostringstream summary;
   summary << "ExtractCenterlines: " << tree.GetNumberOfBranches() << " branches in " << roots
           << (roots == 1 ? " tree" : " trees") << ", " << tree.GetNumberOfPoints() << " points, " << std::fixed
@@ -117,8 +127,7 @@ RunExtractCenterlines(const vr::CLIArguments & arguments, vr::CLIProgress & prog
   {
     summary << (k == 0 ? "" : "; ") << segmentation.Descriptions[k];
   }
-  summary << ") in " << std::setprecision(2)
-          << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s";
+  summary << ") in " << std::setprecision(2) << seconds << " s";
   progress.Print(std::cout, summary.str());
 }
 } // namespace

@@ -221,11 +221,12 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
         });
   staged.CommitAll();
 
-  const auto & size = results.View.GetSize();
-  const auto & times = results.Times;
+  const auto &      size = results.View.GetSize();
+  const auto &      times = results.Times;
+  const std::size_t branches = logic.GetDepthFilter()->GetCenterlineTree().GetNumberOfBranches();
   progress.SetReturnValue("backendUsed", results.RelaxBackendUsed);
   progress.SetReturnValue("imageSize", std::to_string(size[0]) + "," + std::to_string(size[1]));
-  progress.SetReturnValue("numberOfBranches", std::to_string(tree.GetNumberOfBranches()));
+  progress.SetReturnValue("numberOfBranches", std::to_string(branches));
   progress.SetReturnValue("conversionTime", Milliseconds(times.Conversion));
   progress.SetReturnValue("depthTime", Milliseconds(times.Depth));
   progress.SetReturnValue("relaxTime", Milliseconds(times.Relax));
@@ -233,7 +234,6 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   progress.SetReturnValue("surfaceTime", Milliseconds(times.Surface));
 
   std::ostringstream summary;
-  const std::size_t  branches = logic.GetDepthFilter()->GetCenterlineTree().GetNumberOfBranches();
   summary << "VesselReformation: " << branches << " branches (" << source << "), view " << size[0] << " x " << size[1]
           << " pixels of " << results.View.GetSpacing()[0] << " x " << results.View.GetSpacing()[1]
           << " mm; times (ms): " << std::fixed << std::setprecision(1) << "conversion " << 1e3 * times.Conversion

@@ -973,7 +973,7 @@ TEST(BadCenterlineInput, NotATubeFile)
   const std::string message = InputErrorAndPrintedTextOf([&] { vr::ReadCenterlines(path); }, printed);
   EXPECT_EQ(printed, "");
   EXPECT_MESSAGE_HAS(message, path);
-  EXPECT_MESSAGE_HAS(message, "holds no tube");
+  EXPECT_MESSAGE_HAS(message, "not a MetaIO .tre file");
 }
 
 TEST(BadCenterlineOutput, NothingWrittenAndAnExistingFileKept)

@@ -260,7 +260,7 @@ TEST(BadVolumeInput, MissingCorruptTwoDimensionalVectorAndEmptyFolder)
   WriteWithITK(slice.GetPointer(), flat);
   message = InputErrorOf([&] { vr::ReadVolume(flat); });
   EXPECT_MESSAGE_HAS(message, flat);
-  EXPECT_MESSAGE_HAS(message, "2 dimensions; a volume must be 3D");
+  EXPECT_MESSAGE_HAS(message, "is 2D (3 x 3 pixels); a volume must be 3D");
 
   const std::string vectors = folder.File("vectors.nrrd");
   using VectorVolume = itk::Image<itk::Vector<float, 3>, 3>;

@@ -4,7 +4,8 @@
 // and every bad input of the issue: a clear message, exit 1, no output and an existing one kept.
 
 #include "vrCenterlineIO.h"
-#include "vrModuleTestSupport.h"
+#include "vrModuleRuns.h"
+#include "vrTestFiles.h"
 #include "vrTestImages.h"
 #include "vrTestSegmentations.h"
 
@@ -31,13 +32,12 @@ namespace
 {
 namespace fs = std::filesystem;
 using vr::test::LabelMap;
+using vr::test::ModuleRun;
 using vr::test::P;
-using vr::test::ProgramRun;
 
 const std::string Executable = VR_EXTRACT_EXE;
 const std::string Library = VR_EXTRACT_LIB;
 const fs::path    DataFolder = fs::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
-const fs::path    Capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
 
 bool
 Contains(const std::string & text, const std::string & part)
@@ -57,11 +57,11 @@ TestFolder()
   return folder;
 }
 
-ProgramRun
+ModuleRun
 RunModule(std::vector<std::string> arguments)
 {
   arguments.insert(arguments.begin(), Executable);
-  return vr::test::RunProgram(arguments, Capture);
+  return vr::test::RunProgram(arguments);
 }
 
 itk::Vector<double, 3>
@@ -124,7 +124,7 @@ struct XMLParameter
 std::string
 XMLOf()
 {
-  const ProgramRun run = RunModule({ "--xml" });
+  const ModuleRun run = RunModule({ "--xml" });
   EXPECT_EQ(run.ExitCode, 0) << run.Err;
   return run.Out;
 }
@@ -223,29 +223,7 @@ TEST(ExtractCenterlinesXML, IsWellFormedInCTKOrderAndValidatesAgainstCTKsSchema)
   EXPECT_EQ(root->Tag, "point");
   EXPECT_EQ(root->Attributes.at("coordinateSystem"), "ras");
 
-  // The schema itself, through xmllint. Its fileExtensions pattern uses "(?:", which is not XML Schema syntax and
-  // which libxml2 rejects; "(" means the same (../shared/reference/ctk/README.md).
-  if (std::string(VR_XMLLINT_EXECUTABLE).empty())
-  {
-    GTEST_SKIP() << "xmllint not found (Debian package libxml2-utils): the schema check needs it";
-  }
-  const fs::path folder = TestFolder();
-  std::string    schema = vr::test::ReadWholeFile(VR_CTK_SCHEMA);
-  ASSERT_FALSE(schema.empty()) << "cannot read " << VR_CTK_SCHEMA;
-  for (auto at = schema.find("(?:"); at != std::string::npos; at = schema.find("(?:", at))
-  {
-    schema.replace(at, 3, "(");
-  }
-  std::ofstream(folder / "ctk.xsd") << schema;
-  std::ofstream(folder / "ExtractCenterlines.xml") << xml;
-  const ProgramRun lint = vr::test::RunProgram({ VR_XMLLINT_EXECUTABLE,
-                                                 "--noout",
-                                                 "--schema",
-                                                 (folder / "ctk.xsd").string(),
-                                                 (folder / "ExtractCenterlines.xml").string() },
-                                               Capture);
-  EXPECT_EQ(lint.ExitCode, 0) << lint.Err;
-  EXPECT_TRUE(Contains(lint.Err, "validates")) << lint.Err;
+  // Validation against CTK's schema is the ctest ModuleXMLValidatesAgainstCTKSchema.ExtractCenterlines.
 }
 
 TEST(ExtractCenterlinesXML, FlagsAreExactlyTheParsers)
@@ -269,7 +247,7 @@ TEST(ExtractCenterlinesXML, FlagsAreExactlyTheParsers)
   EXPECT_EQ(indices["outputCenterlines"], "1");
 
   // The usage lists them and the three every Slicer module takes.
-  const ProgramRun help = RunModule({ "--help" });
+  const ModuleRun help = RunModule({ "--help" });
   ASSERT_EQ(help.ExitCode, 0) << help.Err;
   std::set<std::string> helpFlags;
   const std::regex      flagAtLineStart("(^|\\n)  --([A-Za-z]+)");
@@ -279,19 +257,19 @@ TEST(ExtractCenterlinesXML, FlagsAreExactlyTheParsers)
     helpFlags.insert((*it)[2]);
   }
   std::set<std::string> expected = flags;
-  expected.insert({ "xml", "help", "processinformationaddress" });
+  expected.insert({ "xml", "help", "processinformationaddress", "returnparameterfile" });
   EXPECT_EQ(helpFlags, expected) << help.Out;
   // Each flag is accepted with a good value (the run then misses its arguments); unknown ones are not.
   for (const auto & [flag, value] : std::map<std::string, std::string>{
          { "labels", "1,2" }, { "root", "1.5,-2,3e1" }, { "minimumBranchLength", "4" } })
   {
-    const ProgramRun run = RunModule({ "--" + flag, value });
+    const ModuleRun run = RunModule({ "--" + flag, value });
     EXPECT_EQ(run.ExitCode, 1);
     EXPECT_TRUE(Contains(run.Err, "missing the first argument")) << flag << ": " << run.Err;
   }
   for (const std::string flag : { "--label", "--Root", "--output", "--bogus" })
   {
-    const ProgramRun run = RunModule({ flag, "1" });
+    const ModuleRun run = RunModule({ flag, "1" });
     EXPECT_EQ(run.ExitCode, 1) << flag;
     EXPECT_TRUE(Contains(run.Err, "unknown flag " + flag)) << flag << ": " << run.Err;
   }
@@ -306,8 +284,8 @@ TEST(ExtractCenterlinesModule, AortaLevelSetInEveryFormatReadsBackAsVMTKsTree)
   const itk::CenterlineTree vmtk = vr::ReadCenterlines((DataFolder / "aorta-centerline.vtp").string());
   for (const std::string extension : { ".vtp", ".vtk", ".mrk.json", ".tre", ".csv" })
   {
-    const fs::path   output = folder / ("aorta" + extension);
-    const ProgramRun run = RunModule({ (DataFolder / "aorta-final-levelset.mha").string(), output.string() });
+    const fs::path  output = folder / ("aorta" + extension);
+    const ModuleRun run = RunModule({ (DataFolder / "aorta-final-levelset.mha").string(), output.string() });
     ASSERT_EQ(run.ExitCode, 0) << run.Err;
     EXPECT_TRUE(Contains(run.Out, "ExtractCenterlines: 3 branches in 1 tree")) << run.Out;
     EXPECT_TRUE(Contains(run.Out, "level set (inside where < 0)")) << run.Out;
@@ -340,6 +318,40 @@ TEST(ExtractCenterlinesModule, AortaLevelSetInEveryFormatReadsBackAsVMTKsTree)
   EXPECT_EQ(vr::test::FolderEntries(folder).size(), 5u) << "a temporary file was left";
 }
 
+TEST(ExtractCenterlinesModule, ReturnsWhatItExtracted)
+{
+  // 3D Slicer's returned values: the counts of the tree written, its length summed from the file read back.
+  const fs::path  folder = TestFolder();
+  const fs::path  output = folder / "aorta.vtp";
+  const fs::path  returned = folder / "returned.txt";
+  const ModuleRun run = RunModule({ (DataFolder / "aorta-final-levelset.mha").string(),
+                                    output.string(),
+                                    "--returnparameterfile",
+                                    returned.string() });
+  ASSERT_EQ(run.ExitCode, 0) << run.Err;
+  const itk::CenterlineTree tree = vr::ReadCenterlines(output.string());
+  double                    length = 0.0;
+  for (const auto & branch : tree.GetBranches())
+  {
+    for (std::size_t k = 1; k < branch.Points.size(); ++k)
+    {
+      length += branch.Points[k - 1].EuclideanDistanceTo(branch.Points[k]);
+    }
+  }
+  std::map<std::string, std::string> values;
+  std::istringstream                 lines(vr::test::ReadTextFile(returned.string()));
+  for (std::string line; std::getline(lines, line);)
+  {
+    const auto equals = line.find(" = ");
+    ASSERT_NE(equals, std::string::npos) << line;
+    values[line.substr(0, equals)] = line.substr(equals + 3);
+  }
+  EXPECT_EQ(values["numberOfBranches"], std::to_string(tree.GetNumberOfBranches()));
+  EXPECT_EQ(values["numberOfTrees"], "1");
+  EXPECT_NEAR(std::stod(values.at("centerlineLength")), length, 0.1);
+  EXPECT_GT(std::stod(values.at("extractionTime")), 0.0);
+}
+
 TEST(ExtractCenterlinesModule, LabelsChooseVesselsAndMasksCombine)
 {
   const fs::path folder = TestFolder();
@@ -347,7 +359,7 @@ TEST(ExtractCenterlinesModule, LabelsChooseVesselsAndMasksCombine)
   WriteTestImage(image.GetPointer(), folder / "labels.nii.gz");
 
   // Every non-zero voxel: two trees (1 + 3 branches).
-  ProgramRun run = RunModule({ (folder / "labels.nii.gz").string(), (folder / "all.csv").string() });
+  ModuleRun run = RunModule({ (folder / "labels.nii.gz").string(), (folder / "all.csv").string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   EXPECT_TRUE(Contains(run.Out, "4 branches in 2 trees")) << run.Out;
   // Label 7: the Y.
@@ -398,7 +410,7 @@ TEST(ExtractCenterlinesModule, RootPointInRASTurnsTheTree)
   tree.AddBranch(tube);
   vr::test::DrawTubes(image, tree);
   WriteTestImage(image.GetPointer(), folder / "tube.nrrd");
-  ProgramRun run = RunModule({ (folder / "tube.nrrd").string(), (folder / "default.csv").string() });
+  ModuleRun run = RunModule({ (folder / "tube.nrrd").string(), (folder / "default.csv").string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   EXPECT_GT(vr::ReadCenterlines((folder / "default.csv").string()).GetBranches()[0].Points.front()[2], 45.0);
   // The narrow end, LPS (15, 15, 4), is RAS (-15, -15, 4).
@@ -417,7 +429,7 @@ TEST(ExtractCenterlinesModule, ReportsProgressAndTheLibraryWritesWhatTheExecutab
 {
   const fs::path    folder = TestFolder();
   const std::string segmentation = (DataFolder / "aorta-final-levelset.mha").string();
-  const ProgramRun  executable = RunModule({ segmentation, (folder / "exe.vtp").string() });
+  const ModuleRun   executable = RunModule({ segmentation, (folder / "exe.vtp").string() });
   ASSERT_EQ(executable.ExitCode, 0) << executable.Err;
   EXPECT_TRUE(Contains(executable.Out, "<filter-name>ExtractCenterlines</filter-name>"));
   std::vector<double> fractions;
@@ -433,10 +445,11 @@ TEST(ExtractCenterlinesModule, ReportsProgressAndTheLibraryWritesWhatTheExecutab
   EXPECT_LT(executable.Out.find("<filter-start>"), executable.Out.find("<filter-progress>"));
   EXPECT_GT(executable.Out.find("<filter-end>"), executable.Out.rfind("<filter-progress>"));
 
-  const ProgramRun library =
-    vr::test::RunEntryPoint(Library, { "ExtractCenterlines", segmentation, (folder / "lib.vtp").string() }, Capture);
+  const ModuleRun library =
+    vr::test::RunEntryPointInProcess(Library, { "ExtractCenterlines", segmentation, (folder / "lib.vtp").string() });
   ASSERT_EQ(library.ExitCode, 0) << library.Err;
-  EXPECT_EQ(vr::test::ReadWholeFile(folder / "exe.vtp"), vr::test::ReadWholeFile(folder / "lib.vtp"));
+  EXPECT_EQ(vr::test::ReadTextFile((folder / "exe.vtp").string()),
+            vr::test::ReadTextFile((folder / "lib.vtp").string()));
   const char * xml = static_cast<const char *>(vr::test::LibrarySymbol(Library, "XMLModuleDescription"));
   ASSERT_NE(xml, nullptr);
   EXPECT_EQ(std::string(xml), XMLOf());
@@ -460,8 +473,8 @@ protected:
   ExpectRejected(std::vector<std::string> arguments, const std::vector<std::string> & mentions)
   {
     arguments.push_back((m_Folder / "out.vtp").string());
-    const auto       before = vr::test::FolderEntries(m_Folder);
-    const ProgramRun run = RunModule(arguments);
+    const auto      before = vr::test::FolderEntries(m_Folder);
+    const ModuleRun run = RunModule(arguments);
     EXPECT_FALSE(run.Crashed);
     EXPECT_EQ(run.ExitCode, 1) << run.Err;
     EXPECT_TRUE(Contains(run.Err, "ExtractCenterlines: error: ")) << run.Err;
@@ -471,7 +484,7 @@ protected:
     }
     std::cout << "  " << run.Err;
     EXPECT_EQ(vr::test::FolderEntries(m_Folder), before) << "a file appeared or vanished";
-    EXPECT_EQ(vr::test::ReadWholeFile(m_Folder / "out.vtp"), "an earlier result that must survive");
+    EXPECT_EQ(vr::test::ReadTextFile((m_Folder / "out.vtp").string()), "an earlier result that must survive");
   }
 
   fs::path m_Folder;
@@ -531,7 +544,7 @@ TEST_F(ExtractCenterlinesBadInput, OutputsAreCheckedBeforeTheWork)
 {
   const std::string segmentation = (DataFolder / "aorta-final-levelset.mha").string();
   const auto        before = vr::test::FolderEntries(m_Folder);
-  ProgramRun        run = RunModule({ segmentation, (m_Folder / "tree.stl").string() });
+  ModuleRun         run = RunModule({ segmentation, (m_Folder / "tree.stl").string() });
   EXPECT_EQ(run.ExitCode, 1);
   EXPECT_TRUE(Contains(run.Err, "tree.stl")) << run.Err;
   run = RunModule({ segmentation, (m_Folder / "no-such-folder" / "tree.vtp").string() });

@@ -3,7 +3,8 @@
 // own level set in one run, and the bad input of a segmentation: a clear message, exit 1, nothing written.
 
 #include "vrImageIO.h"
-#include "vrModuleTestSupport.h"
+#include "vrModuleRuns.h"
+#include "vrTestFiles.h"
 #include "vrVolumeIO.h"
 
 #include "itkImageFileWriter.h"
@@ -19,11 +20,10 @@
 namespace
 {
 namespace fs = std::filesystem;
-using vr::test::ProgramRun;
+using vr::test::ModuleRun;
 
 const std::string Executable = VR_REFORMATION_EXE;
 const fs::path    DataFolder = fs::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
-const fs::path    Capture = fs::path(VR_TEST_OUTPUT_DIR) / ".capture";
 
 bool
 Contains(const std::string & text, const std::string & part)
@@ -42,11 +42,11 @@ TestFolder()
   return folder;
 }
 
-ProgramRun
+ModuleRun
 RunModule(std::vector<std::string> arguments)
 {
   arguments.insert(arguments.begin(), Executable);
-  return vr::test::RunProgram(arguments, Capture);
+  return vr::test::RunProgram(arguments);
 }
 
 std::string
@@ -70,19 +70,19 @@ Median(std::vector<double> values)
 
 TEST(VesselReformationSegmentation, AortaReformedAlongItsOwnLevelSetsCenterlinesShowsLumen)
 {
-  const fs::path   folder = TestFolder();
-  const ProgramRun run = RunModule({ "--up",
-                                     "auto",
-                                     "--backend",
-                                     "cpu",
-                                     "--segmentation",
-                                     LevelSet(),
-                                     "--outputMask",
-                                     (folder / "mask.nrrd").string(),
-                                     "--outputPNG",
-                                     (folder / "cpr.png").string(),
-                                     Volume(),
-                                     (folder / "cpr.nrrd").string() });
+  const fs::path  folder = TestFolder();
+  const ModuleRun run = RunModule({ "--up",
+                                    "auto",
+                                    "--backend",
+                                    "cpu",
+                                    "--segmentation",
+                                    LevelSet(),
+                                    "--outputMask",
+                                    (folder / "mask.nrrd").string(),
+                                    "--outputPNG",
+                                    (folder / "cpr.png").string(),
+                                    Volume(),
+                                    (folder / "cpr.nrrd").string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   EXPECT_TRUE(Contains(run.Out, "VesselReformation: 3 branches (extracted from aorta-final-levelset.mha: level set"))
     << run.Out;
@@ -136,16 +136,16 @@ TEST(VesselReformationSegmentation, SegmentationOnAnotherGridWarnsAndStillShowsL
     coarse->GetBufferPointer()[k] = inside ? levelSet->GetPixel(nearest) : 1.0f;
   }
   vr::WriteVolume(coarse, (folder / "coarse-levelset.nrrd").string());
-  const ProgramRun run = RunModule({ "--up",
-                                     "auto",
-                                     "--backend",
-                                     "cpu",
-                                     "--segmentation",
-                                     (folder / "coarse-levelset.nrrd").string(),
-                                     "--outputMask",
-                                     (folder / "mask.nrrd").string(),
-                                     Volume(),
-                                     (folder / "cpr.nrrd").string() });
+  const ModuleRun run = RunModule({ "--up",
+                                    "auto",
+                                    "--backend",
+                                    "cpu",
+                                    "--segmentation",
+                                    (folder / "coarse-levelset.nrrd").string(),
+                                    "--outputMask",
+                                    (folder / "mask.nrrd").string(),
+                                    Volume(),
+                                    (folder / "cpr.nrrd").string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   EXPECT_TRUE(Contains(run.Err, "warning: segmentation \"coarse-levelset.nrrd\" lies on another grid")) << run.Err;
   const auto          cpr = vr::ReadDepthImage((folder / "cpr.nrrd").string());
@@ -180,8 +180,8 @@ protected:
   {
     arguments.insert(arguments.begin(), { "--backend", "cpu", "--outputDepth", (m_Folder / "depth.nrrd").string() });
     arguments.push_back((m_Folder / "cpr.nrrd").string());
-    const auto       before = vr::test::FolderEntries(m_Folder);
-    const ProgramRun run = RunModule(arguments);
+    const auto      before = vr::test::FolderEntries(m_Folder);
+    const ModuleRun run = RunModule(arguments);
     EXPECT_FALSE(run.Crashed);
     EXPECT_EQ(run.ExitCode, 1) << run.Err;
     EXPECT_TRUE(Contains(run.Err, "VesselReformation: error: ")) << run.Err;
@@ -191,7 +191,7 @@ protected:
     }
     std::cout << "  " << run.Err;
     EXPECT_EQ(vr::test::FolderEntries(m_Folder), before) << "a file appeared or vanished";
-    EXPECT_EQ(vr::test::ReadWholeFile(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
+    EXPECT_EQ(vr::test::ReadTextFile((m_Folder / "cpr.nrrd").string()), "an earlier result that must survive");
   }
 
   template<typename TImage>

@@ -31,7 +31,8 @@ function(configure_and_build project)
   # Only the installed package may be found: not the build tree, and not a package registry.
   run_step("configure ${project}" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/${project} -B ${WORK_DIR}/${project} -G ${GENERATOR}
     -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=${C_COMPILER} -DCMAKE_CXX_COMPILER=${CXX_COMPILER}
-    -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DITK_DIR=${ITK_DIR} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF ${ARGN})
+    -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DITK_DIR=${ITK_DIR} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+    "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CXX_FLAGS}" ${ARGN})
   run_step("build ${project}" ${CMAKE_COMMAND} --build ${WORK_DIR}/${project} -j 1)
 endfunction()
 

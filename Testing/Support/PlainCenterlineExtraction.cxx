@@ -148,7 +148,9 @@ private:
     queue.emplace(0.0, source);
     while (!queue.empty())
     {
-      const auto [cost, voxel] = queue.top();
+      // Plain variables, not a structured binding: the lambda below captures them (C++20 for bindings; clang 14).
+      const double cost = queue.top().first;
+      const auto   voxel = queue.top().second;
       queue.pop();
       if (cost > m_Cost[voxel])
       {

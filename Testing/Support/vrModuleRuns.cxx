@@ -3,8 +3,8 @@
 
 #include <dlfcn.h>
 #include <fcntl.h>
-#include <signal.h>
-#include <spawn.h>
+#include <csignal>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -65,6 +65,15 @@ using EntryPoint = int (*)(int, char **);
 ModuleRun
 RunProgram(const std::vector<std::string> & arguments, double limitSeconds, const std::string & workingDirectory)
 {
+  RunLimits limits;
+  limits.KillAfterSeconds = limitSeconds;
+  limits.WorkingDirectory = workingDirectory;
+  return RunProgram(arguments, limits);
+}
+
+ModuleRun
+RunProgram(const std::vector<std::string> & arguments, const RunLimits & limits)
+{
   ModuleRun           result;
   const CaptureFiles  capture;
   std::vector<char *> argv;
@@ -73,40 +82,57 @@ RunProgram(const std::vector<std::string> & arguments, double limitSeconds, cons
     argv.push_back(const_cast<char *>(argument.c_str()));
   }
   argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, capture.Out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, capture.Err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (!workingDirectory.empty())
+  const auto  start = std::chrono::steady_clock::now();
+  const int   outFile = ::open(capture.Out.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int   errFile = ::open(capture.Err.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const pid_t pid = ::fork();
+  if (pid == 0)
   {
-    posix_spawn_file_actions_addchdir_np(&actions, workingDirectory.c_str()); // glibc 2.29 and later
+    // Only async-signal-safe calls between fork and exec.
+    ::dup2(outFile, STDOUT_FILENO);
+    ::dup2(errFile, STDERR_FILENO);
+    if (limits.FileSizeLimit > 0)
+    {
+      ::signal(SIGXFSZ, SIG_IGN);
+      const struct rlimit limit = { static_cast<rlim_t>(limits.FileSizeLimit),
+                                    static_cast<rlim_t>(limits.FileSizeLimit) };
+      ::setrlimit(RLIMIT_FSIZE, &limit);
+    }
+    if (!limits.WorkingDirectory.empty() && ::chdir(limits.WorkingDirectory.c_str()) != 0)
+    {
+      ::_exit(126);
+    }
+    ::execve(argv[0], argv.data(), environ);
+    ::_exit(127);
   }
-  pid_t     pid = 0;
-  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0)
+  ::close(outFile);
+  ::close(errFile);
+  if (pid < 0)
   {
     result.Err = "could not start " + arguments.at(0);
     return result;
   }
-  const auto start = std::chrono::steady_clock::now();
-  int        status = 0;
-  while (true)
+  int status = 0;
+  if (limits.KillAfterSeconds > 0.0)
   {
-    const pid_t done = ::waitpid(pid, &status, limitSeconds > 0.0 ? WNOHANG : 0);
-    if (done == pid)
+    const auto deadline = start + std::chrono::duration<double>(limits.KillAfterSeconds);
+    while (::waitpid(pid, &status, WNOHANG) == 0)
     {
-      break;
+      if (std::chrono::steady_clock::now() >= deadline)
+      {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+        result.TimedOut = true;
+        break;
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > limitSeconds)
-    {
-      result.TimedOut = true;
-      ::kill(pid, SIGKILL);
-      ::waitpid(pid, &status, 0);
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
+  else
+  {
+    ::waitpid(pid, &status, 0);
+  }
+  result.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   result.Crashed = !result.TimedOut && WIFSIGNALED(status);
   result.ExitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.Out = ReadAll(capture.Out);

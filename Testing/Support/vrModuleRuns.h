@@ -15,11 +15,28 @@ struct ModuleRun
   bool Crashed{ false };
   /** It was still running at the time limit (and was killed, for a program). */
   bool        TimedOut{ false };
+  double      Seconds{ 0.0 };
   std::string Out;
   std::string Err;
 };
 
-/** Runs a program, \a arguments[0] its path, with stdout and stderr captured.
+/** How RunProgram runs a program besides its arguments. */
+struct RunLimits
+{
+  /** Kill it with SIGKILL after this many seconds and report TimedOut (0: wait as long as it runs). */
+  double KillAfterSeconds{ 0.0 };
+  /** RLIMIT_FSIZE in bytes (0: none): writes past it fail with EFBIG, as on a full disk; SIGXFSZ is ignored. */
+  long long FileSizeLimit{ 0 };
+  /** Where it runs ("" = here). */
+  std::string WorkingDirectory;
+};
+
+/** Runs a program, \a arguments[0] its path, with stdout and stderr captured through files in a folder of their own
+ * (under the system's temporary folder), so that tests can check which files appear beside the outputs. */
+ModuleRun
+RunProgram(const std::vector<std::string> & arguments, const RunLimits & limits);
+
+/** RunProgram with a time limit and a working directory only.
  * \param arguments the command line.
  * \param limitSeconds kill it after this long and report TimedOut (0: wait as long as it runs).
  * \param workingDirectory where it runs ("" = here). */

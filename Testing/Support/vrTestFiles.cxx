@@ -59,6 +59,17 @@ WriteTextFile(const std::string & path, const std::string & text)
   }
 }
 
+std::set<std::string>
+FolderEntries(const std::filesystem::path & folder)
+{
+  std::set<std::string> names;
+  for (const auto & entry : std::filesystem::directory_iterator(folder))
+  {
+    names.insert(entry.path().filename().string());
+  }
+  return names;
+}
+
 std::string
 ReadTextFile(const std::string & path)
 {

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ void
 WriteTextFile(const std::string & path, const std::string & text);
 std::string
 ReadTextFile(const std::string & path);
+/** The names of the entries of \a folder (hidden ones included). */
+std::set<std::string>
+FolderEntries(const std::filesystem::path & folder);
 
 /** Runs \a action, expects vr::InputError, and returns its message (printed, for reading in the test log); any
  * other outcome is a test failure and returns "". */

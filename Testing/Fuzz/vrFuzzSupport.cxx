@@ -1,0 +1,53 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrFuzzSupport.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace vr::fuzz
+{
+namespace
+{
+class InputFolder
+{
+public:
+  InputFolder()
+  {
+    const char * base = std::getenv("TMPDIR");
+    m_Path = std::filesystem::path(base != nullptr && *base != '\0' ? base : "/tmp") /
+             ("vr-fuzz-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(m_Path);
+  }
+  ~InputFolder()
+  {
+    std::error_code ignored;
+    std::filesystem::remove_all(m_Path, ignored);
+  }
+  InputFolder(const InputFolder &) = delete;
+  InputFolder &
+  operator=(const InputFolder &) = delete;
+
+  const std::filesystem::path &
+  Path() const
+  {
+    return m_Path;
+  }
+
+private:
+  std::filesystem::path m_Path;
+};
+} // namespace
+
+std::string
+WriteInput(const std::uint8_t * data, std::size_t size, const std::string & extension)
+{
+  static const InputFolder folder;
+  const std::string        path = (folder.Path() / ("input" + extension)).string();
+  std::ofstream            output(path, std::ios::binary | std::ios::trunc);
+  output.write(reinterpret_cast<const char *>(data), static_cast<std::streamsize>(size));
+  output.close();
+  return path;
+}
+} // namespace vr::fuzz
