@@ -172,11 +172,12 @@ ReformationController::GetLatestResult() const
 }
 
 void
-ReformationController::SetSurfaceWaitsForDisplay(bool wait)
+ReformationController::SetSurfaceWaitsForDisplay(bool wait, double maximumSeconds)
 {
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
     m_SurfaceWaitsForDisplay = wait;
+    m_SurfaceWaitSeconds = std::max(0.0, maximumSeconds);
   }
   m_Wake.notify_all();
 }
@@ -294,7 +295,7 @@ ReformationController::RunJob(const Job & job)
     if (m_SurfaceWaitsForDisplay)
     {
       m_Wake.wait_for(lock,
-                      std::chrono::duration<double>(SurfaceDisplayWaitSeconds),
+                      std::chrono::duration<double>(m_SurfaceWaitSeconds),
                       [&] { return superseded() || !m_SurfaceWaitsForDisplay || m_ShownId >= job.Id; });
     }
     if (superseded())

@@ -112,8 +112,8 @@ struct RequestStatistics
  * Each request runs in two steps: the images (depth, relaxation, both CPRs) with the logic's cut surface off, shown
  * at once with a preview surface; then, for Final requests not yet superseded, the cut surface alone (the logic reruns
  * only that stage), shown as a second result of the same request. With SetSurfaceWaitsForDisplay(true), the cut
- * surface waits until ImageShown() says the images are on screen (or SurfaceDisplayWaitSeconds pass), so that it does
- * not compete with the drawing of the images for the processor.
+ * surface waits until ImageShown() says the images are on screen (or a time limit passes), so that it does not
+ * compete with the drawing of the images for the processor.
  *
  * Inputs are loaded on the worker thread as well (files, phantoms): a loader that throws vr::InputError leaves the
  * inputs in use as they were and reports its message through inputsFailed().
@@ -160,14 +160,13 @@ public:
   std::shared_ptr<const ReformationResult>
   GetLatestResult() const;
 
-  /** Whether a Final request's cut surface waits for ImageShown() of its images (default false: it follows at once). */
+  /** Whether a Final request's cut surface waits for ImageShown() of its images (default false: it follows at once),
+   * and for at most \a maximumSeconds (then it is built anyway, e.g. when no view is on screen). */
   void
-  SetSurfaceWaitsForDisplay(bool wait);
+  SetSurfaceWaitsForDisplay(bool wait, double maximumSeconds = 1.0);
   /** Says that the images of request \a requestId (or a later one) are on screen. Any thread. */
   void
   ImageShown(std::uint64_t requestId);
-  /** How long a cut surface waits for ImageShown() at most, in seconds. */
-  static constexpr double SurfaceDisplayWaitSeconds = 1.0;
   /** The least time between two progressChanged() signals, in seconds (the first and the last always come). */
   static constexpr double ProgressIntervalSeconds = 0.1;
 
@@ -242,6 +241,7 @@ private:
   StageCounts             m_Counts;
   RequestStatistics       m_Statistics;
   bool                    m_SurfaceWaitsForDisplay{ false };
+  double                  m_SurfaceWaitSeconds{ 1.0 };
   std::uint64_t           m_ShownId{ 0 };
 
   // GUI-thread state.

@@ -518,6 +518,53 @@ TEST_F(WidgetsTest, EveryControlOfThePanelHasATooltip)
   EXPECT_GE(controls, 30);
 }
 
+/** A controller alone on the small phantom, keeping every result it delivers. */
+struct ControllerRun
+{
+  ReformationController                                 Controller;
+  std::vector<std::shared_ptr<const ReformationResult>> Results;
+
+  ControllerRun()
+  {
+    QObject::connect(&Controller,
+                     &ReformationController::resultReady,
+                     &Controller,
+                     [this](std::shared_ptr<const ReformationResult> result) { Results.push_back(result); });
+    Controller.LoadInputs([] { return SmallPhantomInputs(); }, QStringLiteral("the small phantom"));
+  }
+};
+
+TEST(ReformationControllerSurface, AFinalRequestsCutSurfaceWaitsUntilItsImagesAreShown)
+{
+  ControllerRun run;
+  run.Controller.SetSurfaceWaitsForDisplay(true, 60.0);
+  ASSERT_TRUE(WaitUntil([&] { return run.Controller.GetInputs() != nullptr; }));
+  const std::uint64_t id = run.Controller.Request(TestParameters(StartAngle), RequestKind::Final);
+  ASSERT_TRUE(WaitUntil([&] { return !run.Results.empty(); }));
+  EXPECT_EQ(run.Results.front()->RequestId, id);
+  EXPECT_FALSE(run.Results.front()->HasFullSurface());
+  const unsigned int surfacesBefore = run.Controller.GetStageExecutionCounts().Surface;
+  // Without ImageShown the surface does not come (the small phantom's takes a few milliseconds once started).
+  EXPECT_FALSE(WaitUntil([&] { return run.Results.size() > 1; }, 1.0));
+  EXPECT_EQ(run.Controller.GetStageExecutionCounts().Surface, surfacesBefore);
+  run.Controller.ImageShown(id);
+  ASSERT_TRUE(WaitUntil([&] { return run.Results.size() > 1; }));
+  EXPECT_EQ(run.Results.back()->RequestId, id);
+  EXPECT_TRUE(run.Results.back()->HasFullSurface());
+  EXPECT_EQ(run.Controller.GetStageExecutionCounts().Surface, surfacesBefore + 1);
+}
+
+TEST(ReformationControllerSurface, WithoutADisplayTheCutSurfaceComesAfterTheTimeLimit)
+{
+  ControllerRun run;
+  run.Controller.SetSurfaceWaitsForDisplay(true, 0.2);
+  ASSERT_TRUE(WaitUntil([&] { return run.Controller.GetInputs() != nullptr; }));
+  const std::uint64_t id = run.Controller.Request(TestParameters(StartAngle), RequestKind::Final);
+  ASSERT_TRUE(WaitUntil([&] { return run.Results.size() > 1; }));
+  EXPECT_EQ(run.Results.back()->RequestId, id);
+  EXPECT_TRUE(run.Results.back()->HasFullSurface());
+}
+
 TEST(WidgetsAbout, TheAboutTextCitesThePaper)
 {
   const std::string about = ViewerWindow::AboutText().toStdString();
