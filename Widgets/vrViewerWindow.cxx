@@ -20,6 +20,7 @@
 #include <QProgressBar>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
@@ -162,6 +163,7 @@ ViewerWindow::ConnectParts()
           [this]
           {
             m_DragStartAngle = m_Panel->GetAngle();
+            m_Turning = true;
             m_ThreeDView->SetInteracting(true);
           });
   connect(m_CPRView,
@@ -169,11 +171,15 @@ ViewerWindow::ConnectParts()
           this,
           [this](double degrees, bool finished)
           {
+            const double angle = WrapAngle(m_DragStartAngle + degrees);
             if (finished)
             {
+              m_Turning = false;
               m_ThreeDView->SetInteracting(false);
+              m_Panel->SetAngle(angle, RequestKind::Final);
+              return;
             }
-            m_Panel->SetAngle(m_DragStartAngle + degrees, finished ? RequestKind::Final : RequestKind::Interactive);
+            RequestTurn(angle);
           });
   connect(m_CPRView,
           &CPRView::windowLevelChanged,
@@ -350,6 +356,25 @@ ViewerWindow::RequestReformation(RequestKind kind)
 }
 
 void
+ViewerWindow::RequestTurn(double angle)
+{
+  ReformationParameters parameters;
+  try
+  {
+    parameters = m_Panel->GetParameters();
+  }
+  catch (const InputError &)
+  {
+    return; // the panel marks its invalid parameter; the release's Final request reports it
+  }
+  parameters.AngleInDegrees = angle;
+  if (m_Controller->GetInputs())
+  {
+    m_Controller->Request(parameters, RequestKind::Interactive);
+  }
+}
+
+void
 ViewerWindow::ApplyDisplay()
 {
   const double window = m_Panel->GetWindowSpinBox()->value();
@@ -375,6 +400,12 @@ ViewerWindow::ShowResult(const std::shared_ptr<const ReformationResult> & result
   {
     m_Shown = result;
     m_ShownSurface.reset();
+    if (m_Turning && result->Kind == RequestKind::Interactive)
+    {
+      // The panel follows the drag at the pace of the images, without asking for another reformation.
+      const QSignalBlocker quiet(m_Panel);
+      m_Panel->SetAngle(result->Parameters.AngleInDegrees, RequestKind::Interactive);
+    }
     m_CPRView->SetResult(result);
     m_ThreeDView->SetResult(result);
     if (m_FullRangeOnNextResult)

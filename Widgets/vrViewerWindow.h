@@ -56,6 +56,10 @@ public:
   /** Sends the panel's parameters to the logic. */
   void
   RequestReformation(RequestKind kind);
+  /** Sends the panel's parameters at \a angle (degrees) to the logic as a step of a drag, leaving the panel as it is.
+   */
+  void
+  RequestTurn(double angle);
   /** Writes the outputs on screen into \a folder (WriteOutputs); errors go to the error handler or a dialog.
    * \return whether they were written. */
   bool
@@ -138,7 +142,11 @@ private:
   ErrorHandler            m_ErrorHandler;
   QString                 m_LastError;
   double                  m_DragStartAngle{ 0.0 };
-  bool                    m_FullRangeOnNextResult{ false };
+  /** While a left-drag in the CPR view turns the view, its steps go to the controller directly and the panel shows
+   * the angle of each image as it is shown: a change of the panel repaints the window, which Qt composes with its
+   * OpenGL views, and at the mouse's 60 Hz those repaints took the processor the logic needs. */
+  bool m_Turning{ false };
+  bool m_FullRangeOnNextResult{ false };
   /** The images on screen, and the full cut surface of the same request once it came. */
   std::shared_ptr<const ReformationResult> m_Shown;
   std::shared_ptr<const ReformationResult> m_ShownSurface;

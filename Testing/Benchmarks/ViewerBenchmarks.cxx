@@ -14,7 +14,8 @@
 //                      images shown per second, and for each shown image the time from the mouse event that asked for
 //                      its angle to its frame (latency), with the logic's time of those updates.
 //   Logic_AngleChange  the logic alone (no window) for the same changes: depth, relaxation, both CPRs.
-//   ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
+//   Window_Repaint     one synchronous repaint of the whole window (a spin box's or the progress bar's change costs
+//   it). ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
 //                      preview surface (every 4th pixel) drawn while dragging.
 // Repetitions are single changes (or single drags); median and p95 are computed over them.
 #include "vrReformationInputs.h"
@@ -373,6 +374,21 @@ ThreeDView_Render(benchmark::State & state)
   viewer.Settle();
 }
 
+/** A repaint of the whole window (what a changed spin box or progress bar costs: Qt composes the window with its two
+ * OpenGL views through OpenGL, here Mesa's software one), synchronous. */
+void
+Window_Repaint(benchmark::State & state)
+{
+  Viewer & viewer = Viewer::Instance();
+  viewer.Settle();
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    const auto start = Clock::now();
+    viewer.Window().repaint();
+    state.SetIterationTime(Seconds(start, Clock::now()));
+  }
+}
+
 constexpr int Repetitions = 30;
 
 BENCHMARK(AngleChange)
@@ -394,6 +410,13 @@ BENCHMARK(Drag)
   ->Repetitions(3)
   ->UseManualTime()
   ->Unit(benchmark::kMillisecond)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(Window_Repaint)
+  ->Iterations(1)
+  ->Repetitions(Repetitions)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
   ->ReportAggregatesOnly(true);
 BENCHMARK(ThreeDView_Render)
   ->Arg(1)

@@ -302,6 +302,8 @@ TEST_F(WidgetsTest, AHorizontalDragOfNPixelsTurnsTheViewByTheDocumentedAmount)
   EXPECT_FALSE(Window().GetThreeDView()->IsShowingFullSurface());
   const auto during = Window().GetCPRView()->GetResult();
   EXPECT_EQ(during->Kind, RequestKind::Interactive);
+  // The panel follows the drag at the pace of the images shown.
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngle(), during->Outputs.View.GetAngleInDegrees());
   SendMouse(target, QEvent::MouseButtonRelease, start + QPointF(N, 28.0), Qt::LeftButton, Qt::NoButton);
   ASSERT_TRUE(WaitUntilSettled(Window()));
 
