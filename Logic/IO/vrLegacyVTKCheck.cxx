@@ -373,7 +373,16 @@ CheckLegacyVTKPolyData(const std::string & path)
   {
     scanner.Fail("the first line is not \"# vtk DataFile Version x.y\"");
   }
-  const bool fiveOrLater = version.size() > 23 && version[23] >= '5';
+  // The version VTK's legacy writers write: 1.0 to 5.1. VTK 9.1's reader crashes on a later major version
+  // (fuzzing: "Version 51" made it read past its own stream).
+  const std::string number = Trim(version.substr(23));
+  const bool        wellFormed = number.size() >= 3 && number[0] >= '1' && number[0] <= '5' && number[1] == '.' &&
+                          number.find_first_not_of("0123456789", 2) == std::string::npos;
+  if (!wellFormed)
+  {
+    scanner.Fail("the file version \"" + number.substr(0, 20) + "\" is not one VTK writes (1.0 to 5.1)");
+  }
+  const bool fiveOrLater = number[0] == '5';
   if (scanner.Line().size() > 256)
   {
     scanner.Fail("the header line is longer than 256 characters");

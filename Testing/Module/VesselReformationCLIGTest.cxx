@@ -1297,6 +1297,11 @@ TEST_F(BadInputTest, LegacyVTKWithMiscountedPointsOrRadii)
                                      header + "POINTS 3 float\n0 0 0 0 0 10 0 0 20\nLINES 1 4\n3 0 1 2\n" +
                                        "POINT_DATA 3\nSCALARS Radius float 1\nLOOKUP_TABLE default\n2.0\n");
   ExpectRejected({ Volume(), fewRadii }, { "few-radii.vtk" });
+  // A version no VTK writer writes: VTK 9.1's reader read past its stream on "51" (a fuzzer's find).
+  const std::string laterVersion = Write("version-51.vtk",
+                                         "# vtk DataFile Version 51\ncenterline\nASCII\nDATASET POLYDATA\n"
+                                         "POINTS 3 float\n0 0 0 0 0 10 0 0 20\nLINES 1 4\n3 0 1 2\n");
+  ExpectRejected({ Volume(), laterVersion }, { "version-51.vtk", "version" });
   // A line of 1000 points in a file of three.
   const std::string longLine =
     Write("long-line.vtk", header + "POINTS 3 float\n0 0 0 0 0 10 0 0 20\nLINES 1 4\n1000 0 1 2\n");
