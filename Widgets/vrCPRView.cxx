@@ -375,9 +375,16 @@ CPRView::UpdatePanes()
   {
     const auto & parameters = m_Result->Parameters;
     // Two short lines, so that the caption fits under the image in the side-by-side comparison too.
-    std::string filtered = "bilateral: w " + TrimNumber(parameters.Relaxation) + ", a " +
-                           TrimNumber(parameters.Anisotropy) + " mm^-2\n" + std::to_string(parameters.Iterations) +
-                           " iterations";
+    // The range kernel as it was given (J in mm, or the paper's a), and the solver: Jacobi with w and N, or the
+    // steady state, where neither applies.
+    const std::string kernel =
+      parameters.Anisotropy
+        ? "a " + TrimNumber(*parameters.Anisotropy) + " mm^-2"
+        : "J " + TrimNumber(parameters.JumpThreshold.value_or(ReformationParameters::DefaultJumpThreshold)) + " mm";
+    std::string filtered = parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
+                             ? "bilateral: " + kernel + "\nsteady solver"
+                             : "bilateral: " + kernel + ", w " + TrimNumber(parameters.Relaxation) + "\n" +
+                                 std::to_string(parameters.Iterations) + " iterations";
     m_Filtered->Caption->SetInput(filtered.c_str());
     m_Unfiltered->Caption->SetInput("unfiltered (w = 0)");
     // Below the image, where no corner annotation sits.

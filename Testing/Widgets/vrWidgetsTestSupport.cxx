@@ -24,6 +24,7 @@ TestParameters(double angle)
   parameters.AngleInDegrees = angle;
   parameters.ImageSize[0] = 128;
   parameters.ImageSize[1] = 256;
+  parameters.Anisotropy = 0.5;
   parameters.Iterations = 200;
   parameters.Backend = RelaxBackend::CPU;
   parameters.Window = 900.0;
