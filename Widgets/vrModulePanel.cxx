@@ -120,7 +120,7 @@ ModulePanel::Connect()
             }
             final();
           });
-  for (QComboBox * combo : { ui.upCombo, ui.modeCombo, ui.interpolationCombo, ui.backendCombo })
+  for (QComboBox * combo : { ui.upCombo, ui.modeCombo, ui.interpolationCombo, ui.backendCombo, ui.solverCombo })
   {
     connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this, final);
   }
@@ -128,11 +128,39 @@ ModulePanel::Connect()
   {
     connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), this, final);
   }
-  for (QDoubleSpinBox * spin : { ui.spacingSpin, ui.relaxationSpin, ui.anisotropySpin })
+  for (QDoubleSpinBox * spin : { ui.spacingSpin, ui.relaxationSpin, ui.jumpThresholdSpin, ui.anisotropySpin })
   {
     connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, final);
   }
   connect(ui.fixLumenCheck, &QCheckBox::toggled, this, final);
+  // The other spin box takes the same kernel (a = 1/J^2), so that switching alone changes nothing in the picture.
+  connect(ui.kernelCombo,
+          QOverload<int>::of(&QComboBox::currentIndexChanged),
+          this,
+          [this, final]
+          {
+            if (!m_Updating)
+            {
+              m_Updating = true;
+              if (UsesJumpThreshold())
+              {
+                if (m_Ui->anisotropySpin->value() > 0.0)
+                {
+                  m_Ui->jumpThresholdSpin->setValue(1.0 / std::sqrt(m_Ui->anisotropySpin->value()));
+                }
+              }
+              else
+              {
+                const double J = m_Ui->jumpThresholdSpin->value();
+                m_Ui->anisotropySpin->setValue(1.0 / (J * J));
+              }
+              m_Updating = false;
+            }
+            EnableFilterControls();
+            final();
+          });
+  connect(
+    ui.solverCombo, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this] { EnableFilterControls(); });
 
   for (QDoubleSpinBox * spin : { ui.windowSpin, ui.levelSpin })
   {
@@ -204,7 +232,15 @@ ModulePanel::GetParameters() const
     ParseInterpolation(ui.interpolationCombo->currentText().toStdString(), ParameterName::Interpolation);
   parameters.FixLumen = ui.fixLumenCheck->isChecked();
   parameters.Relaxation = ui.relaxationSpin->value();
-  parameters.Anisotropy = ui.anisotropySpin->value();
+  if (UsesJumpThreshold())
+  {
+    parameters.JumpThreshold = ui.jumpThresholdSpin->value();
+  }
+  else
+  {
+    parameters.Anisotropy = ui.anisotropySpin->value();
+  }
+  parameters.Solver = ParseRelaxSolver(ui.solverCombo->currentText().toStdString(), ParameterName::Solver);
   parameters.Iterations = ui.iterationsSpin->value();
   parameters.Backend = ParseRelaxBackend(ui.backendCombo->currentText().toStdString(), ParameterName::Backend);
   parameters.Window = ui.windowSpin->value();
@@ -241,7 +277,22 @@ ModulePanel::SetParameters(const ReformationParameters & parameters)
   SelectText(ui.interpolationCombo, ToString(parameters.Interpolation));
   ui.fixLumenCheck->setChecked(parameters.FixLumen);
   ui.relaxationSpin->setValue(parameters.Relaxation);
-  ui.anisotropySpin->setValue(parameters.EffectiveAnisotropy());
+  // The kernel as given; the other spin box shows the same kernel in its own terms.
+  const double anisotropy = parameters.EffectiveAnisotropy();
+  ui.kernelCombo->setCurrentIndex(parameters.Anisotropy ? 1 : 0);
+  ui.anisotropySpin->setValue(anisotropy);
+  if (parameters.Anisotropy)
+  {
+    if (anisotropy > 0.0)
+    {
+      ui.jumpThresholdSpin->setValue(1.0 / std::sqrt(anisotropy));
+    }
+  }
+  else
+  {
+    ui.jumpThresholdSpin->setValue(parameters.JumpThreshold.value_or(ReformationParameters::DefaultJumpThreshold));
+  }
+  SelectText(ui.solverCombo, ToString(parameters.Solver));
   ui.iterationsSpin->setValue(static_cast<int>(parameters.Iterations));
   SelectText(ui.backendCombo, ToString(parameters.Backend));
   if (parameters.Window > 0.0)
@@ -250,6 +301,38 @@ ModulePanel::SetParameters(const ReformationParameters & parameters)
     ui.levelSpin->setValue(parameters.Level);
   }
   m_Updating = false;
+  EnableFilterControls();
+}
+
+bool
+ModulePanel::UsesJumpThreshold() const
+{
+  return m_Ui->kernelCombo->currentIndex() == 0;
+}
+
+void
+ModulePanel::EnableFilterControls()
+{
+  Ui::ModulePanel & ui = *m_Ui;
+  ui.jumpThresholdSpin->setEnabled(UsesJumpThreshold());
+  ui.anisotropySpin->setEnabled(!UsesJumpThreshold());
+  // N and w belong to the Jacobi passes; the steady solver's fixed point depends on neither.
+  const bool jacobi = ui.solverCombo->currentIndex() == 0;
+  ui.iterationsSpin->setEnabled(jacobi);
+  ui.relaxationSpin->setEnabled(jacobi);
+}
+
+void
+ModulePanel::SetRelaxBackendReport(const QString & backend, const QString & reason)
+{
+  m_Ui->backendReasonLabel->setText(backend.isEmpty() ? tr("Backend used: (not run yet)")
+                                                      : tr("Backend used: %1 (%2)").arg(backend, reason));
+}
+
+QString
+ModulePanel::GetRelaxBackendReport() const
+{
+  return m_Ui->backendReasonLabel->text();
 }
 
 void
@@ -404,7 +487,11 @@ ModulePanel::ControlOf(const QString & parameter) const
   if (name == ParameterName::Relaxation)
     return ui.relaxationSpin;
   if (name == ParameterName::Anisotropy)
-    return ui.anisotropySpin;
+    return UsesJumpThreshold() ? ui.jumpThresholdSpin : ui.anisotropySpin;
+  if (name == ParameterName::JumpThreshold)
+    return ui.jumpThresholdSpin;
+  if (name == ParameterName::Solver)
+    return ui.solverCombo;
   if (name == ParameterName::Iterations)
     return ui.iterationsSpin;
   if (name == ParameterName::Backend || name == ParameterName::OpenCLDevice)
@@ -430,7 +517,9 @@ ModulePanel::MarkParameterError(const QString & parameter, const QString & messa
                                                              ui.modeCombo,
                                                              ui.fixLumenCheck,
                                                              ui.relaxationSpin,
+                                                             ui.jumpThresholdSpin,
                                                              ui.anisotropySpin,
+                                                             ui.solverCombo,
                                                              ui.iterationsSpin,
                                                              ui.backendCombo,
                                                              ui.interpolationCombo,

@@ -68,7 +68,8 @@ public:
   explicit ModulePanel(QWidget * parent = nullptr);
   ~ModulePanel() override;
 
-  /** \return the parameters the controls show (view, filter, and the display window and level). */
+  /** \return the parameters the controls show (view, filter, and the display window and level). The range kernel
+   * is the one chosen in the panel: JumpThreshold (mm) or Anisotropy (mm^-2), never both. */
   ReformationParameters
   GetParameters() const;
   /** Shows \a parameters in the controls without emitting anything. */
@@ -106,6 +107,13 @@ public:
   /** Marks the control of \a parameter (a vr::ParameterName) with \a message, or clears every mark when empty. */
   void
   MarkParameterError(const QString & parameter, const QString & message);
+
+  /** Shows which backend relaxed the latest image and why (VesselReformationLogic's RelaxBackendUsed and
+   * RelaxBackendReason) under the backend choice. */
+  void
+  SetRelaxBackendReport(const QString & backend, const QString & reason);
+  QString
+  GetRelaxBackendReport() const;
 
   /** The controls, for hosts and tests. */
   QSlider *
@@ -146,6 +154,12 @@ private:
   Connect();
   QWidget *
   ControlOf(const QString & parameter) const;
+  /** True when the range kernel is given as the jump threshold J (mm), false for the anisotropy a (mm^-2). */
+  bool
+  UsesJumpThreshold() const;
+  /** Enables the kernel's chosen spin box, and N and w for the Jacobi solver only. */
+  void
+  EnableFilterControls();
 
   std::unique_ptr<Ui::ModulePanel> m_Ui;
   bool                             m_Updating{ false };

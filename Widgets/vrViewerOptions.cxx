@@ -50,6 +50,8 @@ FlagOf(const std::string & parameter)
                                                             { ParameterName::FixLumen, "--fixLumen" },
                                                             { ParameterName::Relaxation, "--relaxation" },
                                                             { ParameterName::Anisotropy, "--anisotropy" },
+                                                            { ParameterName::JumpThreshold, "--jumpThreshold" },
+                                                            { ParameterName::Solver, "--solver" },
                                                             { ParameterName::Iterations, "--iterations" },
                                                             { ParameterName::Backend, "--backend" },
                                                             { ParameterName::Interpolation, "--interpolation" },
@@ -70,8 +72,8 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
   std::vector<std::string> files;
   std::string              phantom = options.Phantom;
   std::string              phantomSpacing;
-  std::string angle, up, size, spacing, mode, interpolation, relaxation, anisotropy, iterations, backend, fixLumen,
-    window, level, overlays, compare, windowSize;
+  std::string angle, up, size, spacing, mode, interpolation, relaxation, anisotropy, jumpThreshold, solver, iterations,
+    backend, fixLumen, window, level, overlays, compare, windowSize;
   app
     .add_option("files",
                 files,
@@ -87,7 +89,18 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
   app.add_option("--mode", mode, "depth mode: scanline or nearest (default scanline)");
   app.add_option("--interpolation", interpolation, "linear, nearest or cubic (default linear)");
   app.add_option("--relaxation", relaxation, "relaxation w in [0, 1] (default 1)");
-  app.add_option("--anisotropy", anisotropy, "anisotropy a in mm^-2 (default 0.5)");
+  app.add_option("--jumpThreshold",
+                 jumpThreshold,
+                 "range kernel by its jump threshold J in mm, R(x) = exp(-(x/J)^2): steps well below J are smoothed, "
+                 "steps of several J stay (default 3)");
+  app.add_option("--anisotropy",
+                 anisotropy,
+                 "range kernel as the paper gives it, R(x) = exp(-a x^2), a = 1/J^2 in mm^-2 (the paper: 0.5); "
+                 "instead of --jumpThreshold, not with it");
+  app.add_option("--solver",
+                 solver,
+                 "relax solver: jacobi (the paper's N passes) or steady (the fixed point, independent of N and the "
+                 "pixel count) (default jacobi)");
   app.add_option("--iterations", iterations, "filter iterations N (default 500)");
   app.add_option("--backend", backend, "relax backend: auto, cpu or opencl (default auto)");
   app.add_option("--fixLumen", fixLumen, "fix the lumen: on or off (default on)");
@@ -189,9 +202,23 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
     {
       p.Relaxation = ParseNumber(relaxation, "--relaxation");
     }
+    if (!jumpThreshold.empty() && !anisotropy.empty())
+    {
+      throw InputError("both --jumpThreshold and --anisotropy give the range kernel (a = 1/J^2); give one of them");
+    }
+    if (!jumpThreshold.empty())
+    {
+      p.JumpThreshold = ParseNumber(jumpThreshold, "--jumpThreshold");
+      p.Anisotropy.reset();
+    }
     if (!anisotropy.empty())
     {
       p.Anisotropy = ParseNumber(anisotropy, "--anisotropy");
+      p.JumpThreshold.reset();
+    }
+    if (!solver.empty())
+    {
+      p.Solver = ParseRelaxSolver(solver, "--solver");
     }
     if (!iterations.empty())
     {

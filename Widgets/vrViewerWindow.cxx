@@ -400,6 +400,7 @@ ViewerWindow::ShowResult(const std::shared_ptr<const ReformationResult> & result
   {
     m_Shown = result;
     m_ShownSurface.reset();
+    ShowRelaxBackend(result->Outputs);
     if (m_Turning && result->Kind == RequestKind::Interactive)
     {
       // The panel follows the drag at the pace of the images, without asking for another reformation.
@@ -422,6 +423,23 @@ ViewerWindow::ShowResult(const std::shared_ptr<const ReformationResult> & result
     statusBar()->showMessage(tr("Warning: %1").arg(QString::fromStdString(warning)), 15000);
   }
   ShowTimes();
+}
+
+void
+ViewerWindow::ShowRelaxBackend(const ReformationOutputs & outputs)
+{
+  const QString backend = QString::fromStdString(outputs.RelaxBackendUsed);
+  const QString reason = QString::fromStdString(outputs.RelaxBackendReason);
+  m_Panel->SetRelaxBackendReport(backend, reason);
+  m_Times->setToolTip(tr("The time of each stage of the latest update (the logic's own), and of drawing it. The "
+                         "relaxation ran on %1: %2.")
+                        .arg(backend, reason));
+  if (!reason.isEmpty() && reason != m_ShownBackendReason)
+  {
+    // Said once in the status bar when the choice changes, and always under the backend choice in the panel.
+    m_ShownBackendReason = reason;
+    statusBar()->showMessage(tr("Relaxation on %1: %2").arg(backend, reason), 10000);
+  }
 }
 
 void

@@ -121,6 +121,9 @@ private:
   ShowResult(const std::shared_ptr<const ReformationResult> & result);
   void
   ShowTimes();
+  /** Shows the backend that relaxed and why (the panel, the status bar when it changes, the times' tooltip). */
+  void
+  ShowRelaxBackend(const ReformationOutputs & outputs);
   void
   ShowAbout();
   void
@@ -145,8 +148,9 @@ private:
   /** While a left-drag in the CPR view turns the view, its steps go to the controller directly and the panel shows
    * the angle of each image as it is shown: a change of the panel repaints the window, which Qt composes with its
    * OpenGL views, and at the mouse's 60 Hz those repaints took the processor the logic needs. */
-  bool m_Turning{ false };
-  bool m_FullRangeOnNextResult{ false };
+  bool    m_Turning{ false };
+  bool    m_FullRangeOnNextResult{ false };
+  QString m_ShownBackendReason;
   /** The images on screen, and the full cut surface of the same request once it came. */
   std::shared_ptr<const ReformationResult> m_Shown;
   std::shared_ptr<const ReformationResult> m_ShownSurface;

@@ -15,6 +15,7 @@
 #include "vrVolumeIO.h"
 
 #include <QAbstractButton>
+#include <QAction>
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
@@ -478,6 +479,67 @@ TEST_F(WidgetsTest, AnInvalidParameterIsMarkedAndTheImageStays)
   Window().GetPanel()->GetUi().heightSpin->setValue(256);
   ASSERT_TRUE(WaitUntilSettled(Window()));
   EXPECT_TRUE(Window().GetPanel()->GetUi().widthSpin->styleSheet().isEmpty());
+}
+
+TEST_F(WidgetsTest, TheFilterSectionsRangeKernelAndSolverReachTheLogic)
+{
+  const Ui::ModulePanel & ui = Window().GetPanel()->GetUi();
+  // The tests' view gives the kernel as a = 0.5 mm^-2: the panel shows it so, and the equivalent J beside it.
+  ASSERT_EQ(ui.kernelCombo->currentIndex(), 1);
+  EXPECT_TRUE(ui.anisotropySpin->isEnabled());
+  EXPECT_FALSE(ui.jumpThresholdSpin->isEnabled());
+  EXPECT_NEAR(ui.jumpThresholdSpin->value(), 1.41, 1e-9);
+  const auto atHalf = NodePixels(Window().GetCPRView()->GetResult()->Outputs.CPR);
+
+  // J = 2 mm: the logic gets a = 1/J^2 = 0.25 mm^-2, and no anisotropy of its own.
+  ui.kernelCombo->setCurrentIndex(0);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_TRUE(ui.jumpThresholdSpin->isEnabled());
+  EXPECT_FALSE(ui.anisotropySpin->isEnabled());
+  ui.jumpThresholdSpin->setValue(2.0);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  auto shown = Window().GetCPRView()->GetResult();
+  ASSERT_TRUE(shown->Parameters.JumpThreshold.has_value());
+  EXPECT_EQ(*shown->Parameters.JumpThreshold, 2.0);
+  EXPECT_FALSE(shown->Parameters.Anisotropy.has_value());
+  EXPECT_EQ(shown->Parameters.EffectiveAnisotropy(), 0.25);
+  ReformationParameters quarter = TestParameters(StartAngle);
+  quarter.Anisotropy = 0.25;
+  const ReformationOutputs atQuarter = ReferenceOutputs(SmallPhantomInputs(), quarter);
+  ExpectShows(Window(), atQuarter.CPR);
+  EXPECT_NE(NodePixels(atQuarter.CPR), atHalf) << "a = 0.25 and a = 0.5 differ, so the comparison can fail";
+
+  // Back to the paper's a: the spin box shows the same kernel (0.25), then a = 0.5 goes alone, no jump threshold.
+  ui.kernelCombo->setCurrentIndex(1);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_DOUBLE_EQ(ui.anisotropySpin->value(), 0.25);
+  ui.anisotropySpin->setValue(0.5);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  shown = Window().GetCPRView()->GetResult();
+  ASSERT_TRUE(shown->Parameters.Anisotropy.has_value());
+  EXPECT_EQ(*shown->Parameters.Anisotropy, 0.5);
+  EXPECT_FALSE(shown->Parameters.JumpThreshold.has_value());
+  EXPECT_EQ(NodePixels(shown->Outputs.CPR), atHalf);
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle)).CPR);
+
+  // The steady solver: N and w do not apply, and the image is the logic's steady one.
+  ui.solverCombo->setCurrentText(QStringLiteral("steady"));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_FALSE(ui.iterationsSpin->isEnabled());
+  EXPECT_FALSE(ui.relaxationSpin->isEnabled());
+  shown = Window().GetCPRView()->GetResult();
+  EXPECT_EQ(shown->Parameters.Solver, itk::BilateralDepthRelaxSolver::Steady);
+  ReformationParameters steady = TestParameters(StartAngle);
+  steady.Solver = itk::BilateralDepthRelaxSolver::Steady;
+  const ReformationOutputs steadyReference = ReferenceOutputs(SmallPhantomInputs(), steady);
+  ExpectShows(Window(), steadyReference.CPR);
+  EXPECT_NE(NodePixels(steadyReference.CPR), atHalf) << "200 Jacobi passes are not the fixed point";
+
+  // The backend the logic chose, and why, under the backend choice.
+  ASSERT_FALSE(shown->Outputs.RelaxBackendReason.empty());
+  const std::string report = Window().GetPanel()->GetRelaxBackendReport().toStdString();
+  EXPECT_NE(report.find(shown->Outputs.RelaxBackendReason), std::string::npos) << report;
+  EXPECT_NE(report.find("cpu"), std::string::npos) << report;
 }
 
 TEST_F(WidgetsTest, SavesTheOutputsOnScreenAllOrNothing)
