@@ -70,6 +70,12 @@ ModulePanel::ModulePanel(QWidget * parent)
     label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
   }
   m_Ui->presetCombo->setCurrentText(QString::fromLatin1(CTAPreset.Name));
+  // Every phantom the factory makes (itk::MakeCTAPhantom).
+  m_Ui->phantomCombo->clear();
+  for (const auto & name : PhantomNames())
+  {
+    m_Ui->phantomCombo->addItem(QString::fromStdString(name));
+  }
   Connect();
 }
 
@@ -449,6 +455,17 @@ ModulePanel::GetOutputSelection() const
   selection.OwnerLabels = m_Ui->saveLabelsCheck->isChecked();
   selection.CutSurface = m_Ui->saveSurfaceCheck->isChecked();
   return selection;
+}
+
+void
+ModulePanel::ShowPhantom(const QString & name)
+{
+  const QSignalBlocker block(m_Ui->phantomCombo);
+  const int            index = m_Ui->phantomCombo->findText(name);
+  if (index >= 0)
+  {
+    m_Ui->phantomCombo->setCurrentIndex(index);
+  }
 }
 
 void

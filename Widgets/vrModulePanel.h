@@ -101,6 +101,9 @@ public:
   OutputSelection
   GetOutputSelection() const;
 
+  /** Chooses \a name in the phantom list (the phantom on screen), emitting nothing. */
+  void
+  ShowPhantom(const QString & name);
   /** Shows where the inputs came from. */
   void
   SetInputDescription(const QString & volume, const QString & centerlines);

@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrReformationInputs.h"
 
-#include "itkRunoffPhantomImageSource.h"
+#include "itkCTAPhantom.h"
 #include "vrCenterlineIO.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace vr
 {
@@ -22,7 +23,7 @@ ReformationInputs::BranchName(int id) const
 std::vector<std::string>
 PhantomNames()
 {
-  return { "runoff" };
+  return itk::GetCTAPhantomNames();
 }
 
 ReformationInputs
@@ -34,7 +35,12 @@ MakePhantomInputs(const std::string & name, double spacing)
     message << "phantom spacing = " << spacing << " mm is invalid: it must be finite and > 0";
     throw InputError(message.str());
   }
-  if (name != "runoff")
+  itk::CTAPhantomKind kind;
+  try
+  {
+    kind = itk::ParseCTAPhantomKind(name);
+  }
+  catch (const std::invalid_argument &)
   {
     std::string known;
     for (const auto & phantom : PhantomNames())
@@ -43,28 +49,28 @@ MakePhantomInputs(const std::string & name, double spacing)
     }
     throw InputError("phantom \"" + name + "\" is unknown; the built-in phantoms are: " + known);
   }
-  auto phantom = itk::RunoffPhantomImageSource::New();
-  phantom->SetSpacing(spacing);
+  itk::CTAPhantom phantom = itk::MakeCTAPhantom(kind, spacing);
   try
   {
-    phantom->Update();
+    phantom.Source->Update();
   }
   catch (const itk::ExceptionObject & error)
   {
     throw InputError("phantom \"" + name + "\": " + error.GetDescription());
   }
-  const itk::CenterlineTree tree = phantom->GetCenterlineTree();
-  ReformationInputs         inputs = MakeInputs(ConvertItkImageToVolumeNode(phantom->GetOutput(), "Run-off phantom"),
-                                        ConvertTreeToCenterlineNode(tree, "Run-off phantom centerlines"));
+  ReformationInputs inputs =
+    MakeInputs(ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), phantom.Description),
+               ConvertTreeToCenterlineNode(phantom.Tree, phantom.Description + " centerlines"));
   for (const auto & branch : inputs.Tree.GetBranches())
   {
-    inputs.BranchNames[branch.Id] = itk::RunoffPhantomImageSource::GetBranchName(branch.Id);
+    inputs.BranchNames[branch.Id] = phantom.BranchName(branch.Id);
   }
   std::ostringstream source;
-  source << "run-off phantom (" << spacing << " mm voxels)";
+  source << phantom.Name << " phantom, " << phantom.Description << " (" << spacing << " mm voxels)";
   inputs.VolumeSource = source.str();
-  inputs.CenterlineSource = "run-off phantom (exact centerlines)";
+  inputs.CenterlineSource = phantom.Name + " phantom (exact centerlines)";
   inputs.IsPhantom = true;
+  inputs.PhantomName = phantom.Name;
   return inputs;
 }
 

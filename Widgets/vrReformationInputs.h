@@ -36,19 +36,21 @@ struct ReformationInputs
   /** Where the volume and the centerlines came from: file paths, or the phantom's name. */
   std::string VolumeSource;
   std::string CenterlineSource;
-  /** True for a built-in phantom (intensities in HU, so the CTA window suits it). */
-  bool IsPhantom{ false };
+  /** True for a built-in phantom (intensities in HU, so the CTA window suits it), and its name ("thorax"). */
+  bool        IsPhantom{ false };
+  std::string PhantomName;
 
   /** \return "name" of a branch id, or "branch <id>". */
   std::string
   BranchName(int id) const;
 };
 
-/** The names of the built-in phantoms the viewer offers ("runoff", ...). */
+/** The names of the built-in phantoms the viewer offers (itk::GetCTAPhantomNames(): "runoff", "thorax"). */
 std::vector<std::string>
 PhantomNames();
 
-/** Makes a built-in phantom's volume and exact centerlines as nodes (RAS, as a platform holds them).
+/** Makes a built-in phantom's volume and exact centerlines as nodes (RAS, as a platform holds them), with the
+ * phantom factory (itk::MakeCTAPhantom).
  * \param name one of PhantomNames().
  * \param spacing the phantom's voxel spacing in mm (> 0).
  * \return the inputs. Throws vr::InputError naming the phantom or the spacing. */

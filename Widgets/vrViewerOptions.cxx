@@ -80,7 +80,11 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
                 "volume (NRRD, NIfTI, MetaImage, DICOM folder) and centerlines (.vtp, .vtk, "
                 ".mrk.json, .tre, .csv)")
     ->expected(0, 2);
-  app.add_option("--phantom", phantom, "built-in phantom when no files are given: runoff")->capture_default_str();
+  app
+    .add_option("--phantom",
+                phantom,
+                "built-in phantom when no files are given: runoff (aorta to the ankles) or thorax (the aortic arch)")
+    ->capture_default_str();
   app.add_option("--phantomSpacing", phantomSpacing, "the phantom's voxel spacing, mm (default 1.5)");
   app.add_option("--angle", angle, "view angle about the up axis, degrees (default 0)");
   app.add_option("--up", up, "rotation axis: S, I, A, P, L, R, auto, or an LPS vector x,y,z (default S)");

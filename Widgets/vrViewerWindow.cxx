@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrViewerWindow.h"
 
+#include "itkCTAPhantom.h"
 #include "vrAtomicOutput.h"
 #include "vrInputError.h"
 #include "vrModuleDescription.h"
@@ -99,8 +100,12 @@ ViewerWindow::BuildMenus()
   QMenu * phantoms = file->addMenu(tr("Open &phantom"));
   for (const auto & name : PhantomNames())
   {
+    // "thorax: synthetic thoracic CTA (aortic arch and its branches)": the factory's own description.
     const QString text = QString::fromStdString(name);
-    phantoms->addAction(text, this, [this, text] { LoadPhantom(text); });
+    const QString description = QString::fromStdString(itk::MakeCTAPhantom(itk::ParseCTAPhantomKind(name)).Description);
+    QAction *     action =
+      phantoms->addAction(tr("%1: %2").arg(text, description), this, [this, text] { LoadPhantom(text); });
+    action->setObjectName(QStringLiteral("openPhantom_%1").arg(text));
   }
   file->addSeparator();
   file->addAction(
@@ -211,6 +216,7 @@ ViewerWindow::ConnectParts()
             m_ThreeDView->SetInputs(inputs);
             if (inputs->IsPhantom)
             {
+              m_Panel->ShowPhantom(QString::fromStdString(inputs->PhantomName));
               m_Panel->ApplyPreset(QString::fromLatin1(CTAPreset.Name), 0.0, 0.0);
             }
             else

@@ -129,6 +129,37 @@ TEST(ViewerScreenshot, OnThePhantom)
   EXPECT_EQ(files, 1u) << "the PNG and no temporary file";
 }
 
+TEST(ViewerScreenshot, OnTheThoracicPhantomWithTheJumpThresholdAndTheSteadySolver)
+{
+  const fs::path      folder = TestFolder();
+  const fs::path      png = folder / "thorax.png";
+  const ProcessResult result = RunViewer({ "--phantom",
+                                           "thorax",
+                                           "--phantomSpacing",
+                                           "3",
+                                           "--size",
+                                           "256,512",
+                                           "--jumpThreshold",
+                                           "3",
+                                           "--solver",
+                                           "steady",
+                                           "--angle",
+                                           "30",
+                                           "--overlays",
+                                           "centerlines",
+                                           "--screenshot",
+                                           png.string() });
+  ASSERT_FALSE(result.Crashed);
+  ASSERT_EQ(result.ExitCode, 0) << result.Err;
+  const PictureFacts facts = Measure(png);
+  EXPECT_EQ(facts.Width, 1600);
+  EXPECT_GT(facts.Colours, 2000u);
+  EXPECT_GT(facts.GreyDeviation, 20.0);
+  EXPECT_GT(facts.BrightShare, 0.002) << "the contrast-filled aorta and the spine through the CTA window";
+  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
+            << facts.BrightShare << std::endl;
+}
+
 TEST(ViewerScreenshot, OnTheVMTKAorta)
 {
   const std::string data = vr::test::AortaDataFolder();

@@ -542,6 +542,35 @@ TEST_F(WidgetsTest, TheFilterSectionsRangeKernelAndSolverReachTheLogic)
   EXPECT_NE(report.find("cpu"), std::string::npos) << report;
 }
 
+TEST_F(WidgetsTest, TheFileMenuOpensTheThoracicPhantomAndShowsTheLogicsCPR)
+{
+  QAction * open = Window().findChild<QAction *>(QStringLiteral("openPhantom_thorax"));
+  ASSERT_NE(open, nullptr) << "File > Open phantom > thorax";
+  EXPECT_NE(open->text().toStdString().find("thoracic"), std::string::npos) << open->text().toStdString();
+  const auto runoff = Controller().GetInputs();
+  open->trigger();
+  ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != runoff; }, 300.0));
+  ASSERT_TRUE(WaitUntilSettled(Window(), 300.0));
+  const auto inputs = Controller().GetInputs();
+  EXPECT_TRUE(inputs->IsPhantom);
+  EXPECT_NE(inputs->VolumeSource.find("thorax"), std::string::npos) << inputs->VolumeSource;
+  EXPECT_EQ(Window().GetPanel()->GetUi().phantomCombo->currentText(), QStringLiteral("thorax"));
+  bool arch = false;
+  for (const auto & [id, name] : inputs->BranchNames)
+  {
+    arch = arch || name.find("subclavian") != std::string::npos;
+  }
+  EXPECT_TRUE(arch) << "the thoracic phantom's arteries by name";
+  const auto shown = Window().GetCPRView()->GetResult();
+  ASSERT_EQ(shown->Inputs, inputs);
+  EXPECT_DOUBLE_EQ(shown->Outputs.View.GetAngleInDegrees(), StartAngle);
+  // The reference: a logic of its own on a thoracic phantom made anew, at the same angle.
+  const ReformationOutputs reference = ReferenceOutputs(MakePhantomInputs("thorax", 1.5), TestParameters(StartAngle));
+  ExpectShows(Window(), reference.CPR);
+  const auto runoffPixels = NodePixels(ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle)).CPR);
+  EXPECT_NE(NodePixels(reference.CPR), runoffPixels);
+}
+
 TEST_F(WidgetsTest, SavesTheOutputsOnScreenAllOrNothing)
 {
   ScopedTemporaryFolder folder;
