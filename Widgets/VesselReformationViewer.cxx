@@ -1,8 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The VesselReformationViewer: the module's widgets in a window of their own.
 //
-//   VesselReformationViewer [volume centerlines] [--angle DEG] [--size W,H] [--iterations N] ... [--screenshot
-//   FILE.png]
+//   VesselReformationViewer [volume centerlines | volume --segmentation FILE[,FILE...]] [--angle DEG] [--size W,H]
+//   [--iterations N] ... [--screenshot FILE.png]
 //
 // Without files it opens the built-in run-off phantom. With --screenshot it renders the window once, writes the PNG
 // and exits: 0 on success, 1 with a message on bad input (scripted mode, for tests, the README and reports).
@@ -138,6 +138,15 @@ RunViewer(int argc, char ** argv)
   if (options.VolumePath.empty())
   {
     window.LoadPhantom(QString::fromStdString(options.Phantom), options.PhantomSpacing);
+  }
+  else if (!options.SegmentationPaths.empty())
+  {
+    QStringList segmentation;
+    for (const auto & path : options.SegmentationPaths)
+    {
+      segmentation << QString::fromStdString(path);
+    }
+    window.OpenFilesWithSegmentation(QString::fromStdString(options.VolumePath), segmentation);
   }
   else
   {

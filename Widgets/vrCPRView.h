@@ -161,6 +161,12 @@ public:
   {
     return m_Readout;
   }
+  /** \return the centerline overlay in the image's plane (one polyline per branch, in view mm). */
+  vtkPolyData *
+  GetCenterlineOverlay() const
+  {
+    return m_CenterlinePolyData;
+  }
   /** \return seconds the latest vtkRenderWindow::Render() of a new image took. */
   double
   GetLastRenderSeconds() const

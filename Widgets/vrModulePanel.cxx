@@ -65,7 +65,7 @@ ModulePanel::ModulePanel(QWidget * parent)
   , m_Ui(std::make_unique<Ui::ModulePanel>())
 {
   m_Ui->setupUi(this);
-  for (QLabel * label : { m_Ui->volumeLabel, m_Ui->centerlineLabel })
+  for (QLabel * label : { m_Ui->volumeLabel, m_Ui->centerlineLabel, m_Ui->segmentationLabel })
   {
     label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
   }
@@ -210,6 +210,7 @@ ModulePanel::Connect()
 
   connect(ui.openVolumeButton, &QPushButton::clicked, this, &ModulePanel::openVolumeRequested);
   connect(ui.openCenterlinesButton, &QPushButton::clicked, this, &ModulePanel::openCenterlinesRequested);
+  connect(ui.openSegmentationButton, &QPushButton::clicked, this, &ModulePanel::openSegmentationRequested);
   connect(ui.loadPhantomButton,
           &QPushButton::clicked,
           this,
@@ -469,7 +470,7 @@ ModulePanel::ShowPhantom(const QString & name)
 }
 
 void
-ModulePanel::SetInputDescription(const QString & volume, const QString & centerlines)
+ModulePanel::SetInputDescription(const QString & volume, const QString & centerlines, const QString & segmentation)
 {
   // A file by its name (the whole path in the status tip), a phantom by its description; the label shows what fits and
   // never widens the panel (its size policy is Ignored), so that the captions beside it stay whole.
@@ -482,6 +483,8 @@ ModulePanel::SetInputDescription(const QString & volume, const QString & centerl
   m_Ui->centerlineLabel->setText(shortName(centerlines));
   m_Ui->volumeLabel->setStatusTip(volume);
   m_Ui->centerlineLabel->setStatusTip(centerlines);
+  m_Ui->segmentationLabel->setText(segmentation.isEmpty() ? tr("(none)") : shortName(segmentation));
+  m_Ui->segmentationLabel->setStatusTip(segmentation);
 }
 
 QWidget *

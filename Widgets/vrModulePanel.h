@@ -104,9 +104,10 @@ public:
   /** Chooses \a name in the phantom list (the phantom on screen), emitting nothing. */
   void
   ShowPhantom(const QString & name);
-  /** Shows where the inputs came from. */
+  /** Shows where the inputs came from: the volume, the centerlines, and the segmentation they were extracted from
+   * (empty when they came from a file or a phantom). */
   void
-  SetInputDescription(const QString & volume, const QString & centerlines);
+  SetInputDescription(const QString & volume, const QString & centerlines, const QString & segmentation = QString());
   /** Marks the control of \a parameter (a vr::ParameterName) with \a message, or clears every mark when empty. */
   void
   MarkParameterError(const QString & parameter, const QString & message);
@@ -147,6 +148,8 @@ signals:
   openVolumeRequested();
   void
   openCenterlinesRequested();
+  void
+  openSegmentationRequested();
   void
   loadPhantomRequested(const QString & name);
   void

@@ -92,7 +92,7 @@ ReformationController::~ReformationController()
 }
 
 void
-ReformationController::LoadInputs(Loader loader, const QString & what)
+ReformationController::LoadInputs(Loader loader, const QString & what, std::optional<ReformationParameters> parameters)
 {
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
@@ -101,7 +101,7 @@ ReformationController::LoadInputs(Loader loader, const QString & what)
       ++m_Statistics.Superseded;
       m_PendingJob.reset();
     }
-    m_PendingLoad = Load{ std::move(loader), what };
+    m_PendingLoad = Load{ std::move(loader), what, std::move(parameters) };
     if (m_Running)
     {
       m_Logic.AbortUpdate();
@@ -128,7 +128,7 @@ ReformationController::Request(const ReformationParameters & parameters, Request
     if (kind == RequestKind::Final)
     {
       m_DisplayFloor = id;
-      if (m_Running)
+      if (m_Running && !m_RunningLoad)
       {
         m_Logic.AbortUpdate();
       }
@@ -207,6 +207,7 @@ ReformationController::WorkerLoop()
         return;
       }
       // A load goes first: requests made after it are for its data.
+      m_RunningLoad = m_PendingLoad.has_value();
       if (m_PendingLoad)
       {
         load.swap(m_PendingLoad);
@@ -257,10 +258,14 @@ ReformationController::RunLoad(Load & load)
 {
   try
   {
-    auto inputs = std::make_shared<const ReformationInputs>(load.Run());
+    ReformationInputs loaded = load.Run();
+    if (loaded.Segmentation)
+    {
+      loaded = ExtractCenterlines(loaded, load.Parameters);
+    }
+    auto inputs = std::make_shared<const ReformationInputs>(std::move(loaded));
     m_WorkerInputs = inputs;
-    m_Logic.SetVolumeNode(inputs->Volume);
-    m_Logic.SetCenterlineNode(inputs->Centerlines);
+    SetLogicInputs(*inputs);
     Post(
       [this, inputs]
       {
@@ -268,11 +273,68 @@ ReformationController::RunLoad(Load & load)
         emit inputsLoaded(inputs);
       });
   }
+  catch (const Cancelled &)
+  {
+    // A newer load aborted the extraction: it follows.
+  }
   catch (const std::exception & error)
   {
     const QString what = load.What;
     const QString message = QString::fromStdString(error.what());
     Post([this, what, message] { emit inputsFailed(what, message); });
+  }
+}
+
+void
+ReformationController::SetLogicInputs(const ReformationInputs & inputs)
+{
+  m_Logic.SetVolumeNode(inputs.Volume);
+  if (inputs.Segmentation)
+  {
+    m_Logic.SetCenterlineNode(nullptr);
+    m_Logic.SetSegmentationNode(inputs.Segmentation);
+  }
+  else
+  {
+    m_Logic.SetSegmentationNode(nullptr);
+    m_Logic.SetCenterlineNode(inputs.Centerlines);
+  }
+}
+
+ReformationInputs
+ReformationController::ExtractCenterlines(const ReformationInputs &                    inputs,
+                                          const std::optional<ReformationParameters> & parameters)
+{
+  SetLogicInputs(inputs);
+  if (parameters)
+  {
+    m_Logic.SetParameters(*parameters);
+  }
+  m_Logic.SetSurfaceEnabled(false);
+  m_ProgressStarted = false;
+  try
+  {
+    const ReformationOutputs & outputs = m_Logic.Update();
+    {
+      std::lock_guard<std::mutex> lock(m_Mutex);
+      m_Counts = m_Logic.GetStageExecutionCounts();
+    }
+    return WithExtractedCenterlines(inputs, outputs.ExtractedCenterlines);
+  }
+  catch (...)
+  {
+    // The logic goes back to the inputs in use, so that the next request reforms the data on screen.
+    if (m_WorkerInputs)
+    {
+      SetLogicInputs(*m_WorkerInputs);
+    }
+    else
+    {
+      m_Logic.SetSegmentationNode(nullptr);
+    }
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_Counts = m_Logic.GetStageExecutionCounts();
+    throw;
   }
 }
 
@@ -333,7 +395,16 @@ ReformationController::Update(const Job & job, bool surface)
   {
     const ReformationOutputs & outputs = m_Logic.Update();
     const double               seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    auto                       result = std::make_shared<ReformationResult>();
+    if (m_WorkerInputs->Segmentation && outputs.ExtractedCenterlines &&
+        outputs.ExtractedCenterlines != m_WorkerInputs->Centerlines)
+    {
+      // The logic extracted again (its segmentation node came back after a failed load): the overlays follow.
+      auto updated = std::make_shared<const ReformationInputs>(
+        WithExtractedCenterlines(*m_WorkerInputs, outputs.ExtractedCenterlines));
+      m_WorkerInputs = updated;
+      Post([this, updated] { m_Inputs = updated; });
+    }
+    auto result = std::make_shared<ReformationResult>();
     result->RequestId = job.Id;
     result->Kind = job.Kind;
     result->Parameters = job.Parameters;

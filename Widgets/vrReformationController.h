@@ -116,7 +116,10 @@ struct RequestStatistics
  * compete with the drawing of the images for the processor.
  *
  * Inputs are loaded on the worker thread as well (files, phantoms): a loader that throws vr::InputError leaves the
- * inputs in use as they were and reports its message through inputsFailed().
+ * inputs in use as they were and reports its message through inputsFailed(). Inputs with a segmentation are checked
+ * by the logic before they are taken: it extracts their centerlines (one Update() of the logic with the load's
+ * parameters, without the cut surface), and when that fails the logic goes back to the inputs in use and the message
+ * comes through inputsFailed() as a file's would; inputsLoaded() carries the extracted centerlines.
  *
  * \sa VesselReformationLogic, CPRView, ThreeDView
  * \ingroup VesselReformation
@@ -135,9 +138,11 @@ public:
   /** Loads new inputs on the worker: \a loader runs there. A running update is aborted and a waiting request dropped
    * (they were for the old data). Emits inputsLoaded() or inputsFailed(). A later Request() runs on the new inputs.
    * \param loader reads files or makes a phantom; throws vr::InputError on bad input.
-   * \param what names what is loaded in messages ("aorta.mha"). */
+   * \param what names what is loaded in messages ("aorta.mha").
+   * \param parameters the parameters the logic extracts a segmentation's centerlines with (the view a request will
+   *        ask for next, so that it reruns nothing); without them, the logic's current ones. */
   void
-  LoadInputs(Loader loader, const QString & what);
+  LoadInputs(Loader loader, const QString & what, std::optional<ReformationParameters> parameters = std::nullopt);
 
   /** Asks for a reformation with \a parameters (see RequestKind for how it treats a running update).
    * \return the request's id. */
@@ -202,8 +207,9 @@ private:
   };
   struct Load
   {
-    Loader  Run;
-    QString What;
+    Loader                               Run;
+    QString                              What;
+    std::optional<ReformationParameters> Parameters;
   };
 
   void
@@ -212,6 +218,13 @@ private:
   RunLoad(Load & load);
   void
   RunJob(const Job & job);
+  /** Hands \a inputs' nodes to the logic: the volume, and the centerline or the segmentation node. */
+  void
+  SetLogicInputs(const ReformationInputs & inputs);
+  /** Has the logic extract the centerlines of segmentation \a inputs; on failure the logic gets the inputs in use
+   * back and the exception goes on. \return the inputs with their centerlines. */
+  ReformationInputs
+  ExtractCenterlines(const ReformationInputs & inputs, const std::optional<ReformationParameters> & parameters);
   /** Runs one logic update with the cut surface on or off; returns the result, or null when cancelled or failed. */
   std::shared_ptr<ReformationResult>
   Update(const Job & job, bool surface);
@@ -235,14 +248,16 @@ private:
   std::optional<Job>      m_PendingJob;
   std::optional<Load>     m_PendingLoad;
   bool                    m_Running{ false };
-  RequestKind             m_RunningKind{ RequestKind::Final };
-  bool                    m_Quit{ false };
-  std::uint64_t           m_NextId{ 1 };
-  StageCounts             m_Counts;
-  RequestStatistics       m_Statistics;
-  bool                    m_SurfaceWaitsForDisplay{ false };
-  double                  m_SurfaceWaitSeconds{ 1.0 };
-  std::uint64_t           m_ShownId{ 0 };
+  /** The running work is a load: requests do not abort it (a newer load does). */
+  bool              m_RunningLoad{ false };
+  RequestKind       m_RunningKind{ RequestKind::Final };
+  bool              m_Quit{ false };
+  std::uint64_t     m_NextId{ 1 };
+  StageCounts       m_Counts;
+  RequestStatistics m_Statistics;
+  bool              m_SurfaceWaitsForDisplay{ false };
+  double            m_SurfaceWaitSeconds{ 1.0 };
+  std::uint64_t     m_ShownId{ 0 };
 
   // GUI-thread state.
   std::shared_ptr<const ReformationInputs> m_Inputs;

@@ -2,6 +2,7 @@
 #include "vrReformationInputs.h"
 
 #include "itkCTAPhantom.h"
+#include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
@@ -86,6 +87,36 @@ ReadCenterlineNode(const std::string & path)
 {
   const itk::CenterlineTree tree = ReadCenterlines(path);
   return ConvertTreeToCenterlineNode(tree, path);
+}
+
+vtkSmartPointer<VolumeNode>
+ReadSegmentationNode(const std::vector<std::string> & paths,
+                     std::vector<std::string> &       warnings,
+                     std::vector<std::string> &       descriptions)
+{
+  const Segmentation segmentation = ReadSegmentation(paths, {}, warnings);
+  descriptions = segmentation.Descriptions;
+  return ConvertItkImageToVolumeNode(segmentation.Mask.GetPointer(), segmentation.Name);
+}
+
+ReformationInputs
+MakeSegmentationInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<VolumeNode> segmentation)
+{
+  ReformationInputs inputs;
+  inputs.Volume = std::move(volume);
+  inputs.Segmentation = std::move(segmentation);
+  inputs.VolumeSource = inputs.Volume->GetName();
+  inputs.CenterlineSource = "centerlines extracted from " + inputs.Segmentation->GetName();
+  return inputs;
+}
+
+ReformationInputs
+WithExtractedCenterlines(const ReformationInputs & inputs, vtkSmartPointer<CenterlineNode> extracted)
+{
+  ReformationInputs result = inputs;
+  result.Centerlines = std::move(extracted);
+  result.Tree = ConvertCenterlineNodeToTree(result.Centerlines);
+  return result;
 }
 
 ReformationInputs

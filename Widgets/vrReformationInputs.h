@@ -15,8 +15,9 @@
 namespace vr
 {
 /** \class ReformationInputs
- * \brief What the viewer reforms: a volume node and a centerline node as a platform hands them to the logic, and
- * what the views show of them (the tree the logic converts the centerline node to, branch names, a description).
+ * \brief What the viewer reforms: a volume node and a centerline node as a platform hands them to the logic, or a
+ * volume node and a vessel segmentation node whose centerlines the logic extracts; and what the views show of them
+ * (the tree the logic converts the centerlines to, branch names, a description).
  *
  * Made once per opened file or phantom, on the controller's worker thread, and never changed afterwards: results
  * share it, so the overlays of an image always belong to the data it was computed from.
@@ -26,8 +27,15 @@ namespace vr
  */
 struct ReformationInputs
 {
-  vtkSmartPointer<VolumeNode>     Volume;
+  vtkSmartPointer<VolumeNode> Volume;
+  /** The centerlines: the node given, or for a segmentation the logic's extracted centerlines (null until the
+   * controller has had the logic extract them). */
   vtkSmartPointer<CenterlineNode> Centerlines;
+  /** A vessel segmentation (mask, label map or level set, several files combined; vr::ReadSegmentation) whose
+   * centerlines the logic extracts (VesselReformationLogic::SetSegmentationNode); null with a centerline node. */
+  vtkSmartPointer<VolumeNode> Segmentation;
+  /** What reading the inputs warned about (a segmentation on another grid, resampled). */
+  std::vector<std::string> Warnings;
   /** The centerline node as the logic converts it (vr::ConvertCenterlineNodeToTree), LPS mm: the ids are the
    * owner labels' values. */
   itk::CenterlineTree Tree;
@@ -68,6 +76,31 @@ ReadVolumeNode(const std::string & path);
  * \return the node. Throws vr::InputError naming the file and the field (vr::ReadCenterlines' messages). */
 vtkSmartPointer<CenterlineNode>
 ReadCenterlineNode(const std::string & path);
+
+/** Reads one or more vessel segmentation files (label map, mask, VMTK level set; vr::ReadSegmentation combines
+ * several) into a segmentation node, as a platform's label map node.
+ * \param paths the files.
+ * \param warnings receives vr::ReadSegmentation's warnings.
+ * \param descriptions receives a line per file: what it held.
+ * \return the node, named by the files. Throws vr::InputError naming the file (vr::ReadSegmentation's messages). */
+vtkSmartPointer<VolumeNode>
+ReadSegmentationNode(const std::vector<std::string> & paths,
+                     std::vector<std::string> &       warnings,
+                     std::vector<std::string> &       descriptions);
+
+/** Puts a volume node and a segmentation node together; the centerlines come from the logic's extraction (see
+ * ReformationController::LoadInputs).
+ * \param volume the volume node.
+ * \param segmentation the segmentation node.
+ * \return the inputs, without centerlines yet. */
+ReformationInputs
+MakeSegmentationInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<VolumeNode> segmentation);
+
+/** \return \a inputs with the centerlines the logic extracted from their segmentation, converted for the overlays.
+ * \param inputs segmentation inputs.
+ * \param extracted VesselReformationLogic's ReformationOutputs::ExtractedCenterlines. */
+ReformationInputs
+WithExtractedCenterlines(const ReformationInputs & inputs, vtkSmartPointer<CenterlineNode> extracted);
 
 /** Puts a volume node and a centerline node together, converting the centerlines once for the overlays.
  * \param volume the volume node.

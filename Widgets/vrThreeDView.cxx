@@ -169,7 +169,10 @@ ThreeDView::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
 
   // Tubes of the lumen radius along the centerlines (radius 1 mm where the centerlines carry none).
   vtkNew<vtkPolyData> lines;
-  lines->ShallowCopy(m_Inputs->Centerlines->GetPolyData());
+  if (m_Inputs->Centerlines)
+  {
+    lines->ShallowCopy(m_Inputs->Centerlines->GetPolyData());
+  }
   vtkNew<vtkTubeFilter> tubes;
   tubes->SetInputData(lines);
   tubes->SetNumberOfSides(10);
@@ -199,6 +202,13 @@ ThreeDView::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
   m_Arrow->SetVisibility(false);
   m_Plane->SetVisibility(false);
   ResetCamera();
+}
+
+vtkPolyData *
+ThreeDView::GetTubes() const
+{
+  auto * mapper = vtkPolyDataMapper::SafeDownCast(m_Tubes->GetMapper());
+  return mapper != nullptr ? mapper->GetInput() : nullptr;
 }
 
 void

@@ -14,6 +14,7 @@ class QVTKOpenGLNativeWidget;
 class vtkActor;
 class vtkGenericOpenGLRenderWindow;
 class vtkLookupTable;
+class vtkPolyData;
 class vtkPolyDataMapper;
 class vtkRenderer;
 
@@ -88,6 +89,9 @@ public:
   {
     return m_Widget;
   }
+  /** \return the centerline tubes drawn (cell data "BranchIds"), or null before any inputs. */
+  vtkPolyData *
+  GetTubes() const;
 
 signals:
   /** A render finished: its time in seconds and whether it drew the full surface. */

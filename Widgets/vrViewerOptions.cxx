@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrViewerOptions.h"
 
+#include "vrCenterlineExtraction.h"
 #include "vrInputError.h"
 #include "vrParameterName.h"
 #include "vrReformationInputs.h"
@@ -72,6 +73,7 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
   std::vector<std::string> files;
   std::string              phantom = options.Phantom;
   std::string              phantomSpacing;
+  std::string              segmentation;
   std::string angle, up, size, spacing, mode, interpolation, relaxation, anisotropy, jumpThreshold, solver, iterations,
     backend, fixLumen, window, level, overlays, compare, windowSize;
   app
@@ -80,6 +82,10 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
                 "volume (NRRD, NIfTI, MetaImage, DICOM folder) and centerlines (.vtp, .vtk, "
                 ".mrk.json, .tre, .csv)")
     ->expected(0, 2);
+  app.add_option("--segmentation",
+                 segmentation,
+                 "vessel segmentation FILE[,FILE...] (label map, mask, VMTK level set; several are combined) whose "
+                 "centerlines the logic extracts, instead of the centerlines argument");
   app
     .add_option("--phantom",
                 phantom,
@@ -143,11 +149,30 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
 
   try
   {
-    if (files.size() == 1)
+    if (!segmentation.empty())
     {
-      throw InputError("give both a volume and centerlines (or neither, for the phantom); got only " + files[0]);
+      options.SegmentationPaths = SplitSegmentationPaths(segmentation);
+      if (options.SegmentationPaths.empty())
+      {
+        throw InputError("--segmentation \"" + segmentation + "\": no file named");
+      }
+      if (files.size() != 1)
+      {
+        throw InputError(files.empty() ? "--segmentation needs the volume as well: VesselReformationViewer volume "
+                                         "--segmentation FILE[,FILE...]"
+                                       : "both the centerlines " + files[1] +
+                                           " and --segmentation give centerlines; "
+                                           "give one of them");
+      }
+      options.VolumePath = files[0];
     }
-    if (files.size() == 2)
+    else if (files.size() == 1)
+    {
+      throw InputError("give both a volume and centerlines, or a volume and --segmentation (or neither, for the "
+                       "phantom); got only " +
+                       files[0]);
+    }
+    if (files.size() == 2 && segmentation.empty())
     {
       options.VolumePath = files[0];
       options.CenterlinePath = files[1];

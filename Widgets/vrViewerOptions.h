@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vr
 {
@@ -18,6 +19,8 @@ struct ViewerOptions
   /** Files to open; both empty: the phantom. */
   std::string VolumePath;
   std::string CenterlinePath;
+  /** Vessel segmentation files (combined) whose centerlines the logic extracts, instead of CenterlinePath. */
+  std::vector<std::string> SegmentationPaths;
   /** The built-in phantom and its voxel spacing (mm) when no files are given. */
   std::string Phantom{ "runoff" };
   double      PhantomSpacing{ 1.5 };

@@ -29,6 +29,7 @@
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace vr
@@ -97,6 +98,8 @@ ViewerWindow::BuildMenus()
     tr("Open &volume…"), this, [this] { ChooseAndOpenVolume(false); }, QKeySequence::Open);
   file->addAction(tr("Open &DICOM folder…"), this, [this] { ChooseAndOpenVolume(true); });
   file->addAction(tr("Open &centerlines…"), this, [this] { ChooseAndOpenCenterlines(); });
+  file->addAction(tr("Open a vessel se&gmentation…"), this, [this] { ChooseAndOpenSegmentation(); })
+    ->setObjectName(QStringLiteral("openSegmentation"));
   QMenu * phantoms = file->addMenu(tr("Open &phantom"));
   for (const auto & name : PhantomNames())
   {
@@ -157,6 +160,7 @@ ViewerWindow::ConnectParts()
           });
   connect(m_Panel, &ModulePanel::openVolumeRequested, this, [this] { ChooseAndOpenVolume(false); });
   connect(m_Panel, &ModulePanel::openCenterlinesRequested, this, [this] { ChooseAndOpenCenterlines(); });
+  connect(m_Panel, &ModulePanel::openSegmentationRequested, this, [this] { ChooseAndOpenSegmentation(); });
   connect(m_Panel, &ModulePanel::loadPhantomRequested, this, [this](const QString & name) { LoadPhantom(name); });
   connect(m_Panel, &ModulePanel::saveOutputsRequested, this, [this] { ChooseAndSaveOutputs(); });
   connect(m_Panel->GetAngleSlider(), &QSlider::sliderPressed, this, [this] { m_ThreeDView->SetInteracting(true); });
@@ -212,7 +216,9 @@ ViewerWindow::ConnectParts()
           [this](std::shared_ptr<const ReformationInputs> inputs)
           {
             m_Panel->SetInputDescription(QString::fromStdString(inputs->VolumeSource),
-                                         QString::fromStdString(inputs->CenterlineSource));
+                                         QString::fromStdString(inputs->CenterlineSource),
+                                         inputs->Segmentation ? QString::fromStdString(inputs->Segmentation->GetName())
+                                                              : QString());
             m_ThreeDView->SetInputs(inputs);
             if (inputs->IsPhantom)
             {
@@ -229,6 +235,10 @@ ViewerWindow::ConnectParts()
                                          .arg(QFileInfo(QString::fromStdString(inputs->VolumeSource)).fileName(),
                                               QFileInfo(QString::fromStdString(inputs->CenterlineSource)).fileName());
             statusBar()->showMessage(loaded, 5000);
+            for (const auto & warning : inputs->Warnings)
+            {
+              statusBar()->showMessage(tr("Warning: %1").arg(QString::fromStdString(warning)), 15000);
+            }
             RequestReformation(RequestKind::Final);
           });
   connect(m_Controller,
@@ -311,12 +321,20 @@ ViewerWindow::OpenVolume(const QString & path)
   m_Controller->LoadInputs(
     [volumePath, current]
     {
+      if (current->Segmentation)
+      {
+        // The segmentation stays: the logic extracts its centerlines again against the new volume.
+        ReformationInputs inputs = MakeSegmentationInputs(ReadVolumeNode(volumePath), current->Segmentation);
+        inputs.CenterlineSource = current->CenterlineSource;
+        return inputs;
+      }
       ReformationInputs inputs = MakeInputs(ReadVolumeNode(volumePath), current->Centerlines);
       inputs.BranchNames = current->BranchNames;
       inputs.CenterlineSource = current->CenterlineSource;
       return inputs;
     },
-    QFileInfo(path).fileName());
+    QFileInfo(path).fileName(),
+    PanelParameters());
 }
 
 void
@@ -338,6 +356,79 @@ ViewerWindow::OpenCenterlines(const QString & path)
       return inputs;
     },
     QFileInfo(path).fileName());
+}
+
+std::optional<ReformationParameters>
+ViewerWindow::PanelParameters() const
+{
+  try
+  {
+    return m_Panel->GetParameters();
+  }
+  catch (const InputError &)
+  {
+    return std::nullopt;
+  }
+}
+
+void
+ViewerWindow::OpenSegmentation(const QStringList & paths)
+{
+  auto current = m_Controller->GetInputs();
+  if (!current)
+  {
+    ShowError(tr("Cannot open %1").arg(paths.join(QStringLiteral(", "))),
+              tr("Open a volume as well: the viewer needs both."));
+    return;
+  }
+  std::vector<std::string> files;
+  QStringList              names;
+  for (const QString & path : paths)
+  {
+    files.push_back(path.toStdString());
+    names << QFileInfo(path).fileName();
+  }
+  m_Controller->LoadInputs(
+    [files, current]
+    {
+      std::vector<std::string> warnings;
+      std::vector<std::string> descriptions;
+      ReformationInputs        inputs =
+        MakeSegmentationInputs(current->Volume, ReadSegmentationNode(files, warnings, descriptions));
+      inputs.VolumeSource = current->VolumeSource;
+      inputs.IsPhantom = current->IsPhantom;
+      inputs.PhantomName = current->PhantomName;
+      inputs.Warnings = warnings;
+      return inputs;
+    },
+    names.join(QStringLiteral(", ")),
+    PanelParameters());
+}
+
+void
+ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringList & segmentation)
+{
+  const std::string        volumePath = volume.toStdString();
+  std::vector<std::string> files;
+  QStringList              names;
+  for (const QString & path : segmentation)
+  {
+    files.push_back(path.toStdString());
+    names << QFileInfo(path).fileName();
+  }
+  m_Controller->LoadInputs(
+    [volumePath, files]
+    {
+      std::vector<std::string> warnings;
+      std::vector<std::string> descriptions;
+      auto                     volumeNode = ReadVolumeNode(volumePath);
+      ReformationInputs        inputs =
+        MakeSegmentationInputs(volumeNode, ReadSegmentationNode(files, warnings, descriptions));
+      inputs.Warnings = warnings;
+      return inputs;
+    },
+    tr("%1 and %2").arg(QFileInfo(volume).fileName(), names.join(QStringLiteral(", "))),
+    PanelParameters());
 }
 
 void
@@ -444,7 +535,11 @@ ViewerWindow::ShowRelaxBackend(const ReformationOutputs & outputs)
   {
     // Said once in the status bar when the choice changes, and always under the backend choice in the panel.
     m_ShownBackendReason = reason;
-    statusBar()->showMessage(tr("Relaxation on %1: %2").arg(backend, reason), 10000);
+    // Elided to the room the stage times leave; the whole reason is in the panel and the times' tooltip.
+    const int room = std::max(200, statusBar()->width() - m_Times->width() - m_Progress->width() - 60);
+    statusBar()->showMessage(
+      statusBar()->fontMetrics().elidedText(tr("Relaxation on %1: %2").arg(backend, reason), Qt::ElideRight, room),
+      10000);
   }
 }
 
@@ -613,6 +708,20 @@ ViewerWindow::ChooseAndOpenCenterlines()
   if (!path.isEmpty())
   {
     OpenCenterlines(path);
+  }
+}
+
+void
+ViewerWindow::ChooseAndOpenSegmentation()
+{
+  const QStringList paths = QFileDialog::getOpenFileNames(
+    this,
+    tr("Open a vessel segmentation (several files are combined)"),
+    QString(),
+    tr("Segmentations: label maps, masks, level sets (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;All files (*)"));
+  if (!paths.isEmpty())
+  {
+    OpenSegmentation(paths);
   }
 }
 

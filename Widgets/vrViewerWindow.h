@@ -11,6 +11,7 @@
 #include <QString>
 
 #include <functional>
+#include <optional>
 #include <memory>
 
 class QLabel;
@@ -52,6 +53,14 @@ public:
   /** Opens centerlines, keeping the volume. */
   void
   OpenCenterlines(const QString & path);
+  /** Opens a vessel segmentation (one file, or several combined: label maps, masks, VMTK level sets) instead of
+   * centerlines, keeping the volume: the logic extracts the centerlines (VesselReformationLogic::SetSegmentationNode),
+   * and the overlays and tubes show them. A file the logic refuses leaves the data on screen as it was. */
+  void
+  OpenSegmentation(const QStringList & paths);
+  /** Opens a volume and a segmentation together. */
+  void
+  OpenFilesWithSegmentation(const QString & volume, const QStringList & segmentation);
 
   /** Sends the panel's parameters to the logic. */
   void
@@ -130,6 +139,11 @@ private:
   ChooseAndOpenVolume(bool dicomFolder);
   void
   ChooseAndOpenCenterlines();
+  void
+  ChooseAndOpenSegmentation();
+  /** The panel's parameters for a load's extraction, or none when the panel holds an invalid one. */
+  std::optional<ReformationParameters>
+  PanelParameters() const;
   void
   ChooseAndSaveOutputs();
   void

@@ -188,6 +188,46 @@ TEST(ViewerScreenshot, OnTheVMTKAorta)
             << facts.BrightShare << std::endl;
 }
 
+TEST(ViewerScreenshot, OnTheVMTKAortaWithItsLevelSetInsteadOfCenterlines)
+{
+  const std::string data = vr::test::AortaDataFolder();
+  if (data.empty())
+  {
+    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+  }
+  const fs::path      folder = TestFolder();
+  const fs::path      png = folder / "aorta-levelset.png";
+  const ProcessResult result = RunViewer({ (fs::path(data) / "aorta.mha").string(),
+                                           "--segmentation",
+                                           (fs::path(data) / "aorta-final-levelset.mha").string(),
+                                           "--up",
+                                           "auto",
+                                           "--angle",
+                                           "20",
+                                           "--screenshot",
+                                           png.string() });
+  ASSERT_FALSE(result.Crashed);
+  ASSERT_EQ(result.ExitCode, 0) << result.Err;
+  const PictureFacts facts = Measure(png);
+  EXPECT_EQ(facts.Width, 1600);
+  EXPECT_GT(facts.Colours, 2000u);
+  EXPECT_GT(facts.GreyDeviation, 20.0);
+  EXPECT_GT(facts.BrightShare, 0.02) << "the contrast-filled aorta and iliacs through the full-range window";
+  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
+            << facts.BrightShare << std::endl;
+
+  // A segmentation file that does not read: the reader's message, exit 1, no picture.
+  const std::string corrupt = (folder / "corrupt-mask.nii").string();
+  vr::test::WriteTextFile(corrupt, "not a NIfTI header at all");
+  const fs::path      never = folder / "never.png";
+  const ProcessResult bad =
+    RunViewer({ (fs::path(data) / "aorta.mha").string(), "--segmentation", corrupt, "--screenshot", never.string() });
+  EXPECT_FALSE(bad.Crashed);
+  EXPECT_EQ(bad.ExitCode, 1);
+  EXPECT_NE(bad.Err.find("corrupt-mask.nii"), std::string::npos) << bad.Err;
+  EXPECT_FALSE(fs::exists(never));
+}
+
 TEST(ViewerScreenshot, BadInputExitsWithOneAndAMessageAndWritesNoPicture)
 {
   const fs::path    folder = TestFolder();
@@ -208,6 +248,9 @@ TEST(ViewerScreenshot, BadInputExitsWithOneAndAMessageAndWritesNoPicture)
     { { (folder / "missing.mha").string(), centerlines, "--screenshot", png }, "missing.mha" },
     { { corrupt, centerlines, "--screenshot", png }, corruptMessage },
     { { corrupt, "--screenshot", png }, "give both a volume and centerlines" },
+    { { "--segmentation", corrupt, "--screenshot", png }, "--segmentation needs the volume" },
+    { { corrupt, centerlines, "--segmentation", corrupt, "--screenshot", png }, "give one of them" },
+    { { corrupt, "--segmentation", ",", "--screenshot", png }, "--segmentation" },
     { { "--relaxation", "2", "--screenshot", png }, "--relaxation" },
     { { "--angle", "abc", "--screenshot", png }, "--angle" },
     { { "--jumpThreshold", "2", "--anisotropy", "0.5", "--screenshot", png }, "both --jumpThreshold and --anisotropy" },

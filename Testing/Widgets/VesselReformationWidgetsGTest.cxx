@@ -6,8 +6,11 @@
 #include "ui_vrModulePanel.h"
 
 #include "itkCPRViewGeometry.h"
+#include "itkImageFileWriter.h"
 #include "vrCoordinateFrames.h"
+#include "vrCenterlineExtraction.h"
 #include "vrImageIO.h"
+#include "vrNodeConversion.h"
 #include "vrInputError.h"
 #include "vrOutputWriter.h"
 #include "vrSurfacePreview.h"
@@ -25,6 +28,7 @@
 #include <QTest>
 #include <QVTKOpenGLNativeWidget.h>
 
+#include <vtkCellData.h>
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
 
@@ -32,6 +36,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 namespace
 {
@@ -458,6 +463,130 @@ TEST_F(WidgetsTest, OpeningACorruptFileShowsTheLogicsMessageAndThePreviousDataSt
   ASSERT_TRUE(WaitUntilSettled(Window()));
   EXPECT_EQ(Window().GetCPRView()->GetResult()->Inputs, inputsBefore);
   ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(-30.0)).CPR);
+}
+
+/** The distinct values of a polydata's cell array. */
+std::set<int>
+DistinctCellValues(vtkPolyData * data, const char * name)
+{
+  std::set<int>  values;
+  vtkDataArray * array = data != nullptr ? data->GetCellData()->GetArray(name) : nullptr;
+  for (vtkIdType k = 0; array != nullptr && k < array->GetNumberOfTuples(); ++k)
+  {
+    values.insert(static_cast<int>(array->GetTuple1(k)));
+  }
+  return values;
+}
+
+TEST(WidgetsSegmentation, TheVMTKLevelSetGivesTheLogicsCPRAndItsThreeBranchesAndABadFileKeepsTheData)
+{
+  const std::string data = AortaDataFolder();
+  if (data.empty())
+  {
+    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+  }
+  const std::string     volume = data + "/aorta.mha";
+  const std::string     levelSet = data + "/aorta-final-levelset.mha";
+  ReformationParameters parameters = TestParameters(StartAngle);
+  parameters.Window = 0.0; // the full range, as for files
+
+  auto window = std::make_unique<ViewerWindow>();
+  window->resize(1400, 900);
+  window->GetPanel()->SetParameters(TestParameters(StartAngle));
+  window->GetPanel()->SetOverlays(CPROverlays{ true, false, false, false });
+  window->show();
+  int     errors = 0;
+  QString lastError;
+  QObject::connect(window.get(),
+                   &ViewerWindow::errorShown,
+                   window.get(),
+                   [&](const QString &, const QString & message)
+                   {
+                     ++errors;
+                     lastError = message;
+                   });
+  window->OpenFilesWithSegmentation(QString::fromStdString(volume), { QString::fromStdString(levelSet) });
+  ASSERT_TRUE(WaitUntil([&] { return window->GetCPRView()->GetResult() != nullptr || errors > 0; }, 600.0));
+  ASSERT_EQ(errors, 0) << lastError.toStdString();
+  ASSERT_TRUE(WaitUntilSettled(*window, 600.0));
+  const auto shown = window->GetCPRView()->GetResult();
+  const auto inputs = shown->Inputs;
+  ASSERT_TRUE(inputs->Segmentation);
+  EXPECT_EQ(window->GetPanel()->GetUi().segmentationLabel->text(), QStringLiteral("aorta-final-levelset.mha"));
+
+  // The reference: a logic of its own on the files, read anew.
+  VesselReformationLogic   logic;
+  std::vector<std::string> warnings;
+  logic.SetVolumeNode(ReadVolumeNode(volume));
+  logic.SetSegmentationNode(
+    ConvertItkImageToVolumeNode(ReadSegmentation({ levelSet }, {}, warnings).Mask.GetPointer(), "level set"));
+  logic.SetParameters(parameters);
+  const auto                referenceCPR = NodePixels(logic.Update().CPR);
+  const itk::CenterlineTree referenceTree = ConvertCenterlineNodeToTree(logic.GetOutputs().ExtractedCenterlines);
+  ExpectShows(*window, logic.GetOutputs().CPR);
+
+  // The overlays: the trunk and both iliacs, as the logic extracted them, in the CPR view and as tubes in 3D.
+  ASSERT_EQ(referenceTree.GetBranches().size(), 3u);
+  ASSERT_EQ(inputs->Tree.GetBranches().size(), 3u);
+  for (std::size_t b = 0; b < 3; ++b)
+  {
+    const auto & ours = inputs->Tree.GetBranches()[b];
+    const auto & theirs = referenceTree.GetBranches()[b];
+    ASSERT_EQ(ours.Points.size(), theirs.Points.size());
+    EXPECT_LT(ours.Points.front().EuclideanDistanceTo(theirs.Points.front()), 1e-3);
+    EXPECT_LT(ours.Points.back().EuclideanDistanceTo(theirs.Points.back()), 1e-3);
+  }
+  EXPECT_EQ(window->GetCPRView()->GetCenterlineOverlay()->GetNumberOfLines(), 3);
+  EXPECT_EQ(DistinctCellValues(window->GetThreeDView()->GetTubes(), "BranchIds").size(), 3u);
+
+  // A corrupt file: the reader's message in a dialog, and the data stays.
+  ScopedTemporaryFolder folder;
+  const std::string     corrupt = folder.File("corrupt-mask.nii");
+  WriteTextFile(corrupt, "not a NIfTI header at all");
+  auto withoutReason = [](const std::string & message) { return message.substr(0, message.find("; Reason:")); };
+  const std::string expected = withoutReason(InputErrorOf([&] { ReadSegmentation({ corrupt }, {}, warnings); }));
+  ASSERT_FALSE(expected.empty());
+  EXPECT_NE(expected.find("corrupt-mask.nii"), std::string::npos) << expected;
+  window->OpenSegmentation({ QString::fromStdString(corrupt) });
+  ASSERT_TRUE(WaitUntil([&] { return errors == 1; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(*window));
+  QMessageBox * dialog = ErrorDialog(*window);
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_EQ(withoutReason(dialog->text().toStdString()), expected);
+  dialog->close();
+
+  // A segmentation that reads but that the logic refuses (half a metre from the scan): its message, the data stays.
+  auto shifted = ReadSegmentation({ levelSet }, {}, warnings).Mask;
+  auto origin = shifted->GetOrigin();
+  origin[2] += 500.0;
+  shifted->SetOrigin(origin);
+  const std::string elsewhere = folder.File("elsewhere.nrrd");
+  itk::WriteImage(shifted, elsewhere);
+  VesselReformationLogic refusing;
+  refusing.SetVolumeNode(ReadVolumeNode(volume));
+  refusing.SetSegmentationNode(ReadSegmentationNode({ elsewhere }, warnings, warnings));
+  refusing.SetParameters(parameters);
+  const std::string refused = InputErrorOf([&] { refusing.Update(); });
+  EXPECT_NE(refused.find("does not overlap"), std::string::npos) << refused;
+  window->OpenSegmentation({ QString::fromStdString(elsewhere) });
+  ASSERT_TRUE(WaitUntil([&] { return errors == 2; }, 120.0));
+  ASSERT_TRUE(WaitUntilSettled(*window));
+  dialog = ErrorDialog(*window);
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_EQ(dialog->text().toStdString(), refused);
+  dialog->close();
+
+  EXPECT_EQ(window->GetController()->GetInputs(), inputs);
+  EXPECT_EQ(window->GetCPRView()->GetResult(), shown);
+  EXPECT_EQ(NodePixels(shown->Outputs.CPR), referenceCPR);
+  // And the logic reforms the previous data at a new angle.
+  window->GetPanel()->SetAngle(-30.0, RequestKind::Final);
+  ASSERT_TRUE(WaitUntilSettled(*window, 300.0));
+  EXPECT_EQ(errors, 2) << lastError.toStdString();
+  parameters.AngleInDegrees = -30.0;
+  logic.SetParameters(parameters);
+  ExpectShows(*window, logic.Update().CPR);
+  EXPECT_EQ(window->GetCPRView()->GetCenterlineOverlay()->GetNumberOfLines(), 3);
 }
 
 TEST_F(WidgetsTest, AnInvalidParameterIsMarkedAndTheImageStays)
