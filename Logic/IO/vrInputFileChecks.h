@@ -39,6 +39,13 @@ DetachedDataFiles(const std::string & headerPath);
  * vr::InputError "<role> <path>: cannot be opened" when it cannot be read. */
 std::size_t
 JSONNestingDepth(const std::string & path, const std::string & role);
+
+/** Checks the geometry fields of a NIfTI-1 or NIfTI-2 header (plain or gzip-compressed) before ITK reads it:
+ * pixdim, the quaternion and its offsets, and the sform rows must be finite and within 1e7 (mm). ITK 5.2's NIfTI
+ * reader hands them to vnl's SVD, which aborts the process on a non-finite matrix. Files that are not NIfTI (no
+ * header size of 348 or 540 in either byte order) are left alone. Throws vr::InputError "<where>: ...". */
+void
+CheckNiftiHeader(const std::string & path, const std::string & where);
 } // namespace vr::detail
 
 #endif

@@ -3,6 +3,8 @@
 
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrInputFileChecks.h"
+#include "vrURINames.h"
 
 // The reader pulls in the IO factory registration (see vrVolumeIO.cxx).
 #include "itkImageFileReader.h"
@@ -154,20 +156,18 @@ MakeSegmentationMask(const itk::Image<float, 3> * values,
 SegmentationMaskType::Pointer
 ReadSegmentationMask(const std::string & path, const std::vector<double> & labels, SegmentationReadReport * report)
 {
-  namespace fs = std::filesystem;
   const std::string where = "segmentation " + path;
-  std::error_code   error;
-  if (!fs::exists(path, error))
+  const bool        uri = IsURIName(path); // a name for an ImageIO of the host process goes to ITK as it is
+  if (!uri)
   {
-    throw InputError(where + ": no such file");
-  }
-  if (fs::is_directory(path, error))
-  {
-    throw InputError(where + ": is a folder; a segmentation is one image file (NIfTI, NRRD, MetaImage)");
-  }
-  if (fs::file_size(path, error) == 0 && !error)
-  {
-    throw InputError(where + ": is empty");
+    if (detail::CheckInputPath(path, "segmentation", true) == detail::InputKind::Folder)
+    {
+      throw InputError(where + ": is a folder; a segmentation is one image file (NIfTI, NRRD, MetaImage)");
+    }
+    for (const std::string & dataFile : detail::DetachedDataFiles(path))
+    {
+      detail::CheckInputPath(dataFile, where + ": the data file");
+    }
   }
   itk::ImageIOBase::Pointer io =
     itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
@@ -177,6 +177,10 @@ ReadSegmentationMask(const std::string & path, const std::vector<double> & label
   }
   try
   {
+    if (!uri && std::string(io->GetNameOfClass()) == "NiftiImageIO")
+    {
+      detail::CheckNiftiHeader(path, where);
+    }
     io->SetFileName(path);
     io->ReadImageInformation();
   }

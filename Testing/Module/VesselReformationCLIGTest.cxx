@@ -1475,6 +1475,20 @@ TEST_F(BadInputTest, VolumeWithANaNVoxel)
   ExpectRejected({ volume, Centerlines() }, { "nan.nrrd", "(3, 4, 5)", "nan" });
 }
 
+TEST_F(BadInputTest, NIfTIWithANonFiniteOrientation)
+{
+  // ITK 5.2's NIfTI reader hands the sform to vnl's SVD, which aborts the process on NaN (a fuzzer's find). NIfTI-1:
+  // srow_x[0] is the float at byte 280 of the 348-byte header.
+  const fs::path nii = m_Folder / "orientation.nii";
+  WriteSmallVolume(nii);
+  std::string bytes = ReadText(nii);
+  ASSERT_GT(bytes.size(), 348u);
+  const float nan = std::nanf("");
+  std::memcpy(&bytes[280], &nan, sizeof(nan));
+  const std::string patched = Write("orientation.nii", bytes);
+  ExpectRejected({ patched, Centerlines() }, { "orientation.nii", "srow_x" });
+}
+
 TEST_F(BadInputTest, FourDimensionalVolume)
 {
   using Image4D = itk::Image<float, 4>;
