@@ -535,11 +535,27 @@ ViewerWindow::ShowRelaxBackend(const ReformationOutputs & outputs)
   {
     // Said once in the status bar when the choice changes, and always under the backend choice in the panel.
     m_ShownBackendReason = reason;
-    // Elided to the room the stage times leave; the whole reason is in the panel and the times' tooltip.
-    const int room = std::max(200, statusBar()->width() - m_Times->width() - m_Progress->width() - 60);
-    statusBar()->showMessage(
-      statusBar()->fontMetrics().elidedText(tr("Relaxation on %1: %2").arg(backend, reason), Qt::ElideRight, room),
-      10000);
+    m_BackendMessage = tr("Relaxation on %1: %2").arg(backend, reason);
+    m_BackendMessageTime.start();
+    ShowBackendMessage();
+  }
+}
+
+void
+ViewerWindow::ShowBackendMessage()
+{
+  const qint64 remaining = 10000 - m_BackendMessageTime.elapsed();
+  if (m_BackendMessage.isEmpty() || remaining <= 0)
+  {
+    return;
+  }
+  // Elided to the room the stage times leave (again whenever they change); the whole reason is in the panel and the
+  // times' tooltip.
+  const int     room = std::max(150, statusBar()->width() - m_Times->sizeHint().width() - m_Progress->width() - 40);
+  const QString shown = statusBar()->fontMetrics().elidedText(m_BackendMessage, Qt::ElideRight, room);
+  if (statusBar()->currentMessage() != shown)
+  {
+    statusBar()->showMessage(shown, static_cast<int>(remaining));
   }
 }
 
@@ -575,6 +591,10 @@ ViewerWindow::ShowTimes()
              .arg(Milliseconds(m_ThreeDView->GetLastRenderSeconds()))
              .arg(m_ThreeDView->GetLastRenderedSurfacePoints());
   m_Times->setText(parts.join(QStringLiteral(" · ")));
+  if (statusBar()->currentMessage().startsWith(tr("Relaxation on")))
+  {
+    ShowBackendMessage();
+  }
 }
 
 void

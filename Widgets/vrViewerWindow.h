@@ -7,6 +7,7 @@
 #include "vrReformationController.h"
 #include "vrThreeDView.h"
 
+#include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
 
@@ -133,6 +134,9 @@ private:
   /** Shows the backend that relaxed and why (the panel, the status bar when it changes, the times' tooltip). */
   void
   ShowRelaxBackend(const ReformationOutputs & outputs);
+  /** Shows the backend message, elided to the room the stage times leave, for what is left of its 10 s. */
+  void
+  ShowBackendMessage();
   void
   ShowAbout();
   void
@@ -162,9 +166,11 @@ private:
   /** While a left-drag in the CPR view turns the view, its steps go to the controller directly and the panel shows
    * the angle of each image as it is shown: a change of the panel repaints the window, which Qt composes with its
    * OpenGL views, and at the mouse's 60 Hz those repaints took the processor the logic needs. */
-  bool    m_Turning{ false };
-  bool    m_FullRangeOnNextResult{ false };
-  QString m_ShownBackendReason;
+  bool          m_Turning{ false };
+  bool          m_FullRangeOnNextResult{ false };
+  QString       m_ShownBackendReason;
+  QString       m_BackendMessage;
+  QElapsedTimer m_BackendMessageTime;
   /** The images on screen, and the full cut surface of the same request once it came. */
   std::shared_ptr<const ReformationResult> m_Shown;
   std::shared_ptr<const ReformationResult> m_ShownSurface;
