@@ -87,6 +87,10 @@ Open2DImage(const std::string & path, const std::string & role)
     const detail::ScopedConsoleCapture console;
     try
     {
+      if (!IsURIName(path))
+      {
+        detail::CheckImageIOIsOneWeRead(io->GetNameOfClass(), where, false);
+      }
       if (!IsURIName(path) && std::string(io->GetNameOfClass()) == "NiftiImageIO")
       {
         detail::CheckNiftiHeader(path, where);

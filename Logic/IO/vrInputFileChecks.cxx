@@ -230,4 +230,22 @@ CheckNiftiHeader(const std::string & path, const std::string & where)
     }
   }
 }
+
+void
+CheckImageIOIsOneWeRead(const std::string & ioClassName, const std::string & where, bool dicomAllowed)
+{
+  if (ioClassName == "NrrdImageIO" || ioClassName == "NiftiImageIO" || ioClassName == "MetaImageIO" ||
+      (dicomAllowed && ioClassName == "GDCMImageIO"))
+  {
+    return;
+  }
+  std::string format = ioClassName;
+  const auto  suffix = format.rfind("ImageIO");
+  if (suffix != std::string::npos)
+  {
+    format.erase(suffix);
+  }
+  throw InputError(where + ": holds a " + format + " image; NRRD, NIfTI or MetaImage" +
+                   (dicomAllowed ? std::string(" (or a DICOM series as a folder)") : std::string()) + " is expected");
+}
 } // namespace vr::detail

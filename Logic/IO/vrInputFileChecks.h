@@ -46,6 +46,12 @@ JSONNestingDepth(const std::string & path, const std::string & role);
  * header size of 348 or 540 in either byte order) are left alone. Throws vr::InputError "<where>: ...". */
 void
 CheckNiftiHeader(const std::string & path, const std::string & where);
+
+/** Refuses an ITK ImageIO (by its class name) other than NRRD, NIfTI and MetaImage (and DICOM when \a dicomAllowed):
+ * ITK picks a reader by content, so a PNG, JPEG, TIFF or BMP named like a volume would reach libraries whose error
+ * handling aborts the process on a corrupt file (ITK 5.2's PNG reader: libpng's default handler calls abort). */
+void
+CheckImageIOIsOneWeRead(const std::string & ioClassName, const std::string & where, bool dicomAllowed);
 } // namespace vr::detail
 
 #endif

@@ -177,6 +177,10 @@ ReadSegmentationMask(const std::string & path, const std::vector<double> & label
   }
   try
   {
+    if (!uri)
+    {
+      detail::CheckImageIOIsOneWeRead(io->GetNameOfClass(), where, false);
+    }
     if (!uri && std::string(io->GetNameOfClass()) == "NiftiImageIO")
     {
       detail::CheckNiftiHeader(path, where);

@@ -142,6 +142,10 @@ InspectVolumeFile(const std::string & path)
     const detail::ScopedConsoleCapture console;
     try
     {
+      if (!uri)
+      {
+        detail::CheckImageIOIsOneWeRead(io->GetNameOfClass(), where, true);
+      }
       if (!uri && std::string(io->GetNameOfClass()) == "NiftiImageIO")
       {
         detail::CheckNiftiHeader(path, where);

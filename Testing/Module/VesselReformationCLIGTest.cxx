@@ -1489,6 +1489,25 @@ TEST_F(BadInputTest, NIfTIWithANonFiniteOrientation)
   ExpectRejected({ patched, Centerlines() }, { "orientation.nii", "srow_x" });
 }
 
+TEST_F(BadInputTest, APNGNamedLikeAVolume)
+{
+  // ITK picks its reader by content: a PNG named .nrrd would reach libpng, whose default error handler (ITK 5.2's
+  // PNG reader sets no other) aborts the process on a corrupt file (a fuzzer's find). Only NRRD, NIfTI, MetaImage
+  // and DICOM are read as volumes.
+  using Slice = itk::Image<unsigned char, 2>;
+  auto slice = Slice::New();
+  slice->SetRegions(Slice::RegionType({ { 0, 0 } }, { { 8, 8 } }));
+  slice->Allocate(true);
+  auto writer = itk::ImageFileWriter<Slice>::New();
+  writer->SetInput(slice);
+  writer->SetFileName((m_Folder / "slice.png").string());
+  writer->Update();
+  const std::string png = ReadText(m_Folder / "slice.png");
+  fs::remove(m_Folder / "slice.png");
+  const std::string named = Write("scan.nrrd", png.substr(0, png.size() / 2));
+  ExpectRejected({ named, Centerlines() }, { "scan.nrrd", "PNG" });
+}
+
 TEST_F(BadInputTest, FourDimensionalVolume)
 {
   using Image4D = itk::Image<float, 4>;
