@@ -25,11 +25,18 @@ namespace itk
  *
  * The equation is the stationary condition of the robust (Welsch) energy
  * E(D) = sum over 4-neighbour edges of (1 - R(D_p - D_q)) / (2a), and Jacobi's passes descend it. The solver
- * descends it too, by lagged weights (iteratively reweighted least squares, a majorise-minimise scheme, so E never
- * rises): each outer iteration takes the weights R at the current depths and solves the weighted graph Laplacian
- * with the fixed pixels as Dirichlet values, approximately, by conjugate gradients preconditioned with a
- * multigrid V-cycle, until the residual of the outer iteration has fallen tenfold. From the same start it reaches
- * the fixed point Jacobi approaches; it does not jump to another one, as the steps of both follow the weights.
+ * descends it too, and every step it takes lowers E (measured, in float). Each outer iteration first tries a Newton
+ * step: the energy's own curvature along an edge is R(x) (1 - 2 a x^2), so the Hessian is the graph Laplacian with
+ * those weights (negative where |x| > J / sqrt(2), J = 1 / sqrt(a)), solved approximately by conjugate gradients
+ * preconditioned with a multigrid V-cycle of the lagged-weights Laplacian (weights R), until the residual has fallen
+ * tenfold. It is taken when it lowers E. Otherwise the solver falls back to lagged weights (iteratively reweighted
+ * least squares, a majorise-minimise step: the Laplacian with weights R, solved the same way, lowers E), and goes
+ * along that correction by the power of two up to 64 times it that lowers E most; where the conjugate gradients met
+ * negative curvature, it also tries that direction (in either sense, steps of J / 32 doubled up to 2 J) and takes
+ * whichever lowers E more. Lagged weights alone converge slowly where edges sit near or beyond the inflection
+ * J / sqrt(2), where their curvature R overstates the energy's: on the thoracic phantom's arch seams at 512 x 1024,
+ * 617 outer iterations against 51 with these steps (5 on the run-off phantom either way). From the same start the
+ * solver reaches the fixed point Jacobi approaches (the same energy to eight digits as lagged weights alone).
  *
  * The multigrid is a black-box multigrid (Dendy, "Black box multigrid", J. Comput. Phys. 48, 1982): coarse points
  * on every other row and column, interpolation that follows the weights (a pixel beside a depth jump interpolates
@@ -81,7 +88,7 @@ public:
     double Residual{ 0.0 };
   };
 
-  /** Buffers kept from one solve to the next (about 60 bytes per pixel): reusing one spares allocating and first
+  /** Buffers kept from one solve to the next (about 76 bytes per pixel): reusing one spares allocating and first
    * touching them. One solve at a time per workspace. */
   class Workspace
   {
