@@ -33,6 +33,10 @@ constexpr double InnerReduction = 0.1;
 constexpr unsigned int MaximumInnerIterations = 40;
 constexpr unsigned int RebuildAfterCycles = 4;
 
+/** Outer iterations take Newton steps from the first one whose residual has not fallen below this fraction of the
+ * previous one. */
+constexpr double NewtonAfterReduction = 0.5;
+
 /** The longest step along a lagged-weights correction, in multiples of it. */
 constexpr float MaximumStep = 64.0f;
 
@@ -1959,6 +1963,8 @@ public:
     bool   rebuild = true;
     double first = 0.0;
     double done = 0.0;
+    double previous = std::numeric_limits<double>::infinity();
+    bool   newton = false;
     for (unsigned int outer = 0;; ++outer)
     {
       if (outer > 0)
@@ -2007,7 +2013,10 @@ public:
         rebuild = false;
       }
       const double target = std::max(InnerReduction * residual, 0.5 * tolerance);
-      if (m_Isotropic)
+      // Newton steps once lagged weights have slowed down, for as long as they are taken.
+      newton = !m_Isotropic && (newton || residual > NewtonAfterReduction * previous);
+      previous = residual;
+      if (!newton)
       {
         SolveCorrection(target, false);
         ApplyCorrection(1.0f);
@@ -2018,6 +2027,7 @@ public:
       }
       else
       {
+        newton = false;
         float        curvatureStep = 0.0f;
         const double curvatureChange = m_NegativeCurvature ? SearchNegativeCurvature(curvatureStep) : 0.0;
         if (curvatureStep != 0.0f)

@@ -325,7 +325,7 @@ TEST(BilateralDepthRelaxSteadySolver, WholePhantomMapConvergesWithFixedPixelsUnc
 // The thoracic phantom's map (the arch's seams of 2-10 mm, near the kernel's inflection J / sqrt(2)) has pixels
 // whose edges sit where the energy's curvature R(x) (1 - 2 a x^2) is small or negative: lagged weights alone, whose
 // curvature is R(x), then creep (131 outer iterations at 128 x 256, 617 at 512 x 1024, the residual oscillating).
-// With Newton steps on the energy's own curvature and steps along its negative curvature, a few tens suffice (21).
+// With Newton steps on the energy's own curvature and steps along its negative curvature, a few tens suffice (19).
 // (Plain Jacobi to 1e-5 mm takes 27500 passes and half a minute here, too long for this suite; against it, the
 // median difference over free pixels was 0.04 mm.)
 TEST(BilateralDepthRelaxSteadySolver, ThoraxPhantomMapConvergesInFewOuterIterations)
