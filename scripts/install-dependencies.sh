@@ -18,6 +18,8 @@ packages=(
   pocl-opencl-icd ocl-icd-opencl-dev opencl-clhpp-headers clinfo   # OpenCL 3.0 on the CPU through PoCL
   libgtest-dev libbenchmark-dev libcli11-dev nlohmann-json3-dev
   libxml2-utils                                   # xmllint: the modules' XML against CTK's schema (a test)
+  qtbase5-dev libvtk9-qt-dev                      # the widgets and VesselReformationViewer: Qt 5 Widgets, VTK's Qt support
+  xvfb xauth                                      # a virtual X server: the widgets' tests and headless screenshots
   clang libclang-rt-14-dev                        # scripts/test.sh --sanitize and scripts/fuzz.sh: ASan, UBSan, libFuzzer
 )
 

@@ -1,0 +1,430 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// VesselReformationViewerBenchmarks: what a user of the viewer waits for, on the run-off phantom (1.5 mm voxels) at
+// 512 x 1024 pixels, 500 iterations of the CPU relaxation, w = 1, a = 0.5, in the whole viewer window (1600 x 1000,
+// module panel, CPR view and 3D view) under a virtual X server (Mesa's software OpenGL). Each figure stands beside the
+// logic's own time for the same change, measured in the same run:
+//   AngleChange        a new angle typed or released (a Final request): from the change to the new CPR on screen (the
+//                      CPR view's frame swapped). Counters, for each change: logic_ms, VesselReformationLogic::Update()
+//                      on the worker thread; gui_overhead_ms, the rest, made of to_request_ms (panel to controller),
+//                      to_worker_ms (until the worker starts the update), preview_surface_ms (the 3D view's preview
+//                      surface, on the worker), worker_rest_ms, show_ms (from the worker's hand-over to the window
+//                      having handled the result, render_2d_ms of it drawing the CPR view) and to_frame_ms (until Qt
+//                      swapped the frame). Their median and p95 over the repetitions come with the time's.
+//   Drag               a left-drag in the CPR view at 60 mouse events a second, 2 pixels (1 degree) each, for 3 s:
+//                      images shown per second, and for each shown image the time from the mouse event that asked for
+//                      its angle to its frame (latency), with the logic's time of those updates.
+//   Logic_AngleChange  the logic alone (no window) for the same changes: depth, relaxation, both CPRs.
+//   Window_Repaint     one synchronous repaint of the whole window (a spin box's or the progress bar's change costs
+//   it). ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
+//                      preview surface (every 4th pixel) drawn while dragging.
+// Repetitions are single changes (or single drags); median and p95 are computed over them.
+#include "vrReformationInputs.h"
+#include "vrVesselReformationLogic.h"
+#include "vrViewerWindow.h"
+
+#include <QApplication>
+#include <QCoreApplication>
+#include <QEventLoop>
+#include <QMouseEvent>
+#include <QTimer>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+constexpr double DesignAngle = 30.0;
+
+double
+Seconds(Clock::time_point start, Clock::time_point end)
+{
+  return std::chrono::duration<double>(end - start).count();
+}
+
+double
+Percentile(std::vector<double> values, double fraction)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  std::sort(values.begin(), values.end());
+  const double position = fraction * static_cast<double>(values.size() - 1);
+  const auto   low = static_cast<std::size_t>(std::floor(position));
+  const auto   high = std::min(values.size() - 1, low + 1);
+  return values[low] + (position - static_cast<double>(low)) * (values[high] - values[low]);
+}
+
+double
+P95(const std::vector<double> & values)
+{
+  return Percentile(values, 0.95);
+}
+
+vr::ReformationParameters
+BenchmarkParameters(double angle)
+{
+  vr::ReformationParameters parameters;
+  parameters.AngleInDegrees = angle;
+  parameters.ImageSize[0] = 512;
+  parameters.ImageSize[1] = 1024;
+  parameters.Iterations = 500;
+  parameters.Relaxation = 1.0;
+  parameters.Anisotropy = 0.5;
+  parameters.Backend = vr::RelaxBackend::CPU;
+  parameters.Window = 900.0;
+  parameters.Level = 200.0;
+  return parameters;
+}
+
+const vr::ReformationInputs &
+Phantom()
+{
+  static const vr::ReformationInputs inputs = vr::MakePhantomInputs("runoff", 1.5);
+  return inputs;
+}
+
+/** Runs the event loop until \a done() (checked after each event batch) or \a seconds pass; a 1 ms heartbeat wakes the
+ * loop so that the check also runs when no event comes. \return done(). */
+bool
+RunUntil(const std::function<bool()> & done, double seconds = 120.0)
+{
+  QTimer heartbeat;
+  heartbeat.start(1);
+  const auto start = Clock::now();
+  while (!done())
+  {
+    if (Seconds(start, Clock::now()) > seconds)
+    {
+      std::cerr << "timed out after " << seconds << " s" << std::endl;
+      return false;
+    }
+    QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+  }
+  return true;
+}
+
+/** The viewer window on the phantom, made once, settled after every use. */
+class Viewer
+{
+public:
+  static Viewer &
+  Instance()
+  {
+    static Viewer viewer;
+    return viewer;
+  }
+
+  vr::ViewerWindow &
+  Window()
+  {
+    return *m_Window;
+  }
+
+  /** Waits until nothing runs and the 3D view has drawn the full surface of the latest request. */
+  void
+  Settle()
+  {
+    if (!RunUntil(
+          [this]
+          {
+            return m_Window->GetController()->IsIdle() && m_Window->GetThreeDView()->IsShowingFullSurface() &&
+                   !m_Window->GetThreeDView()->IsInteracting() && m_RenderedFull;
+          }))
+    {
+      std::cerr << "not settled: idle " << m_Window->GetController()->IsIdle() << ", full surface shown "
+                << m_Window->GetThreeDView()->IsShowingFullSurface() << ", interacting "
+                << m_Window->GetThreeDView()->IsInteracting() << ", rendered full " << m_RenderedFull << std::endl;
+    }
+  }
+
+  /** The next angle: 30, 30.5, ... 39.5, 30, ... (the panel's angle has one decimal). */
+  double
+  NextAngle()
+  {
+    return DesignAngle + 0.5 * static_cast<double>(++m_Step % 20);
+  }
+
+  bool m_RenderedFull{ false };
+
+private:
+  Viewer()
+  {
+    m_Window = std::make_unique<vr::ViewerWindow>();
+    m_Window->resize(1600, 1000);
+    m_Window->GetPanel()->SetParameters(BenchmarkParameters(DesignAngle));
+    m_Window->show();
+    QObject::connect(m_Window->GetThreeDView(),
+                     &vr::ThreeDView::rendered,
+                     m_Window.get(),
+                     [this](double, bool full) { m_RenderedFull = full; });
+    QObject::connect(m_Window->GetController(),
+                     &vr::ReformationController::resultReady,
+                     m_Window.get(),
+                     [this] { m_RenderedFull = false; });
+    m_Window->GetController()->LoadInputs([] { return Phantom(); }, QStringLiteral("the run-off phantom"));
+    RunUntil([this] { return m_Window->GetCPRView()->GetResult() != nullptr; }, 600.0);
+    Settle();
+  }
+
+  std::unique_ptr<vr::ViewerWindow> m_Window;
+  std::size_t                       m_Step{ 0 };
+};
+
+void
+AngleChange(benchmark::State & state)
+{
+  Viewer &           viewer = Viewer::Instance();
+  vr::ViewerWindow & window = viewer.Window();
+  // One change per repetition: its parts go into counters, whose median and p95 over the repetitions Google
+  // Benchmark reports beside the time's.
+  double logic = 0.0, preview = 0.0, request = 0.0, queue = 0.0, handover = 0.0, show = 0.0, render = 0.0, swap = 0.0,
+         overhead = 0.0;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    viewer.Settle();
+    std::uint64_t     shownId = 0;
+    Clock::time_point shownTime;
+    Clock::time_point handledTime;
+    auto              displayed = QObject::connect(window.GetCPRView(),
+                                      &vr::CPRView::imageDisplayed,
+                                      window.GetCPRView(),
+                                      [&](std::uint64_t id)
+                                      {
+                                        shownId = id;
+                                        shownTime = Clock::now();
+                                      });
+    // Connected after the window's own slot, so it runs when the window has handled the result.
+    auto         handled = QObject::connect(window.GetController(),
+                                    &vr::ReformationController::resultReady,
+                                    window.GetCPRView(),
+                                    [&](const std::shared_ptr<const vr::ReformationResult> & result)
+                                    {
+                                      if (!result->HasFullSurface())
+                                      {
+                                        handledTime = Clock::now();
+                                      }
+                                    });
+    const double angle = viewer.NextAngle();
+    const auto   start = Clock::now();
+    window.GetPanel()->SetAngle(angle, vr::RequestKind::Final);
+    if (window.GetPanel()->GetAngle() != angle)
+    {
+      state.SkipWithError("the panel did not take the angle");
+      break;
+    }
+    const bool shown = RunUntil(
+      [&]
+      {
+        const auto result = window.GetCPRView()->GetResult();
+        return shownId != 0 && result && result->RequestId == shownId &&
+               result->Outputs.View.GetAngleInDegrees() == angle;
+      });
+    QObject::disconnect(displayed);
+    QObject::disconnect(handled);
+    if (!shown)
+    {
+      state.SkipWithError("the new angle's CPR was not displayed");
+      break;
+    }
+    const auto   result = window.GetCPRView()->GetResult();
+    const double total = Seconds(start, shownTime);
+    state.SetIterationTime(total);
+    logic = result->UpdateSeconds;
+    preview = result->PreviewSeconds;
+    request = Seconds(start, result->RequestTime);
+    queue = Seconds(result->RequestTime, result->StartTime);
+    handover = Seconds(result->StartTime, result->ReadyTime) - logic - preview;
+    show = Seconds(result->ReadyTime, handledTime);
+    render = window.GetCPRView()->GetLastRenderSeconds();
+    swap = Seconds(handledTime, shownTime);
+    overhead = total - logic;
+    if (result->StagesRun.Depth != 1 || result->StagesRun.Relax != 1)
+    {
+      state.SkipWithError("the angle change did not rerun depth and relaxation");
+    }
+  }
+  state.counters["logic_ms"] = 1000.0 * logic;
+  state.counters["gui_overhead_ms"] = 1000.0 * overhead;
+  state.counters["to_request_ms"] = 1000.0 * request;
+  state.counters["to_worker_ms"] = 1000.0 * queue;
+  state.counters["worker_rest_ms"] = 1000.0 * handover;
+  state.counters["preview_surface_ms"] = 1000.0 * preview;
+  state.counters["show_ms"] = 1000.0 * show;
+  state.counters["render_2d_ms"] = 1000.0 * render;
+  state.counters["to_frame_ms"] = 1000.0 * swap;
+  viewer.Settle();
+}
+
+void
+Drag(benchmark::State & state)
+{
+  Viewer &            viewer = Viewer::Instance();
+  vr::ViewerWindow &  window = viewer.Window();
+  QWidget *           target = window.GetCPRView()->GetRenderWidget();
+  std::vector<double> latencies;
+  std::vector<double> logicTimes;
+  double              framesPerSecond = 0.0;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    viewer.Settle();
+    window.GetPanel()->SetAngle(DesignAngle, vr::RequestKind::Final);
+    viewer.Settle();
+    // Angle asked for by each mouse event, and when.
+    std::map<long long, Clock::time_point> asked;
+    std::vector<double>                    dragLatencies;
+    int                                    frames = 0;
+    auto                                   connection = QObject::connect(window.GetCPRView(),
+                                       &vr::CPRView::imageDisplayed,
+                                       window.GetCPRView(),
+                                       [&](std::uint64_t)
+                                       {
+                                         const auto now = Clock::now();
+                                         const auto result = window.GetCPRView()->GetResult();
+                                         const auto key = std::llround(10.0 * result->Outputs.View.GetAngleInDegrees());
+                                         const auto found = asked.find(key);
+                                         if (found != asked.end() && result->Kind == vr::RequestKind::Interactive)
+                                         {
+                                           dragLatencies.push_back(Seconds(found->second, now));
+                                           logicTimes.push_back(result->UpdateSeconds);
+                                           ++frames;
+                                         }
+                                       });
+    const QPointF                          origin(200.0, 400.0);
+    auto send = [&](QEvent::Type type, const QPointF & position, Qt::MouseButton button, Qt::MouseButtons buttons)
+    {
+      QMouseEvent event(type, position, target->mapToGlobal(position.toPoint()), button, buttons, Qt::NoModifier);
+      QApplication::sendEvent(target, &event);
+    };
+    const auto start = Clock::now();
+    send(QEvent::MouseButtonPress, origin, Qt::LeftButton, Qt::LeftButton);
+    constexpr int    events = 180;          // 3 s at 60 Hz
+    constexpr double pixelsPerEvent = -2.0; // leftwards: the angle grows by 1 degree per event
+    for (int k = 1; k <= events; ++k)
+    {
+      const auto due = start + std::chrono::microseconds(16667 * k);
+      RunUntil([&] { return Clock::now() >= due; }, 10.0);
+      const double angle = vr::WrapAngle(DesignAngle + vr::CPRView::DegreesPerPixel * pixelsPerEvent * k);
+      asked.emplace(std::llround(10.0 * angle), Clock::now());
+      send(QEvent::MouseMove, origin + QPointF(pixelsPerEvent * k, 0.0), Qt::NoButton, Qt::LeftButton);
+    }
+    const double seconds = Seconds(start, Clock::now());
+    QObject::disconnect(connection);
+    send(QEvent::MouseButtonRelease, origin + QPointF(pixelsPerEvent * events, 0.0), Qt::LeftButton, Qt::NoButton);
+    state.SetIterationTime(seconds);
+    framesPerSecond += frames / seconds;
+    latencies.insert(latencies.end(), dragLatencies.begin(), dragLatencies.end());
+  }
+  viewer.Settle();
+  const double iterations = static_cast<double>(state.iterations());
+  state.counters["frames_per_s"] = framesPerSecond / iterations;
+  state.counters["latency_median_ms"] = 1000.0 * Percentile(latencies, 0.5);
+  state.counters["latency_p95_ms"] = 1000.0 * P95(latencies);
+  state.counters["logic_median_ms"] = 1000.0 * Percentile(logicTimes, 0.5);
+}
+
+void
+Logic_AngleChange(benchmark::State & state)
+{
+  vr::VesselReformationLogic logic;
+  logic.SetVolumeNode(Phantom().Volume);
+  logic.SetCenterlineNode(Phantom().Centerlines);
+  logic.SetSurfaceEnabled(false);
+  logic.SetParameters(BenchmarkParameters(DesignAngle));
+  logic.Update();
+  std::size_t step = 0;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    const auto start = Clock::now();
+    logic.SetParameters(BenchmarkParameters(DesignAngle + 0.5 * static_cast<double>(++step % 20)));
+    benchmark::DoNotOptimize(logic.Update().CPR.GetPointer());
+    state.SetIterationTime(Seconds(start, Clock::now()));
+  }
+}
+
+void
+ThreeDView_Render(benchmark::State & state)
+{
+  Viewer &         viewer = Viewer::Instance();
+  vr::ThreeDView * view = viewer.Window().GetThreeDView();
+  const bool       full = state.range(0) == 1;
+  viewer.Settle();
+  view->SetInteracting(!full);
+  long long points = 0;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    view->Render();
+    state.SetIterationTime(view->GetLastRenderSeconds());
+    points = view->GetLastRenderedSurfacePoints();
+  }
+  view->SetInteracting(false);
+  view->Render();
+  state.counters["surface_points"] = static_cast<double>(points);
+  state.SetLabel(full ? "full" : "preview");
+  viewer.Settle();
+}
+
+/** A repaint of the whole window (what a changed spin box or progress bar costs: Qt composes the window with its two
+ * OpenGL views through OpenGL, here Mesa's software one), synchronous. */
+void
+Window_Repaint(benchmark::State & state)
+{
+  Viewer & viewer = Viewer::Instance();
+  viewer.Settle();
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    const auto start = Clock::now();
+    viewer.Window().repaint();
+    state.SetIterationTime(Seconds(start, Clock::now()));
+  }
+}
+
+constexpr int Repetitions = 30;
+
+BENCHMARK(AngleChange)
+  ->Iterations(1)
+  ->Repetitions(Repetitions)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(Logic_AngleChange)
+  ->Iterations(1)
+  ->Repetitions(Repetitions)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(Drag)
+  ->Iterations(1)
+  ->Repetitions(3)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(Window_Repaint)
+  ->Iterations(1)
+  ->Repetitions(Repetitions)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(ThreeDView_Render)
+  ->Arg(1)
+  ->Arg(0)
+  ->Iterations(1)
+  ->Repetitions(10)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
+  ->ReportAggregatesOnly(true);
+} // namespace

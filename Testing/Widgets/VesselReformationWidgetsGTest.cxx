@@ -1,0 +1,610 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The widgets and the viewer window, driven as a user would (slider, spin boxes, mouse events) under a virtual X
+// server, checked against an independent run of the module logic on the same nodes.
+#include "vrWidgetsTestSupport.h"
+
+#include "ui_vrModulePanel.h"
+
+#include "itkCPRViewGeometry.h"
+#include "vrCoordinateFrames.h"
+#include "vrImageIO.h"
+#include "vrInputError.h"
+#include "vrOutputWriter.h"
+#include "vrSurfacePreview.h"
+#include "vrTestFiles.h"
+#include "vrVolumeIO.h"
+
+#include <QAbstractButton>
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QMessageBox>
+#include <QSlider>
+#include <QTest>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <vtkImageData.h>
+#include <vtkPolyData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace
+{
+using namespace vr;
+using namespace vr::test;
+
+constexpr double StartAngle = 30.0;
+
+/** Whole-run stage counts after minus before. */
+struct Runs
+{
+  unsigned int Conversion, Depth, Relax, Resample, UnfilteredSamplings, RelaxedSamplings, Surface;
+};
+Runs
+Difference(const StageCounts & after, const StageCounts & before)
+{
+  return { after.Conversion - before.Conversion,
+           after.Depth - before.Depth,
+           after.Relax - before.Relax,
+           after.Resample - before.Resample,
+           after.UnfilteredSamplings - before.UnfilteredSamplings,
+           after.RelaxedSamplings - before.RelaxedSamplings,
+           after.Surface - before.Surface };
+}
+
+/** The grey value VTK shows for \a value through window/level, read back from the CPR view's frame. */
+int
+FrameGrey(const QImage & frame, const QPointF & position)
+{
+  const QColor color =
+    frame.pixelColor(static_cast<int>(std::floor(position.x())), static_cast<int>(std::floor(position.y())));
+  EXPECT_EQ(color.red(), color.green());
+  EXPECT_EQ(color.green(), color.blue());
+  return color.red();
+}
+
+/** Checks that the CPR view shows exactly \a expected (the logic's CPR): the image data its actor draws equals it
+ * pixel for pixel, and the frame on screen shows those pixels through window/level. */
+void
+ExpectShows(ViewerWindow & window, VolumeNode * expected)
+{
+  CPRView *      view = window.GetCPRView();
+  vtkImageData * shown = view->GetDisplayedImage(false);
+  int            dimensions[3];
+  expected->GetImageData()->GetDimensions(dimensions);
+  int shownDimensions[3];
+  shown->GetDimensions(shownDimensions);
+  ASSERT_EQ(shownDimensions[0], dimensions[0]);
+  ASSERT_EQ(shownDimensions[1], dimensions[1]);
+  const std::vector<float> reference = NodePixels(expected);
+  const auto *             pixels = static_cast<const float *>(shown->GetScalarPointer());
+  std::size_t              different = 0;
+  for (std::size_t k = 0; k < reference.size(); ++k)
+  {
+    different += pixels[k] == reference[k] ? 0 : 1;
+  }
+  EXPECT_EQ(different, 0u) << "of " << reference.size() << " pixels";
+
+  // On screen: pixel centres sampled on a grid, each image pixel spanning a few screen pixels (nearest interpolation).
+  const QImage frame = view->GetRenderWidget()->grabFramebuffer();
+  const double window_ = view->GetWindow();
+  const double level = view->GetLevel();
+  int          checked = 0;
+  int          worst = 0;
+  for (int j = 3; j < dimensions[1]; j += 17)
+  {
+    for (int i = 2; i < dimensions[0]; i += 11)
+    {
+      const QPointF position = view->WidgetPositionOfPixel(i, j, false);
+      const int     expectedGrey =
+        WindowLevelToByte(reference[static_cast<std::size_t>(j) * dimensions[0] + i], window_, level);
+      worst = std::max(worst, std::abs(FrameGrey(frame, position) - expectedGrey));
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_LE(worst, 1) << "largest difference between the frame and the logic's CPR through window/level";
+}
+
+class WidgetsTest : public ::testing::Test
+{
+protected:
+  void
+  SetUp() override
+  {
+    m_Window = MakeWindowOnSmallPhantom(StartAngle);
+    ASSERT_TRUE(m_Window->GetCPRView()->GetResult()) << m_Window->GetLastError().toStdString();
+  }
+
+  ViewerWindow &
+  Window()
+  {
+    return *m_Window;
+  }
+  ReformationController &
+  Controller()
+  {
+    return *m_Window->GetController();
+  }
+
+  std::unique_ptr<ViewerWindow> m_Window;
+};
+
+TEST_F(WidgetsTest, StartsOnThePhantomAndShowsTheLogicsCPR)
+{
+  const auto shown = Window().GetCPRView()->GetResult();
+  EXPECT_DOUBLE_EQ(shown->Outputs.View.GetAngleInDegrees(), StartAngle);
+  EXPECT_EQ(shown->Outputs.View.GetSize()[0], 128u);
+  const ReformationOutputs reference = ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle));
+  ExpectShows(Window(), reference.CPR);
+  EXPECT_TRUE(Window().GetThreeDView()->IsShowingFullSurface());
+}
+
+TEST_F(WidgetsTest, MovingTheAngleSliderRerunsDepthRelaxAndResampleOnceAndShowsTheLogicsCPRAtThatAngle)
+{
+  const StageCounts before = Controller().GetStageExecutionCounts();
+  Window().GetPanel()->GetAngleSlider()->setValue(-450); // tenths of a degree
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const Runs runs = Difference(Controller().GetStageExecutionCounts(), before);
+  EXPECT_EQ(runs.Conversion, 0u);
+  EXPECT_EQ(runs.Depth, 1u);
+  EXPECT_EQ(runs.Relax, 1u);
+  EXPECT_EQ(runs.Resample, 1u);
+  EXPECT_EQ(runs.UnfilteredSamplings, 1u);
+  EXPECT_EQ(runs.RelaxedSamplings, 1u);
+  EXPECT_EQ(runs.Surface, 1u);
+
+  const auto shown = Window().GetCPRView()->GetResult();
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngleSpinBox()->value(), -45.0);
+  EXPECT_DOUBLE_EQ(shown->Outputs.View.GetAngleInDegrees(), -45.0);
+  const ReformationOutputs reference = ReferenceOutputs(SmallPhantomInputs(), TestParameters(-45.0));
+  ExpectShows(Window(), reference.CPR);
+  // And it differs from the image at the old angle, so the comparison can fail.
+  const auto old = NodePixels(ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle)).CPR);
+  EXPECT_NE(old, NodePixels(reference.CPR));
+}
+
+TEST_F(WidgetsTest, ChangingTheWindowRerunsNothingAndRedrawsThroughTheNewWindow)
+{
+  const StageCounts       before = Controller().GetStageExecutionCounts();
+  const RequestStatistics requestsBefore = Controller().GetStatistics();
+  const auto              shownBefore = Window().GetCPRView()->GetResult();
+  Window().GetPanel()->GetWindowSpinBox()->setValue(400.0);
+  Window().GetPanel()->GetLevelSpinBox()->setValue(40.0);
+  QTest::qWait(300);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const Runs runs = Difference(Controller().GetStageExecutionCounts(), before);
+  EXPECT_EQ(runs.Conversion + runs.Depth + runs.Relax + runs.Resample + runs.Surface, 0u);
+  EXPECT_EQ(Controller().GetStatistics().Displayed, requestsBefore.Displayed);
+  EXPECT_EQ(Window().GetCPRView()->GetResult(), shownBefore);
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetWindow(), 400.0);
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetLevel(), 40.0);
+  ExpectShows(Window(), shownBefore->Outputs.CPR);
+
+  // A right-drag changes the window too, and reruns nothing either.
+  QWidget *     target = Window().GetCPRView()->GetRenderWidget();
+  const QPointF start(200.0, 300.0);
+  SendMouse(target, QEvent::MouseButtonPress, start, Qt::RightButton, Qt::RightButton);
+  SendMouse(target, QEvent::MouseMove, start + QPointF(128.0, -64.0), Qt::NoButton, Qt::RightButton);
+  SendMouse(target, QEvent::MouseButtonRelease, start + QPointF(128.0, -64.0), Qt::RightButton, Qt::NoButton);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  // Documented: window x (1 + dx / 256), level - window dy / 512.
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetWindow(), 600.0);
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetLevel(), 90.0);
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetWindowSpinBox()->value(), 600.0);
+  const Runs after = Difference(Controller().GetStageExecutionCounts(), before);
+  EXPECT_EQ(after.Conversion + after.Depth + after.Relax + after.Resample + after.Surface, 0u);
+}
+
+TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
+{
+  const ReformationOutputs reference = ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle));
+  const auto               cpr = NodePixels(reference.CPR);
+  const auto               depth = NodePixels(reference.RelaxedDepth);
+  vtkImageData *           labels = reference.OwnerLabels->GetImageData();
+  vtkImageData *           mask = reference.FixedMask->GetImageData();
+  const int                width = 128;
+  const int                height = 256;
+  // Pixels on vessels (fixed, so owned by a branch) and pixels between them.
+  std::vector<std::pair<int, int>> pixels;
+  for (int j = 20; j < height && pixels.size() < 6; j += 37)
+  {
+    for (int i = 0; i < width; ++i)
+    {
+      if (mask->GetScalarComponentAsDouble(i, j, 0, 0) > 0.0)
+      {
+        pixels.emplace_back(i, j);
+        break;
+      }
+    }
+  }
+  ASSERT_GE(pixels.size(), 5u);
+  pixels.emplace_back(0, 0);
+  pixels.emplace_back(width - 1, height - 1);
+  pixels.emplace_back(63, 128);
+
+  // The independent reference for the position: DESIGN 3.2's B(i, j) + d v from the view's C, u, v and up, in LPS,
+  // then RAS by negating x and y.
+  const itk::CPRViewGeometry & view = reference.View;
+  QWidget *                    target = Window().GetCPRView()->GetRenderWidget();
+  for (const auto & [i, j] : pixels)
+  {
+    const QPointF position = Window().GetCPRView()->WidgetPositionOfPixel(i, j, false);
+    SendMouse(target,
+              QEvent::MouseMove,
+              QPointF(std::floor(position.x()), std::floor(position.y())),
+              Qt::NoButton,
+              Qt::NoButton);
+    const PixelReadout & readout = Window().GetCPRView()->GetReadout();
+    ASSERT_TRUE(readout.Inside) << i << "," << j;
+    EXPECT_EQ(readout.Column, i);
+    EXPECT_EQ(readout.Row, j);
+    const std::size_t k = static_cast<std::size_t>(j) * width + i;
+    EXPECT_EQ(readout.Intensity, cpr[k]) << i << "," << j;
+    EXPECT_EQ(readout.Depth, depth[k]) << i << "," << j;
+    const int branch = static_cast<int>(labels->GetScalarComponentAsDouble(i, j, 0, 0));
+    EXPECT_EQ(readout.Branch, branch);
+    if (mask->GetScalarComponentAsDouble(i, j, 0, 0) > 0.0)
+    {
+      EXPECT_GT(branch, 0);
+      EXPECT_GT(readout.Intensity, 150.0) << "a fixed pixel lies in the contrast-filled lumen";
+      EXPECT_NE(readout.BranchName.find("iliac") == std::string::npos &&
+                  readout.BranchName.find("femoral") == std::string::npos &&
+                  readout.BranchName.find("aorta") == std::string::npos &&
+                  readout.BranchName.find("tibial") == std::string::npos &&
+                  readout.BranchName.find("popliteal") == std::string::npos &&
+                  readout.BranchName.find("peroneal") == std::string::npos,
+                true)
+        << "the phantom's anatomical name, got " << readout.BranchName;
+    }
+    const double d = depth[k];
+    double       lps[3];
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      lps[axis] = view.GetCenter()[axis] + (i - 0.5 * (width - 1)) * view.GetSpacing()[0] * view.GetU()[axis] -
+                  (j - 0.5 * (height - 1)) * view.GetSpacing()[1] * view.GetUp()[axis] + d * view.GetV()[axis];
+    }
+    EXPECT_NEAR(readout.RAS[0], -lps[0], 1e-6);
+    EXPECT_NEAR(readout.RAS[1], -lps[1], 1e-6);
+    EXPECT_NEAR(readout.RAS[2], lps[2], 1e-6);
+    // The same point as the logic's cut surface (float coordinates) at that pixel.
+    double surfacePoint[3];
+    reference.Surface->GetPoint(static_cast<vtkIdType>(k), surfacePoint);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      EXPECT_NEAR(readout.RAS[axis], surfacePoint[axis], 1e-3);
+    }
+  }
+  // Outside the image there is no readout.
+  SendMouse(target, QEvent::MouseMove, QPointF(2.0, 2.0), Qt::NoButton, Qt::NoButton);
+  EXPECT_FALSE(Window().GetCPRView()->GetReadout().Inside);
+}
+
+TEST_F(WidgetsTest, AHorizontalDragOfNPixelsTurnsTheViewByTheDocumentedAmount)
+{
+  QWidget *     target = Window().GetCPRView()->GetRenderWidget();
+  const QPointF start(300.0, 400.0);
+  constexpr int N = 40;
+  SendMouse(target, QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton);
+  for (int step = 1; step <= 4; ++step)
+  {
+    // Vertical motion does not turn the view.
+    SendMouse(target, QEvent::MouseMove, start + QPointF(N * step / 4.0, 7.0 * step), Qt::NoButton, Qt::LeftButton);
+    QTest::qWait(5);
+  }
+  // While the button is down the 3D view shows the preview surface.
+  ASSERT_TRUE(WaitUntil([&] { return Controller().IsIdle(); }));
+  QTest::qWait(50);
+  EXPECT_FALSE(Window().GetThreeDView()->IsShowingFullSurface());
+  const auto during = Window().GetCPRView()->GetResult();
+  EXPECT_EQ(during->Kind, RequestKind::Interactive);
+  // The panel follows the drag at the pace of the images shown.
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngle(), during->Outputs.View.GetAngleInDegrees());
+  SendMouse(target, QEvent::MouseButtonRelease, start + QPointF(N, 28.0), Qt::LeftButton, Qt::NoButton);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+
+  const double expected = StartAngle + CPRView::DegreesPerPixel * N; // -0.5 degrees per pixel: 30 - 20 = 10
+  EXPECT_DOUBLE_EQ(expected, 10.0);
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngle(), expected);
+  const auto shown = Window().GetCPRView()->GetResult();
+  EXPECT_EQ(shown->Kind, RequestKind::Final);
+  EXPECT_DOUBLE_EQ(shown->Outputs.View.GetAngleInDegrees(), expected);
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(expected)).CPR);
+  EXPECT_TRUE(Window().GetThreeDView()->IsShowingFullSurface());
+
+  // Dragging left turns the other way, across the wrap at -180.
+  Window().GetPanel()->SetAngle(-170.0, RequestKind::Final);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  SendMouse(target, QEvent::MouseButtonPress, start, Qt::LeftButton, Qt::LeftButton);
+  SendMouse(target, QEvent::MouseMove, start + QPointF(60.0, 0.0), Qt::NoButton, Qt::LeftButton);
+  SendMouse(target, QEvent::MouseButtonRelease, start + QPointF(60.0, 0.0), Qt::LeftButton, Qt::NoButton);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngle(), 160.0); // -170 - 30 = -200, i.e. 160
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetResult()->Outputs.View.GetAngleInDegrees(), 160.0);
+}
+
+TEST_F(WidgetsTest, TwoRequestsInQuickSuccessionDisplayOnlyTheSecond)
+{
+  std::vector<std::uint64_t> displayed;
+  QObject::connect(Window().GetCPRView(),
+                   &CPRView::imageDisplayed,
+                   Window().GetCPRView(),
+                   [&](std::uint64_t id) { displayed.push_back(id); });
+  const RequestStatistics before = Controller().GetStatistics();
+  Window().GetPanel()->SetAngle(50.0, RequestKind::Final);
+  Window().GetPanel()->SetAngle(70.0, RequestKind::Final);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  ASSERT_EQ(displayed.size(), 1u);
+  const auto shown = Window().GetCPRView()->GetResult();
+  EXPECT_EQ(shown->RequestId, displayed.front());
+  EXPECT_DOUBLE_EQ(shown->Outputs.View.GetAngleInDegrees(), 70.0);
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(70.0)).CPR);
+  const RequestStatistics after = Controller().GetStatistics();
+  EXPECT_EQ(after.Displayed - before.Displayed, 1u);
+  EXPECT_EQ((after.Superseded - before.Superseded) + (after.Aborted - before.Aborted) + (after.Stale - before.Stale),
+            1u)
+    << "the first request was replaced while waiting, aborted while running, or dropped when it finished late";
+}
+
+TEST_F(WidgetsTest, ARequestArrivingDuringARelaxationAbortsItThroughTheLogic)
+{
+  // A long relaxation, then a new request as soon as the relaxation reports progress.
+  ReformationParameters slow = TestParameters(StartAngle);
+  slow.Iterations = 20000;
+  Window().GetPanel()->SetParameters(slow);
+  bool                       relaxing = false;
+  auto                       connection = QObject::connect(Window().GetController(),
+                                     &ReformationController::progressChanged,
+                                     Window().GetController(),
+                                     [&](double fraction, const QString & stage)
+                                     { relaxing = relaxing || (stage == QLatin1String("relax") && fraction > 0.2); });
+  std::vector<std::uint64_t> displayed;
+  QObject::connect(Window().GetCPRView(),
+                   &CPRView::imageDisplayed,
+                   Window().GetCPRView(),
+                   [&](std::uint64_t id) { displayed.push_back(id); });
+  const RequestStatistics before = Controller().GetStatistics();
+  Window().GetPanel()->SetAngle(80.0, RequestKind::Final);
+  ASSERT_TRUE(WaitUntil([&] { return relaxing; }, 60.0));
+  QObject::disconnect(connection);
+  Window().GetPanel()->SetParameters(TestParameters(StartAngle));
+  Window().GetPanel()->SetAngle(-80.0, RequestKind::Final);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const RequestStatistics after = Controller().GetStatistics();
+  EXPECT_EQ(after.Aborted - before.Aborted, 1u);
+  EXPECT_EQ(after.Displayed - before.Displayed, 1u);
+  ASSERT_EQ(displayed.size(), 1u);
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetResult()->Outputs.View.GetAngleInDegrees(), -80.0);
+  EXPECT_EQ(Window().GetCPRView()->GetResult()->Parameters.Iterations, 200);
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(-80.0)).CPR);
+}
+
+/** The error dialog the window opened, or null. */
+QMessageBox *
+ErrorDialog(ViewerWindow & window)
+{
+  for (QMessageBox * box : window.findChildren<QMessageBox *>(QStringLiteral("errorDialog")))
+  {
+    if (box->isVisible())
+    {
+      return box;
+    }
+  }
+  return nullptr;
+}
+
+TEST_F(WidgetsTest, OpeningACorruptFileShowsTheLogicsMessageAndThePreviousDataStays)
+{
+  ScopedTemporaryFolder folder;
+  const std::string     corruptVolume = folder.File("corrupt.mha");
+  WriteTextFile(
+    corruptVolume,
+    "ObjectType = Image\nNDims = 3\nDimSize = 40 40\nElementType = MET_FLOAT\nElementDataFile = LOCAL\n\x01\x02");
+  const std::string corruptCenterlines = folder.File("corrupt.vtp");
+  WriteTextFile(corruptCenterlines,
+                "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\"><PolyData><Piece NumberOfPoints=\"");
+  // ITK appends the C library's errno text ("; Reason: ..."), which depends on what ran before: left out of the
+  // comparison.
+  auto withoutReason = [](const std::string & message) { return message.substr(0, message.find("; Reason:")); };
+  const std::string expectedVolumeMessage = withoutReason(InputErrorOf([&] { ReadVolume(corruptVolume); }));
+  const std::string expectedCenterlineMessage =
+    withoutReason(InputErrorOf([&] { ReadCenterlineNode(corruptCenterlines); }));
+  ASSERT_FALSE(expectedVolumeMessage.empty());
+  ASSERT_FALSE(expectedCenterlineMessage.empty());
+
+  const auto inputsBefore = Controller().GetInputs();
+  const auto shownBefore = Window().GetCPRView()->GetResult();
+  const auto pixelsBefore = NodePixels(shownBefore->Outputs.CPR);
+  int        errors = 0;
+  QObject::connect(&Window(), &ViewerWindow::errorShown, &Window(), [&] { ++errors; });
+
+  Window().OpenVolume(QString::fromStdString(corruptVolume));
+  ASSERT_TRUE(WaitUntil([&] { return errors == 1; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  QMessageBox * dialog = ErrorDialog(Window());
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_EQ(withoutReason(dialog->text().toStdString()), expectedVolumeMessage);
+  EXPECT_NE(dialog->windowTitle().toStdString().find("corrupt.mha"), std::string::npos);
+  EXPECT_NE(expectedVolumeMessage.find("corrupt.mha"), std::string::npos) << "the logic's message names the file";
+  dialog->close();
+
+  Window().OpenCenterlines(QString::fromStdString(corruptCenterlines));
+  ASSERT_TRUE(WaitUntil([&] { return errors == 2; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  dialog = ErrorDialog(Window());
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_EQ(withoutReason(dialog->text().toStdString()), expectedCenterlineMessage);
+  dialog->close();
+
+  Window().OpenVolume(QString::fromStdString(folder.File("missing.nrrd")));
+  ASSERT_TRUE(WaitUntil([&] { return errors == 3; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  dialog = ErrorDialog(Window());
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_NE(dialog->text().toStdString().find("missing.nrrd"), std::string::npos);
+  dialog->close();
+
+  // The previous data stays on screen and in use.
+  EXPECT_EQ(Controller().GetInputs(), inputsBefore);
+  EXPECT_EQ(Window().GetCPRView()->GetResult(), shownBefore);
+  ExpectShows(Window(), shownBefore->Outputs.CPR);
+  EXPECT_EQ(NodePixels(shownBefore->Outputs.CPR), pixelsBefore);
+  Window().GetPanel()->SetAngle(-30.0, RequestKind::Final);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_EQ(Window().GetCPRView()->GetResult()->Inputs, inputsBefore);
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(-30.0)).CPR);
+}
+
+TEST_F(WidgetsTest, AnInvalidParameterIsMarkedAndTheImageStays)
+{
+  const auto shownBefore = Window().GetCPRView()->GetResult();
+  QString    error;
+  QObject::connect(&Window(),
+                   &ViewerWindow::errorShown,
+                   &Window(),
+                   [&](const QString &, const QString & message) { error = message; });
+  Window().GetPanel()->GetUi().heightSpin->setValue(0); // "fit" with a given width: the logic refuses the pair
+  ASSERT_TRUE(WaitUntil([&] { return !error.isEmpty(); }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_NE(error.toStdString().find("view size"), std::string::npos) << error.toStdString();
+  EXPECT_FALSE(Window().GetPanel()->GetUi().widthSpin->styleSheet().isEmpty());
+  EXPECT_FALSE(Window().GetPanel()->GetUi().heightSpin->styleSheet().isEmpty());
+  EXPECT_EQ(Window().GetCPRView()->GetResult(), shownBefore);
+  // A valid size again clears the mark and reforms.
+  Window().GetPanel()->GetUi().heightSpin->setValue(256);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_TRUE(Window().GetPanel()->GetUi().widthSpin->styleSheet().isEmpty());
+}
+
+TEST_F(WidgetsTest, SavesTheOutputsOnScreenAllOrNothing)
+{
+  ScopedTemporaryFolder folder;
+  ASSERT_TRUE(Window().SaveOutputs(QString::fromStdString(folder.Path().string())));
+  const std::vector<std::string> expected = { "cpr-unfiltered.nrrd", "cpr.nrrd",   "cpr.png",     "cut-surface.vtp",
+                                              "depth-relaxed.nrrd",  "depth.nrrd", "labels.nrrd", "mask.nrrd" };
+  EXPECT_EQ(folder.Entries(), expected);
+  const auto saved = ReadDepthImage(folder.File("cpr.nrrd"));
+  const auto shown = NodePixels(Window().GetCPRView()->GetResult()->Outputs.CPR);
+  EXPECT_EQ(std::vector<float>(saved->GetBufferPointer(), saved->GetBufferPointer() + shown.size()), shown);
+
+  int errors = 0;
+  QObject::connect(&Window(), &ViewerWindow::errorShown, &Window(), [&] { ++errors; });
+  const std::string missing = folder.File("no-such-folder");
+  EXPECT_FALSE(Window().SaveOutputs(QString::fromStdString(missing)));
+  EXPECT_EQ(errors, 1);
+  EXPECT_FALSE(std::filesystem::exists(missing));
+  QMessageBox * dialog = ErrorDialog(Window());
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_NE(dialog->text().toStdString().find("no-such-folder"), std::string::npos) << dialog->text().toStdString();
+  dialog->close();
+}
+
+TEST_F(WidgetsTest, EveryControlOfThePanelHasATooltip)
+{
+  int controls = 0;
+  for (QWidget * control : Window().GetPanel()->findChildren<QWidget *>())
+  {
+    const bool isControl = qobject_cast<QAbstractSpinBox *>(control) || qobject_cast<QComboBox *>(control) ||
+                           qobject_cast<QAbstractButton *>(control) || qobject_cast<QSlider *>(control);
+    if (!isControl || control->parent() == nullptr || qobject_cast<QAbstractSpinBox *>(control->parentWidget()))
+    {
+      continue;
+    }
+    ++controls;
+    EXPECT_FALSE(control->toolTip().isEmpty()) << control->objectName().toStdString();
+  }
+  EXPECT_GE(controls, 30);
+}
+
+/** A controller alone on the small phantom, keeping every result it delivers. */
+struct ControllerRun
+{
+  ReformationController                                 Controller;
+  std::vector<std::shared_ptr<const ReformationResult>> Results;
+
+  ControllerRun()
+  {
+    QObject::connect(&Controller,
+                     &ReformationController::resultReady,
+                     &Controller,
+                     [this](std::shared_ptr<const ReformationResult> result) { Results.push_back(result); });
+    Controller.LoadInputs([] { return SmallPhantomInputs(); }, QStringLiteral("the small phantom"));
+  }
+};
+
+TEST(ReformationControllerSurface, AFinalRequestsCutSurfaceWaitsUntilItsImagesAreShown)
+{
+  ControllerRun run;
+  run.Controller.SetSurfaceWaitsForDisplay(true, 60.0);
+  ASSERT_TRUE(WaitUntil([&] { return run.Controller.GetInputs() != nullptr; }));
+  const std::uint64_t id = run.Controller.Request(TestParameters(StartAngle), RequestKind::Final);
+  ASSERT_TRUE(WaitUntil([&] { return !run.Results.empty(); }));
+  EXPECT_EQ(run.Results.front()->RequestId, id);
+  EXPECT_FALSE(run.Results.front()->HasFullSurface());
+  const unsigned int surfacesBefore = run.Controller.GetStageExecutionCounts().Surface;
+  // Without ImageShown the surface does not come (the small phantom's takes a few milliseconds once started).
+  EXPECT_FALSE(WaitUntil([&] { return run.Results.size() > 1; }, 1.0));
+  EXPECT_EQ(run.Controller.GetStageExecutionCounts().Surface, surfacesBefore);
+  run.Controller.ImageShown(id);
+  ASSERT_TRUE(WaitUntil([&] { return run.Results.size() > 1; }));
+  EXPECT_EQ(run.Results.back()->RequestId, id);
+  EXPECT_TRUE(run.Results.back()->HasFullSurface());
+  EXPECT_EQ(run.Controller.GetStageExecutionCounts().Surface, surfacesBefore + 1);
+}
+
+TEST(ReformationControllerSurface, WithoutADisplayTheCutSurfaceComesAfterTheTimeLimit)
+{
+  ControllerRun run;
+  run.Controller.SetSurfaceWaitsForDisplay(true, 0.2);
+  ASSERT_TRUE(WaitUntil([&] { return run.Controller.GetInputs() != nullptr; }));
+  const std::uint64_t id = run.Controller.Request(TestParameters(StartAngle), RequestKind::Final);
+  ASSERT_TRUE(WaitUntil([&] { return run.Results.size() > 1; }));
+  EXPECT_EQ(run.Results.back()->RequestId, id);
+  EXPECT_TRUE(run.Results.back()->HasFullSurface());
+}
+
+TEST(WidgetsAbout, TheAboutTextCitesThePaper)
+{
+  const std::string about = ViewerWindow::AboutText().toStdString();
+  EXPECT_NE(about.find("Kretschmer"), std::string::npos);
+  EXPECT_NE(about.find("Bilateral Depth Filtering for Enhanced Vessel Reformation"), std::string::npos);
+  EXPECT_NE(about.find("EuroVis) 2014"), std::string::npos);
+  EXPECT_NE(about.find("0.5 degrees per pixel"), std::string::npos);
+}
+
+TEST(SurfacePreview, ItsPointsLieOnTheFullCutSurface)
+{
+  const ReformationOutputs outputs = ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle));
+  EXPECT_EQ(PreviewSurfaceStride(512, 1024), 4u);
+  EXPECT_EQ(PreviewSurfaceStride(128, 256), 1u);
+  EXPECT_EQ(PreviewSurfaceStride(256, 768), 3u);
+  for (unsigned int stride : { 1u, 3u, 4u })
+  {
+    const auto preview = BuildPreviewSurface(outputs, stride);
+    ASSERT_NE(preview, nullptr);
+    const unsigned int width = (128 - 1) / stride + 1;
+    const unsigned int height = (256 - 1) / stride + 1;
+    ASSERT_EQ(preview->GetNumberOfPoints(), static_cast<vtkIdType>(width * height));
+    double worst = 0.0;
+    for (unsigned int j = 0; j < height; ++j)
+    {
+      for (unsigned int i = 0; i < width; ++i)
+      {
+        double coarse[3];
+        double full[3];
+        preview->GetPoint(static_cast<vtkIdType>(j * width + i), coarse);
+        outputs.Surface->GetPoint(static_cast<vtkIdType>((stride * j) * 128 + stride * i), full);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          worst = std::max(worst, std::abs(coarse[axis] - full[axis]));
+        }
+      }
+    }
+    EXPECT_LT(worst, 1e-3) << "stride " << stride;
+  }
+}
+} // namespace

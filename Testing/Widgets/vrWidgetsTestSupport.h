@@ -1,0 +1,54 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrWidgetsTestSupport_h
+#define vrWidgetsTestSupport_h
+
+#include "vrReformationInputs.h"
+#include "vrReformationParameters.h"
+#include "vrVesselReformationLogic.h"
+#include "vrViewerWindow.h"
+
+#include <QPointF>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+/** What the widget tests share: a small phantom made once, windows showing it, event-loop waits, mouse events, and
+ * the reference: an independent VesselReformationLogic run on the same nodes. */
+namespace vr::test
+{
+/** The run-off phantom at 3 mm voxels (fast to make), made once per process. */
+ReformationInputs
+SmallPhantomInputs();
+
+/** The view the tests reform at: 128 x 256 pixels, 200 iterations on the CPU, w = 1, a = 0.5, at \a angle. */
+ReformationParameters
+TestParameters(double angle);
+
+/** Processes events until \a done() or \a seconds pass. \return done(). */
+bool
+WaitUntil(const std::function<bool()> & done, double seconds = 120.0);
+
+/** Processes events until the controller is idle and the views have drawn what it delivered. \return false on a
+ * timeout. */
+bool
+WaitUntilSettled(ViewerWindow & window, double seconds = 120.0);
+
+/** A shown viewer window with the small phantom reformed at TestParameters(\a angle), overlays off. */
+std::unique_ptr<ViewerWindow>
+MakeWindowOnSmallPhantom(double angle);
+
+/** The reference: a VesselReformationLogic of its own on \a inputs' nodes with \a parameters. */
+ReformationOutputs
+ReferenceOutputs(const ReformationInputs & inputs, const ReformationParameters & parameters);
+
+/** Sends a mouse event to \a widget at \a position (logical pixels). */
+void
+SendMouse(QWidget * widget, int type, const QPointF & position, Qt::MouseButton button, Qt::MouseButtons buttons);
+
+/** The float pixels of a one-slice node, row-major. */
+std::vector<float>
+NodePixels(VolumeNode * node);
+} // namespace vr::test
+
+#endif

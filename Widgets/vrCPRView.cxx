@@ -1,0 +1,727 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrCPRView.h"
+
+#include "vrBranchColors.h"
+
+#include <QEvent>
+#include <QMouseEvent>
+#include <QVBoxLayout>
+#include <QVTKOpenGLNativeWidget.h>
+#include <QWheelEvent>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCornerAnnotation.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageActor.h>
+#include <vtkImageData.h>
+#include <vtkImageProperty.h>
+#include <vtkImageSliceMapper.h>
+#include <vtkLookupTable.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace vr
+{
+namespace
+{
+// Distances towards the camera (which looks along +z) that stack the layers over the image.
+constexpr double DepthLayerZ = -0.1;
+constexpr double LabelLayerZ = -0.2;
+constexpr double MaskLayerZ = -0.3;
+constexpr double LineLayerZ = -0.5;
+constexpr double CameraDistance = 1000.0;
+
+/** Shares the pixels of a one-slice output node, placed at world (i sx, j sy). */
+void
+Wrap(vtkImageData * target, VolumeNode * node, const double spacing[2])
+{
+  if (node == nullptr || node->GetImageData() == nullptr)
+  {
+    target->Initialize();
+    return;
+  }
+  target->ShallowCopy(node->GetImageData());
+  target->SetOrigin(0.0, 0.0, 0.0);
+  target->SetSpacing(spacing[0], spacing[1], 1.0);
+}
+
+void
+ConfigureOverlay(vtkImageActor * actor, vtkLookupTable * table, double opacity)
+{
+  vtkImageProperty * property = actor->GetProperty();
+  property->SetLookupTable(table);
+  property->UseLookupTableScalarRangeOn();
+  property->SetInterpolationTypeToNearest();
+  property->SetOpacity(opacity);
+}
+
+std::string
+Format(double value, int decimals)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(decimals);
+  text << value;
+  return text.str();
+}
+
+std::string
+TrimNumber(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+} // namespace
+
+/** One image of the comparison (filtered or unfiltered) with its overlays. */
+struct CPRView::Pane
+{
+  vtkNew<vtkImageData>  Image;
+  vtkNew<vtkImageData>  Depth;
+  vtkNew<vtkImageData>  Mask;
+  vtkNew<vtkImageData>  Labels;
+  vtkNew<vtkImageActor> ImageActor;
+  vtkNew<vtkImageActor> DepthActor;
+  vtkNew<vtkImageActor> MaskActor;
+  vtkNew<vtkImageActor> LabelActor;
+  vtkNew<vtkActor>      Lines;
+  vtkNew<vtkTextActor>  Caption;
+  double                Offset{ 0.0 };
+
+  Pane()
+  {
+    ImageActor->GetMapper()->SetInputData(Image);
+    DepthActor->GetMapper()->SetInputData(Depth);
+    MaskActor->GetMapper()->SetInputData(Mask);
+    LabelActor->GetMapper()->SetInputData(Labels);
+    ImageActor->GetProperty()->SetInterpolationTypeToNearest();
+    Caption->GetTextProperty()->SetFontSize(15);
+    Caption->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+    Caption->GetTextProperty()->ShadowOn();
+    Caption->GetTextProperty()->SetVerticalJustificationToTop();
+    Caption->GetPositionCoordinate()->SetCoordinateSystemToWorld();
+  }
+
+  void
+  AddTo(vtkRenderer * renderer)
+  {
+    for (vtkProp * prop :
+         std::initializer_list<vtkProp *>{ ImageActor, DepthActor, LabelActor, MaskActor, Lines, Caption })
+    {
+      renderer->AddViewProp(prop);
+    }
+  }
+
+  void
+  Place(double offset)
+  {
+    Offset = offset;
+    ImageActor->SetPosition(offset, 0.0, 0.0);
+    DepthActor->SetPosition(offset, 0.0, DepthLayerZ);
+    LabelActor->SetPosition(offset, 0.0, LabelLayerZ);
+    MaskActor->SetPosition(offset, 0.0, MaskLayerZ);
+    Lines->SetPosition(offset, 0.0, LineLayerZ);
+  }
+
+  void
+  SetColumns(int first, int last)
+  {
+    for (vtkImageActor * actor :
+         { ImageActor.GetPointer(), DepthActor.GetPointer(), LabelActor.GetPointer(), MaskActor.GetPointer() })
+    {
+      if (last < first)
+      {
+        actor->SetVisibility(false);
+        continue;
+      }
+      int extent[6];
+      Image->GetExtent(extent);
+      actor->SetDisplayExtent(first, last, extent[2], extent[3], 0, 0);
+    }
+  }
+};
+
+CPRView::CPRView(QWidget * parent)
+  : QWidget(parent)
+  , m_Filtered(std::make_unique<Pane>())
+  , m_Unfiltered(std::make_unique<Pane>())
+{
+  m_Widget = new QVTKOpenGLNativeWidget(this);
+  auto * layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(m_Widget);
+  m_RenderWindow = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  m_Widget->setRenderWindow(m_RenderWindow);
+  m_Renderer = vtkSmartPointer<vtkRenderer>::New();
+  m_Renderer->SetBackground(0.08, 0.08, 0.1);
+  m_RenderWindow->AddRenderer(m_Renderer);
+  vtkCamera * camera = m_Renderer->GetActiveCamera();
+  camera->ParallelProjectionOn();
+  camera->SetViewUp(0.0, -1.0, 0.0);
+
+  m_Unfiltered->AddTo(m_Renderer);
+  m_Filtered->AddTo(m_Renderer);
+  m_CenterlinePolyData = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPolyDataMapper> lineMapper;
+  lineMapper->SetInputData(m_CenterlinePolyData);
+  lineMapper->SetScalarModeToUseCellData();
+  for (Pane * pane : { m_Filtered.get(), m_Unfiltered.get() })
+  {
+    pane->Lines->SetMapper(lineMapper);
+    pane->Lines->GetProperty()->SetLineWidth(1.5);
+    pane->Lines->GetProperty()->SetOpacity(0.9);
+  }
+
+  m_SplitLine = vtkSmartPointer<vtkActor>::New();
+  m_SplitLine->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  m_SplitLine->GetProperty()->SetLineWidth(1.0);
+  m_Renderer->AddViewProp(m_SplitLine);
+
+  m_Annotation = vtkSmartPointer<vtkCornerAnnotation>::New();
+  m_Annotation->SetMaximumFontSize(15);
+  m_Annotation->SetMinimumFontSize(12);
+  m_Annotation->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
+  m_Annotation->GetTextProperty()->ShadowOn();
+  m_Annotation->SetText(vtkCornerAnnotation::UpperLeft, "No reformation yet");
+  m_Renderer->AddViewProp(m_Annotation);
+
+  m_Widget->setMouseTracking(true);
+  m_Widget->installEventFilter(this);
+  connect(m_Widget,
+          &QOpenGLWidget::frameSwapped,
+          this,
+          [this]
+          {
+            if (m_HasPendingDisplay)
+            {
+              m_HasPendingDisplay = false;
+              emit imageDisplayed(m_PendingDisplay);
+            }
+          });
+  setMinimumSize(200, 200);
+  UpdatePanes();
+}
+
+CPRView::~CPRView() = default;
+
+void
+CPRView::SetResult(std::shared_ptr<const ReformationResult> result)
+{
+  if (!result || !result->Outputs.CPR)
+  {
+    return;
+  }
+  const auto & view = result->Outputs.View;
+  const int    width = static_cast<int>(view.GetSize()[0]);
+  const int    height = static_cast<int>(view.GetSize()[1]);
+  const bool   refit = width != m_ImageSize[0] || height != m_ImageSize[1] || view.GetSpacing()[0] != m_Spacing[0] ||
+                     view.GetSpacing()[1] != m_Spacing[1] || !m_Result;
+  const bool newCenterlines = !m_Result || m_Result->Inputs != result->Inputs || m_Result->Outputs.View != view;
+  m_Result = std::move(result);
+  m_ImageSize[0] = width;
+  m_ImageSize[1] = height;
+  m_Spacing[0] = view.GetSpacing()[0];
+  m_Spacing[1] = view.GetSpacing()[1];
+
+  const auto & outputs = m_Result->Outputs;
+  Wrap(m_Filtered->Image, outputs.CPR, m_Spacing);
+  Wrap(m_Filtered->Depth, outputs.RelaxedDepth, m_Spacing);
+  Wrap(m_Filtered->Mask, outputs.FixedMask, m_Spacing);
+  Wrap(m_Filtered->Labels, outputs.OwnerLabels, m_Spacing);
+  Wrap(m_Unfiltered->Image, outputs.UnfilteredCPR, m_Spacing);
+  Wrap(m_Unfiltered->Depth, outputs.Depth, m_Spacing);
+  Wrap(m_Unfiltered->Mask, outputs.FixedMask, m_Spacing);
+  Wrap(m_Unfiltered->Labels, outputs.OwnerLabels, m_Spacing);
+  if (newCenterlines)
+  {
+    UpdateCenterlines();
+  }
+  UpdateOverlays();
+  UpdatePanes();
+  if (refit)
+  {
+    FitImage();
+  }
+  m_PendingDisplay = m_Result->RequestId;
+  m_HasPendingDisplay = true;
+  Render();
+  m_Widget->update();
+}
+
+void
+CPRView::SetWindowLevel(double window, double level)
+{
+  if (!(window > 0.0) || !std::isfinite(window) || !std::isfinite(level))
+  {
+    return;
+  }
+  m_Window = window;
+  m_Level = level;
+  for (Pane * pane : { m_Filtered.get(), m_Unfiltered.get() })
+  {
+    pane->ImageActor->GetProperty()->SetColorWindow(window);
+    pane->ImageActor->GetProperty()->SetColorLevel(level);
+  }
+  UpdateAnnotation();
+  Render();
+}
+
+void
+CPRView::SetOverlays(const CPROverlays & overlays)
+{
+  m_Overlays = overlays;
+  UpdateOverlays();
+  UpdatePanes();
+  Render();
+}
+
+void
+CPRView::SetComparison(CPRComparison comparison)
+{
+  const bool refit = (comparison == CPRComparison::SideBySide) != (m_Comparison == CPRComparison::SideBySide);
+  m_Comparison = comparison;
+  UpdatePanes();
+  if (refit)
+  {
+    FitImage();
+  }
+  Render();
+}
+
+double
+CPRView::UnfilteredOffset() const
+{
+  if (m_Comparison != CPRComparison::SideBySide)
+  {
+    return 0.0;
+  }
+  const double width = m_ImageSize[0] * m_Spacing[0];
+  return -(width + std::max(4.0 * m_Spacing[0], 0.04 * width));
+}
+
+void
+CPRView::UpdatePanes()
+{
+  const bool hasImage = m_Result != nullptr;
+  const int  width = m_ImageSize[0];
+  bool       showFiltered = hasImage && m_Comparison != CPRComparison::Unfiltered;
+  bool       showUnfiltered = hasImage && m_Comparison != CPRComparison::Filtered;
+  m_Filtered->Place(0.0);
+  m_Unfiltered->Place(UnfilteredOffset());
+  if (m_Comparison == CPRComparison::Split)
+  {
+    m_Unfiltered->SetColumns(0, width / 2 - 1);
+    m_Filtered->SetColumns(width / 2, width - 1);
+  }
+  else
+  {
+    m_Unfiltered->SetColumns(0, width - 1);
+    m_Filtered->SetColumns(0, width - 1);
+  }
+  auto show = [this](Pane * pane, bool visible, bool lines)
+  {
+    pane->ImageActor->SetVisibility(visible);
+    pane->DepthActor->SetVisibility(visible && m_Overlays.DepthMap);
+    pane->LabelActor->SetVisibility(visible && m_Overlays.OwnerLabels);
+    pane->MaskActor->SetVisibility(visible && m_Overlays.FixedMask);
+    pane->Lines->SetVisibility(visible && lines && m_Overlays.Centerlines);
+    pane->Caption->SetVisibility(visible);
+  };
+  // In the split both images share one grid, so one set of centerlines serves both halves.
+  show(m_Filtered.get(), showFiltered, true);
+  show(m_Unfiltered.get(), showUnfiltered, m_Comparison != CPRComparison::Split);
+
+  const double sx = m_Spacing[0];
+  const double sy = m_Spacing[1];
+  if (m_Comparison == CPRComparison::Split && hasImage)
+  {
+    vtkNew<vtkPolyData> line;
+    vtkNew<vtkPoints>   points;
+    const double        x = (width / 2 - 0.5) * sx;
+    points->InsertNextPoint(x, -0.5 * sy, LineLayerZ);
+    points->InsertNextPoint(x, (m_ImageSize[1] - 0.5) * sy, LineLayerZ);
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType      ids[2] = { 0, 1 };
+    cells->InsertNextCell(2, ids);
+    line->SetPoints(points);
+    line->SetLines(cells);
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(line);
+    m_SplitLine->SetMapper(mapper);
+    m_SplitLine->SetVisibility(true);
+  }
+  else
+  {
+    m_SplitLine->SetVisibility(false);
+  }
+
+  if (hasImage)
+  {
+    const auto & parameters = m_Result->Parameters;
+    // Two short lines, so that the caption fits under the image in the side-by-side comparison too.
+    std::string filtered = "bilateral: w " + TrimNumber(parameters.Relaxation) + ", a " +
+                           TrimNumber(parameters.Anisotropy) + " mm^-2\n" + std::to_string(parameters.Iterations) +
+                           " iterations";
+    m_Filtered->Caption->SetInput(filtered.c_str());
+    m_Unfiltered->Caption->SetInput("unfiltered (w = 0)");
+    // Below the image, where no corner annotation sits.
+    const double below = (m_ImageSize[1] + 0.5) * sy;
+    m_Filtered->Caption->GetPositionCoordinate()->SetValue(
+      (m_Comparison == CPRComparison::Split ? width / 2 : 0) * sx, below, 0.0);
+    m_Unfiltered->Caption->GetPositionCoordinate()->SetValue(UnfilteredOffset(), below, 0.0);
+  }
+  UpdateAnnotation();
+}
+
+void
+CPRView::UpdateOverlays()
+{
+  if (!m_Result)
+  {
+    return;
+  }
+  int maximumId = 1;
+  if (m_Result->Inputs)
+  {
+    for (const auto & branch : m_Result->Inputs->Tree.GetBranches())
+    {
+      maximumId = std::max(maximumId, branch.Id);
+    }
+  }
+  // One depth colour range for both images, so that they compare.
+  double range[2] = { 0.0, 1.0 };
+  bool   first = true;
+  for (vtkImageData * depth : { m_Filtered->Depth.GetPointer(), m_Unfiltered->Depth.GetPointer() })
+  {
+    if (depth->GetPointData() == nullptr || depth->GetPointData()->GetScalars() == nullptr)
+    {
+      continue;
+    }
+    double r[2];
+    depth->GetScalarRange(r);
+    range[0] = first ? r[0] : std::min(range[0], r[0]);
+    range[1] = first ? r[1] : std::max(range[1], r[1]);
+    first = false;
+  }
+  auto                   depthTable = MakeDepthLookupTable(range[0], range[1], 1.0);
+  auto                   labelTable = MakeBranchLookupTable(maximumId, 1.0);
+  vtkNew<vtkLookupTable> maskTable;
+  maskTable->SetNumberOfTableValues(2);
+  maskTable->SetTableRange(0.0, 1.0);
+  maskTable->SetTableValue(0, 0.0, 0.0, 0.0, 0.0);
+  maskTable->SetTableValue(1, 1.0, 0.85, 0.0, 1.0);
+  for (Pane * pane : { m_Filtered.get(), m_Unfiltered.get() })
+  {
+    ConfigureOverlay(pane->DepthActor, depthTable, 0.6);
+    ConfigureOverlay(pane->LabelActor, labelTable, 0.4);
+    ConfigureOverlay(pane->MaskActor, maskTable, 0.55);
+  }
+}
+
+void
+CPRView::UpdateCenterlines()
+{
+  m_CenterlinePolyData->Initialize();
+  if (!m_Result || !m_Result->Inputs)
+  {
+    return;
+  }
+  const auto &                 view = m_Result->Outputs.View;
+  vtkNew<vtkPoints>            points;
+  vtkNew<vtkCellArray>         lines;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetNumberOfComponents(3);
+  colors->SetName("BranchColors");
+  for (const auto & branch : m_Result->Inputs->Tree.GetBranches())
+  {
+    std::vector<vtkIdType> ids;
+    for (const auto & point : branch.Points)
+    {
+      const auto coordinates = view.ToView(point);
+      ids.push_back(points->InsertNextPoint(coordinates.Column * m_Spacing[0], coordinates.Row * m_Spacing[1], 0.0));
+    }
+    if (ids.size() < 2)
+    {
+      continue;
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    const auto rgb = BranchColor(branch.Id);
+    colors->InsertNextTuple3(255.0 * rgb[0], 255.0 * rgb[1], 255.0 * rgb[2]);
+  }
+  m_CenterlinePolyData->SetPoints(points);
+  m_CenterlinePolyData->SetLines(lines);
+  m_CenterlinePolyData->GetCellData()->SetScalars(colors);
+}
+
+void
+CPRView::UpdateAnnotation()
+{
+  if (!m_Result)
+  {
+    return;
+  }
+  const auto &       view = m_Result->Outputs.View;
+  const auto &       up = view.GetUp();
+  std::ostringstream upper;
+  upper << "angle " << Format(view.GetAngleInDegrees(), 1) << " deg about up (LPS " << Format(up[0], 2) << ", "
+        << Format(up[1], 2) << ", " << Format(up[2], 2) << ")\n"
+        << "W " << Format(m_Window, 0) << "  L " << Format(m_Level, 0);
+  m_Annotation->SetText(vtkCornerAnnotation::UpperLeft, upper.str().c_str());
+  std::ostringstream right;
+  right << view.GetSize()[0] << " x " << view.GetSize()[1] << " px\n"
+        << Format(view.GetSpacing()[0], 2) << " x " << Format(view.GetSpacing()[1], 2) << " mm";
+  m_Annotation->SetText(vtkCornerAnnotation::UpperRight, right.str().c_str());
+}
+
+void
+CPRView::FitImage()
+{
+  if (m_ImageSize[0] == 0)
+  {
+    return;
+  }
+  const double sx = m_Spacing[0];
+  const double sy = m_Spacing[1];
+  const double left = std::min(0.0, UnfilteredOffset()) - 0.5 * sx;
+  const double right = (m_ImageSize[0] - 0.5) * sx;
+  const double top = -0.5 * sy;
+  const double bottom = (m_ImageSize[1] - 0.5) * sy;
+  // Room in screen pixels: above for the corner annotations, below for the captions, a little on the sides.
+  const double widthPixels = std::max(50, m_Widget->width() - 16);
+  const double heightPixels = std::max(50, m_Widget->height() - 2 * 44);
+  const double perPixel = std::max((right - left) / widthPixels, (bottom - top) / heightPixels);
+  const double halfHeight = 0.5 * perPixel * m_Widget->height();
+  vtkCamera *  camera = m_Renderer->GetActiveCamera();
+  const double cx = 0.5 * (left + right);
+  const double cy = 0.5 * (top + bottom);
+  camera->SetFocalPoint(cx, cy, 0.0);
+  camera->SetPosition(cx, cy, -CameraDistance);
+  camera->SetViewUp(0.0, -1.0, 0.0);
+  camera->SetParallelScale(halfHeight);
+  camera->SetClippingRange(1.0, 2.0 * CameraDistance);
+}
+
+void
+CPRView::Zoom(double factor, const QPointF & center)
+{
+  if (!(factor > 0.0))
+  {
+    return;
+  }
+  const auto  before = WidgetToWorld(center);
+  vtkCamera * camera = m_Renderer->GetActiveCamera();
+  camera->SetParallelScale(camera->GetParallelScale() / factor);
+  const auto after = WidgetToWorld(center);
+  double     focal[3];
+  camera->GetFocalPoint(focal);
+  focal[0] += before[0] - after[0];
+  focal[1] += before[1] - after[1];
+  camera->SetFocalPoint(focal[0], focal[1], 0.0);
+  camera->SetPosition(focal[0], focal[1], -CameraDistance);
+  Render();
+}
+
+std::array<double, 2>
+CPRView::WidgetToWorld(const QPointF & position) const
+{
+  vtkCamera * camera = m_Renderer->GetActiveCamera();
+  double      focal[3];
+  camera->GetFocalPoint(focal);
+  const double height = std::max(1, m_Widget->height());
+  const double perPixel = 2.0 * camera->GetParallelScale() / height;
+  return { focal[0] + (position.x() - 0.5 * m_Widget->width()) * perPixel,
+           focal[1] + (position.y() - 0.5 * height) * perPixel };
+}
+
+QPointF
+CPRView::WorldToWidget(double x, double y) const
+{
+  vtkCamera * camera = m_Renderer->GetActiveCamera();
+  double      focal[3];
+  camera->GetFocalPoint(focal);
+  const double height = std::max(1, m_Widget->height());
+  const double perPixel = 2.0 * camera->GetParallelScale() / height;
+  return QPointF(0.5 * m_Widget->width() + (x - focal[0]) / perPixel, 0.5 * height + (y - focal[1]) / perPixel);
+}
+
+QPointF
+CPRView::WidgetPositionOfPixel(double column, double row, bool unfiltered) const
+{
+  const double offset = unfiltered ? UnfilteredOffset() : 0.0;
+  return WorldToWidget(offset + column * m_Spacing[0], row * m_Spacing[1]);
+}
+
+PixelReadout
+CPRView::ReadoutAt(const QPointF & position) const
+{
+  if (!m_Result)
+  {
+    return PixelReadout();
+  }
+  const auto world = WidgetToWorld(position);
+  const int  row = static_cast<int>(std::floor(world[1] / m_Spacing[1] + 0.5));
+  auto columnIn = [&](double offset) { return static_cast<int>(std::floor((world[0] - offset) / m_Spacing[0] + 0.5)); };
+  bool unfiltered = false;
+  int  column = columnIn(0.0);
+  switch (m_Comparison)
+  {
+    case CPRComparison::Filtered:
+      break;
+    case CPRComparison::Unfiltered:
+      unfiltered = true;
+      break;
+    case CPRComparison::Split:
+      unfiltered = column < m_ImageSize[0] / 2;
+      break;
+    case CPRComparison::SideBySide:
+    {
+      const int inLeft = columnIn(UnfilteredOffset());
+      if (inLeft >= 0 && inLeft < m_ImageSize[0])
+      {
+        unfiltered = true;
+        column = inLeft;
+      }
+      break;
+    }
+  }
+  return ReadPixel(*m_Result, unfiltered, column, row);
+}
+
+vtkImageData *
+CPRView::GetDisplayedImage(bool unfiltered) const
+{
+  return unfiltered ? m_Unfiltered->Image.GetPointer() : m_Filtered->Image.GetPointer();
+}
+
+void
+CPRView::Render()
+{
+  const auto start = std::chrono::steady_clock::now();
+  m_RenderWindow->Render();
+  m_LastRenderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool
+CPRView::eventFilter(QObject * watched, QEvent * event)
+{
+  if (watched != m_Widget)
+  {
+    return QWidget::eventFilter(watched, event);
+  }
+  switch (event->type())
+  {
+    case QEvent::MouseButtonPress:
+    {
+      auto * mouse = static_cast<QMouseEvent *>(event);
+      if (m_DragButton != Qt::NoButton)
+      {
+        return true;
+      }
+      m_DragButton = mouse->button();
+      m_DragStart = mouse->localPos();
+      m_DragWindow = m_Window;
+      m_DragLevel = m_Level;
+      m_Renderer->GetActiveCamera()->GetFocalPoint(m_DragFocal);
+      if (m_DragButton == Qt::LeftButton)
+      {
+        emit rotationStarted();
+      }
+      return true;
+    }
+    case QEvent::MouseMove:
+    {
+      auto *        mouse = static_cast<QMouseEvent *>(event);
+      const QPointF delta = mouse->localPos() - m_DragStart;
+      switch (m_DragButton)
+      {
+        case Qt::LeftButton:
+          emit rotationDragged(DegreesPerPixel * delta.x(), false);
+          break;
+        case Qt::RightButton:
+        {
+          const double window = std::max(1e-3, m_DragWindow * (1.0 + delta.x() / 256.0));
+          const double level = m_DragLevel - m_DragWindow * delta.y() / 512.0;
+          SetWindowLevel(window, level);
+          emit windowLevelChanged(window, level);
+          break;
+        }
+        case Qt::MiddleButton:
+        {
+          vtkCamera *  camera = m_Renderer->GetActiveCamera();
+          const double perPixel = 2.0 * camera->GetParallelScale() / std::max(1, m_Widget->height());
+          const double x = m_DragFocal[0] - delta.x() * perPixel;
+          const double y = m_DragFocal[1] - delta.y() * perPixel;
+          camera->SetFocalPoint(x, y, 0.0);
+          camera->SetPosition(x, y, -CameraDistance);
+          Render();
+          break;
+        }
+        default:
+        {
+          const PixelReadout readout = ReadoutAt(mouse->localPos() + QPointF(0.5, 0.5));
+          if (readout.Inside != m_Readout.Inside || readout.Column != m_Readout.Column ||
+              readout.Row != m_Readout.Row || readout.Unfiltered != m_Readout.Unfiltered)
+          {
+            m_Readout = readout;
+            emit readoutChanged(m_Readout);
+          }
+          break;
+        }
+      }
+      return true;
+    }
+    case QEvent::MouseButtonRelease:
+    {
+      auto * mouse = static_cast<QMouseEvent *>(event);
+      if (mouse->button() != m_DragButton)
+      {
+        return true;
+      }
+      if (m_DragButton == Qt::LeftButton)
+      {
+        emit rotationDragged(DegreesPerPixel * (mouse->localPos().x() - m_DragStart.x()), true);
+      }
+      m_DragButton = Qt::NoButton;
+      return true;
+    }
+    case QEvent::MouseButtonDblClick:
+      FitImage();
+      Render();
+      return true;
+    case QEvent::Wheel:
+    {
+      auto * wheel = static_cast<QWheelEvent *>(event);
+      Zoom(std::pow(1.2, wheel->angleDelta().y() / 120.0), wheel->position());
+      return true;
+    }
+    case QEvent::Leave:
+      if (m_Readout.Inside)
+      {
+        m_Readout = PixelReadout();
+        emit readoutChanged(m_Readout);
+      }
+      return false;
+    case QEvent::Resize:
+      // Keep the image fitted when the widget changes size before the user zoomed.
+      return false;
+    default:
+      return false;
+  }
+}
+} // namespace vr

@@ -1,0 +1,246 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrCPRView_h
+#define vrCPRView_h
+
+#include "vrPixelReadout.h"
+#include "vrReformationController.h"
+
+#include <QPointF>
+#include <QWidget>
+
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <memory>
+
+class QVTKOpenGLNativeWidget;
+class vtkActor;
+class vtkCornerAnnotation;
+class vtkGenericOpenGLRenderWindow;
+class vtkImageActor;
+class vtkImageData;
+class vtkPolyData;
+class vtkRenderer;
+class vtkTextActor;
+
+namespace vr
+{
+/** Which CPR image the view shows: the paper's comparison of unfiltered and filtered reformations.
+ * \ingroup VesselReformation
+ */
+enum class CPRComparison
+{
+  Filtered,
+  Unfiltered,
+  /** Unfiltered left of the middle column, filtered right of it, on the same grid. */
+  Split,
+  /** Unfiltered on the left, filtered on the right, each whole. */
+  SideBySide
+};
+
+/** The overlays the CPR view can draw over the image.
+ * \ingroup VesselReformation
+ */
+struct CPROverlays
+{
+  /** The centerlines projected into the view, one colour per branch. */
+  bool Centerlines{ true };
+  /** The fixed mask: centerline pixels and lumen (yellow). */
+  bool FixedMask{ false };
+  /** The owner labels: one colour per branch. */
+  bool OwnerLabels{ false };
+  /** The depth map (viridis: near dark, far yellow). */
+  bool DepthMap{ false };
+
+  bool
+  operator==(const CPROverlays & other) const
+  {
+    return Centerlines == other.Centerlines && FixedMask == other.FixedMask && OwnerLabels == other.OwnerLabels &&
+           DepthMap == other.DepthMap;
+  }
+};
+
+/** \class CPRView
+ * \brief The 2D view of a reformation: the CPR image through window/level (a VTK image actor), overlays, the
+ * unfiltered/filtered comparison, and a readout of the pixel under the mouse. It displays the logic's outputs and
+ * computes nothing.
+ *
+ * Mouse:
+ * - left-drag horizontally rotates the view about its up axis: rotationDragged() reports
+ *   -DegreesPerPixel degrees per pixel to the right, so that dragging right turns the vessels nearest to the viewer
+ *   to the right, as a 3D viewer's trackball turns an object (a 720-pixel drag is a full turn);
+ * - right-drag sets window (horizontal: wider to the right, by the window's own size per 256 pixels) and level
+ *   (vertical: higher upwards, by the window per 512 pixels);
+ * - wheel zooms about the mouse (1.2 per notch), middle-drag pans, double-click fits the image;
+ * - hovering reports the pixel's column and row, its RAS position, intensity, depth and branch (readoutChanged()).
+ *
+ * Pixel (i, j) (row 0 at the top) is drawn at world (i sx, j sy), the camera looking along +z with -y up, so the
+ * image appears as the reformation defines it: screen-right u, screen-down -up.
+ *
+ * \sa ReformationController, ThreeDView, ModulePanel
+ * \ingroup VesselReformation
+ */
+class CPRView : public QWidget
+{
+  Q_OBJECT
+
+public:
+  /** Degrees the view turns per pixel of horizontal left-drag (negative: dragging right decreases the angle). */
+  static constexpr double DegreesPerPixel = -0.5;
+
+  explicit CPRView(QWidget * parent = nullptr);
+  ~CPRView() override;
+
+  /** Shows \a result (its images, overlays from its inputs); renders; imageDisplayed() follows once the frame is on
+   * screen. The camera is kept unless the image's size changed. */
+  void
+  SetResult(std::shared_ptr<const ReformationResult> result);
+  /** \return the result shown, or null. */
+  std::shared_ptr<const ReformationResult>
+  GetResult() const
+  {
+    return m_Result;
+  }
+
+  /** Window width and level, in the image's intensity unit (HU); display only. */
+  void
+  SetWindowLevel(double window, double level);
+  double
+  GetWindow() const
+  {
+    return m_Window;
+  }
+  double
+  GetLevel() const
+  {
+    return m_Level;
+  }
+
+  void
+  SetOverlays(const CPROverlays & overlays);
+  const CPROverlays &
+  GetOverlays() const
+  {
+    return m_Overlays;
+  }
+  void
+  SetComparison(CPRComparison comparison);
+  CPRComparison
+  GetComparison() const
+  {
+    return m_Comparison;
+  }
+
+  /** Fits the whole image (both images side by side) into the view. */
+  void
+  FitImage();
+  /** Zooms by \a factor about the widget point \a center. */
+  void
+  Zoom(double factor, const QPointF & center);
+
+  /** \return what hovering over the widget point \a position shows. */
+  PixelReadout
+  ReadoutAt(const QPointF & position) const;
+  /** \return the widget position (logical pixels) of the centre of image pixel (\a column, \a row) of the filtered or
+   * the unfiltered image. */
+  QPointF
+  WidgetPositionOfPixel(double column, double row, bool unfiltered) const;
+  /** \return the filtered (or unfiltered) image data the image actor draws: the logic's output's pixels. */
+  vtkImageData *
+  GetDisplayedImage(bool unfiltered) const;
+  /** \return the widget that renders (mouse events go there). */
+  QVTKOpenGLNativeWidget *
+  GetRenderWidget() const
+  {
+    return m_Widget;
+  }
+  /** \return the latest readout. */
+  const PixelReadout &
+  GetReadout() const
+  {
+    return m_Readout;
+  }
+  /** \return seconds the latest vtkRenderWindow::Render() of a new image took. */
+  double
+  GetLastRenderSeconds() const
+  {
+    return m_LastRenderSeconds;
+  }
+
+  /** Renders now. */
+  void
+  Render();
+
+signals:
+  /** A left-drag started. */
+  void
+  rotationStarted();
+  /** The left-drag moved: \a degrees since it started (DegreesPerPixel per pixel); \a finished at the release. */
+  void
+  rotationDragged(double degrees, bool finished);
+  /** Right-drag changed the window and level. */
+  void
+  windowLevelChanged(double window, double level);
+  /** The pixel under the mouse changed. */
+  void
+  readoutChanged(const vr::PixelReadout & readout);
+  /** The image of request \a requestId is on screen (the widget's frame was swapped). */
+  void
+  imageDisplayed(std::uint64_t requestId);
+
+protected:
+  bool
+  eventFilter(QObject * watched, QEvent * event) override;
+
+private:
+  struct Pane;
+
+  void
+  UpdatePanes();
+  void
+  UpdateOverlays();
+  void
+  UpdateAnnotation();
+  void
+  UpdateCenterlines();
+  /** World point (z = 0) under a widget point. */
+  std::array<double, 2>
+  WidgetToWorld(const QPointF & position) const;
+  QPointF
+  WorldToWidget(double x, double y) const;
+  /** World x offset of the unfiltered image (negative in side-by-side mode). */
+  double
+  UnfilteredOffset() const;
+
+  QVTKOpenGLNativeWidget *                      m_Widget{ nullptr };
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> m_RenderWindow;
+  vtkSmartPointer<vtkRenderer>                  m_Renderer;
+  std::unique_ptr<Pane>                         m_Filtered;
+  std::unique_ptr<Pane>                         m_Unfiltered;
+  vtkSmartPointer<vtkCornerAnnotation>          m_Annotation;
+  vtkSmartPointer<vtkActor>                     m_SplitLine;
+  vtkSmartPointer<vtkPolyData>                  m_CenterlinePolyData;
+
+  std::shared_ptr<const ReformationResult> m_Result;
+  std::uint64_t                            m_PendingDisplay{ 0 };
+  bool                                     m_HasPendingDisplay{ false };
+  int                                      m_ImageSize[2]{ 0, 0 };
+  double                                   m_Spacing[2]{ 1.0, 1.0 };
+  double                                   m_Window{ 900.0 };
+  double                                   m_Level{ 200.0 };
+  CPROverlays                              m_Overlays;
+  CPRComparison                            m_Comparison{ CPRComparison::Filtered };
+  PixelReadout                             m_Readout;
+  double                                   m_LastRenderSeconds{ 0.0 };
+
+  // The drag in progress.
+  Qt::MouseButton m_DragButton{ Qt::NoButton };
+  QPointF         m_DragStart;
+  double          m_DragWindow{ 0.0 };
+  double          m_DragLevel{ 0.0 };
+  double          m_DragFocal[3]{ 0.0, 0.0, 0.0 };
+};
+} // namespace vr
+
+#endif

@@ -1,0 +1,484 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrModulePanel.h"
+
+#include "ui_vrModulePanel.h"
+#include "vrParameterName.h"
+#include "vrRelaxBackend.h"
+
+#include <QFileInfo>
+#include <QLabel>
+#include <QSignalBlocker>
+
+#include <cmath>
+
+namespace vr
+{
+namespace
+{
+constexpr double SliderStepsPerDegree = 10.0;
+
+const char * const UpChoices[] = { "S", "I", "A", "P", "L", "R" };
+
+/** The combo entry of an up vector (a patient axis), or -1. */
+int
+UpIndex(const ReformationParameters & parameters, int autoIndex)
+{
+  if (parameters.AutomaticUp)
+  {
+    return autoIndex;
+  }
+  for (int k = 0; k < 6; ++k)
+  {
+    const UpAxisChoice choice = ParseUpAxis(UpChoices[k], "up axis");
+    if ((choice.Vector - parameters.Up).GetNorm() < 1e-9)
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
+void
+SelectText(QComboBox * combo, const char * text)
+{
+  const int index = combo->findText(QString::fromLatin1(text));
+  if (index >= 0)
+  {
+    combo->setCurrentIndex(index);
+  }
+}
+} // namespace
+
+double
+WrapAngle(double degrees)
+{
+  double wrapped = std::fmod(degrees + 180.0, 360.0);
+  if (wrapped < 0.0)
+  {
+    wrapped += 360.0;
+  }
+  return wrapped - 180.0;
+}
+
+ModulePanel::ModulePanel(QWidget * parent)
+  : QWidget(parent)
+  , m_Ui(std::make_unique<Ui::ModulePanel>())
+{
+  m_Ui->setupUi(this);
+  for (QLabel * label : { m_Ui->volumeLabel, m_Ui->centerlineLabel })
+  {
+    label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
+  }
+  m_Ui->presetCombo->setCurrentText(QString::fromLatin1(CTAPreset.Name));
+  Connect();
+}
+
+ModulePanel::~ModulePanel() = default;
+
+void
+ModulePanel::Connect()
+{
+  Ui::ModulePanel & ui = *m_Ui;
+  auto              final = [this]
+  {
+    if (!m_Updating)
+    {
+      emit parametersChanged(RequestKind::Final);
+    }
+  };
+  auto display = [this]
+  {
+    if (!m_Updating)
+    {
+      emit displayChanged();
+    }
+  };
+
+  connect(ui.angleSlider,
+          &QSlider::valueChanged,
+          this,
+          [this](int value)
+          {
+            {
+              const QSignalBlocker block(m_Ui->angleSpin);
+              m_Ui->angleSpin->setValue(value / SliderStepsPerDegree);
+            }
+            if (!m_Updating)
+            {
+              emit parametersChanged(m_Ui->angleSlider->isSliderDown() ? RequestKind::Interactive : RequestKind::Final);
+            }
+          });
+  connect(ui.angleSlider, &QSlider::sliderReleased, this, final);
+  connect(ui.angleSpin,
+          QOverload<double>::of(&QDoubleSpinBox::valueChanged),
+          this,
+          [this, final](double value)
+          {
+            {
+              const QSignalBlocker block(m_Ui->angleSlider);
+              m_Ui->angleSlider->setValue(static_cast<int>(std::lround(value * SliderStepsPerDegree)));
+            }
+            final();
+          });
+  for (QComboBox * combo : { ui.upCombo, ui.modeCombo, ui.interpolationCombo, ui.backendCombo })
+  {
+    connect(combo, QOverload<int>::of(&QComboBox::currentIndexChanged), this, final);
+  }
+  for (QSpinBox * spin : { ui.widthSpin, ui.heightSpin, ui.iterationsSpin })
+  {
+    connect(spin, QOverload<int>::of(&QSpinBox::valueChanged), this, final);
+  }
+  for (QDoubleSpinBox * spin : { ui.spacingSpin, ui.relaxationSpin, ui.anisotropySpin })
+  {
+    connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, final);
+  }
+  connect(ui.fixLumenCheck, &QCheckBox::toggled, this, final);
+
+  for (QDoubleSpinBox * spin : { ui.windowSpin, ui.levelSpin })
+  {
+    connect(spin,
+            QOverload<double>::of(&QDoubleSpinBox::valueChanged),
+            this,
+            [this, display]
+            {
+              if (!m_Updating)
+              {
+                const QSignalBlocker block(m_Ui->presetCombo);
+                m_Ui->presetCombo->setCurrentIndex(0); // Custom
+              }
+              display();
+            });
+  }
+  connect(ui.presetCombo,
+          QOverload<int>::of(&QComboBox::currentIndexChanged),
+          this,
+          [this]
+          {
+            if (m_Updating)
+            {
+              return;
+            }
+            const QString name = m_Ui->presetCombo->currentText();
+            if (name == QLatin1String("Full range"))
+            {
+              emit fullRangeRequested();
+            }
+            else if (name != QLatin1String("Custom"))
+            {
+              ApplyPreset(name, 0.0, 0.0);
+            }
+          });
+  for (QCheckBox * check : { ui.centerlinesCheck, ui.maskCheck, ui.labelsCheck, ui.depthCheck })
+  {
+    connect(check, &QCheckBox::toggled, this, display);
+  }
+  connect(ui.comparisonCombo, QOverload<int>::of(&QComboBox::currentIndexChanged), this, display);
+
+  connect(ui.openVolumeButton, &QPushButton::clicked, this, &ModulePanel::openVolumeRequested);
+  connect(ui.openCenterlinesButton, &QPushButton::clicked, this, &ModulePanel::openCenterlinesRequested);
+  connect(ui.loadPhantomButton,
+          &QPushButton::clicked,
+          this,
+          [this] { emit loadPhantomRequested(m_Ui->phantomCombo->currentText()); });
+  connect(ui.saveButton, &QPushButton::clicked, this, &ModulePanel::saveOutputsRequested);
+}
+
+ReformationParameters
+ModulePanel::GetParameters() const
+{
+  const Ui::ModulePanel & ui = *m_Ui;
+  ReformationParameters   parameters;
+  const UpAxisChoice      up = ParseUpAxis(ui.upCombo->currentText().toStdString(), ParameterName::UpAxis);
+  parameters.AutomaticUp = up.Automatic;
+  if (!up.Automatic)
+  {
+    parameters.Up = up.Vector;
+  }
+  parameters.AngleInDegrees = ui.angleSpin->value();
+  parameters.ImageSize[0] = static_cast<itk::SizeValueType>(ui.widthSpin->value());
+  parameters.ImageSize[1] = static_cast<itk::SizeValueType>(ui.heightSpin->value());
+  parameters.PixelSpacing[0] = ui.spacingSpin->value();
+  parameters.PixelSpacing[1] = ui.spacingSpin->value();
+  parameters.Mode = ParseDepthMode(ui.modeCombo->currentText().toStdString(), ParameterName::DepthMode);
+  parameters.Interpolation =
+    ParseInterpolation(ui.interpolationCombo->currentText().toStdString(), ParameterName::Interpolation);
+  parameters.FixLumen = ui.fixLumenCheck->isChecked();
+  parameters.Relaxation = ui.relaxationSpin->value();
+  parameters.Anisotropy = ui.anisotropySpin->value();
+  parameters.Iterations = ui.iterationsSpin->value();
+  parameters.Backend = ParseRelaxBackend(ui.backendCombo->currentText().toStdString(), ParameterName::Backend);
+  parameters.Window = ui.windowSpin->value();
+  parameters.Level = ui.levelSpin->value();
+  return parameters;
+}
+
+void
+ModulePanel::SetParameters(const ReformationParameters & parameters)
+{
+  Ui::ModulePanel & ui = *m_Ui;
+  m_Updating = true;
+  const int upIndex = UpIndex(parameters, ui.upCombo->findText(QStringLiteral("auto")));
+  if (upIndex >= 0)
+  {
+    ui.upCombo->setCurrentIndex(upIndex);
+  }
+  else
+  {
+    // An oblique up axis given as a vector: offered as its own entry.
+    const QString text = QStringLiteral("%1,%2,%3").arg(parameters.Up[0]).arg(parameters.Up[1]).arg(parameters.Up[2]);
+    if (ui.upCombo->findText(text) < 0)
+    {
+      ui.upCombo->addItem(text);
+    }
+    ui.upCombo->setCurrentText(text);
+  }
+  ui.angleSpin->setValue(WrapAngle(parameters.AngleInDegrees));
+  ui.angleSlider->setValue(static_cast<int>(std::lround(ui.angleSpin->value() * SliderStepsPerDegree)));
+  ui.widthSpin->setValue(static_cast<int>(parameters.ImageSize[0]));
+  ui.heightSpin->setValue(static_cast<int>(parameters.ImageSize[1]));
+  ui.spacingSpin->setValue(parameters.PixelSpacing[0]);
+  SelectText(ui.modeCombo, ToString(parameters.Mode));
+  SelectText(ui.interpolationCombo, ToString(parameters.Interpolation));
+  ui.fixLumenCheck->setChecked(parameters.FixLumen);
+  ui.relaxationSpin->setValue(parameters.Relaxation);
+  ui.anisotropySpin->setValue(parameters.Anisotropy);
+  ui.iterationsSpin->setValue(static_cast<int>(parameters.Iterations));
+  SelectText(ui.backendCombo, ToString(parameters.Backend));
+  if (parameters.Window > 0.0)
+  {
+    ui.windowSpin->setValue(parameters.Window);
+    ui.levelSpin->setValue(parameters.Level);
+  }
+  m_Updating = false;
+}
+
+void
+ModulePanel::SetAngle(double degrees, RequestKind kind)
+{
+  const double wrapped = WrapAngle(degrees);
+  {
+    const QSignalBlocker blockSpin(m_Ui->angleSpin);
+    const QSignalBlocker blockSlider(m_Ui->angleSlider);
+    m_Ui->angleSpin->setValue(wrapped);
+    m_Ui->angleSlider->setValue(static_cast<int>(std::lround(wrapped * SliderStepsPerDegree)));
+  }
+  emit parametersChanged(kind);
+}
+
+double
+ModulePanel::GetAngle() const
+{
+  return m_Ui->angleSpin->value();
+}
+
+void
+ModulePanel::SetWindowLevel(double window, double level)
+{
+  {
+    const QSignalBlocker blockWindow(m_Ui->windowSpin);
+    const QSignalBlocker blockLevel(m_Ui->levelSpin);
+    m_Ui->windowSpin->setValue(window);
+    m_Ui->levelSpin->setValue(level);
+  }
+  emit displayChanged();
+}
+
+bool
+ModulePanel::ApplyPreset(const QString & name, double fullRangeWindow, double fullRangeLevel)
+{
+  double window = 0.0;
+  double level = 0.0;
+  if (name.compare(QLatin1String("Full range"), Qt::CaseInsensitive) == 0)
+  {
+    window = fullRangeWindow;
+    level = fullRangeLevel;
+  }
+  else
+  {
+    bool found = false;
+    for (const WindowLevelPreset & preset : { CTAPreset, BonePreset, SoftTissuePreset })
+    {
+      if (name.compare(QLatin1String(preset.Name), Qt::CaseInsensitive) == 0)
+      {
+        window = preset.Window;
+        level = preset.Level;
+        found = true;
+      }
+    }
+    if (!found)
+    {
+      return false;
+    }
+  }
+  {
+    const QSignalBlocker block(m_Ui->presetCombo);
+    const int            index = m_Ui->presetCombo->findText(name, Qt::MatchFixedString);
+    m_Ui->presetCombo->setCurrentIndex(index);
+  }
+  SetWindowLevel(window, level);
+  return true;
+}
+
+CPROverlays
+ModulePanel::GetOverlays() const
+{
+  CPROverlays overlays;
+  overlays.Centerlines = m_Ui->centerlinesCheck->isChecked();
+  overlays.FixedMask = m_Ui->maskCheck->isChecked();
+  overlays.OwnerLabels = m_Ui->labelsCheck->isChecked();
+  overlays.DepthMap = m_Ui->depthCheck->isChecked();
+  return overlays;
+}
+
+void
+ModulePanel::SetOverlays(const CPROverlays & overlays)
+{
+  m_Updating = true;
+  m_Ui->centerlinesCheck->setChecked(overlays.Centerlines);
+  m_Ui->maskCheck->setChecked(overlays.FixedMask);
+  m_Ui->labelsCheck->setChecked(overlays.OwnerLabels);
+  m_Ui->depthCheck->setChecked(overlays.DepthMap);
+  m_Updating = false;
+  emit displayChanged();
+}
+
+CPRComparison
+ModulePanel::GetComparison() const
+{
+  return static_cast<CPRComparison>(m_Ui->comparisonCombo->currentIndex());
+}
+
+void
+ModulePanel::SetComparison(CPRComparison comparison)
+{
+  m_Ui->comparisonCombo->setCurrentIndex(static_cast<int>(comparison));
+}
+
+OutputSelection
+ModulePanel::GetOutputSelection() const
+{
+  OutputSelection selection;
+  selection.CPR = m_Ui->saveCPRCheck->isChecked();
+  selection.CPRPNG = m_Ui->savePNGCheck->isChecked();
+  selection.UnfilteredCPR = m_Ui->saveUnfilteredCheck->isChecked();
+  selection.DepthMaps = m_Ui->saveDepthCheck->isChecked();
+  selection.FixedMask = m_Ui->saveMaskCheck->isChecked();
+  selection.OwnerLabels = m_Ui->saveLabelsCheck->isChecked();
+  selection.CutSurface = m_Ui->saveSurfaceCheck->isChecked();
+  return selection;
+}
+
+void
+ModulePanel::SetInputDescription(const QString & volume, const QString & centerlines)
+{
+  // A file by its name (the whole path in the status tip), a phantom by its description; the label shows what fits and
+  // never widens the panel (its size policy is Ignored), so that the captions beside it stay whole.
+  auto shortName = [](const QString & text)
+  {
+    const QFileInfo file(text);
+    return text.contains(QLatin1Char('/')) && !file.fileName().isEmpty() ? file.fileName() : text;
+  };
+  m_Ui->volumeLabel->setText(shortName(volume));
+  m_Ui->centerlineLabel->setText(shortName(centerlines));
+  m_Ui->volumeLabel->setStatusTip(volume);
+  m_Ui->centerlineLabel->setStatusTip(centerlines);
+}
+
+QWidget *
+ModulePanel::ControlOf(const QString & parameter) const
+{
+  const Ui::ModulePanel & ui = *m_Ui;
+  const std::string       name = parameter.toStdString();
+  if (name == ParameterName::UpAxis)
+    return ui.upCombo;
+  if (name == ParameterName::Angle)
+    return ui.angleSpin;
+  if (name == ParameterName::ViewSize)
+    return ui.widthSpin;
+  if (name == ParameterName::PixelSpacing)
+    return ui.spacingSpin;
+  if (name == ParameterName::DepthMode)
+    return ui.modeCombo;
+  if (name == ParameterName::FixLumen)
+    return ui.fixLumenCheck;
+  if (name == ParameterName::Relaxation)
+    return ui.relaxationSpin;
+  if (name == ParameterName::Anisotropy)
+    return ui.anisotropySpin;
+  if (name == ParameterName::Iterations)
+    return ui.iterationsSpin;
+  if (name == ParameterName::Backend || name == ParameterName::OpenCLDevice)
+    return ui.backendCombo;
+  if (name == ParameterName::Interpolation)
+    return ui.interpolationCombo;
+  if (name == ParameterName::Window)
+    return ui.windowSpin;
+  if (name == ParameterName::Level)
+    return ui.levelSpin;
+  return nullptr;
+}
+
+void
+ModulePanel::MarkParameterError(const QString & parameter, const QString & message)
+{
+  const Ui::ModulePanel & ui = *m_Ui;
+  for (QWidget * control : std::initializer_list<QWidget *>{ ui.upCombo,
+                                                             ui.angleSpin,
+                                                             ui.widthSpin,
+                                                             ui.heightSpin,
+                                                             ui.spacingSpin,
+                                                             ui.modeCombo,
+                                                             ui.fixLumenCheck,
+                                                             ui.relaxationSpin,
+                                                             ui.anisotropySpin,
+                                                             ui.iterationsSpin,
+                                                             ui.backendCombo,
+                                                             ui.interpolationCombo,
+                                                             ui.windowSpin,
+                                                             ui.levelSpin })
+  {
+    control->setStyleSheet(QString());
+    control->setStatusTip(QString());
+  }
+  if (parameter.isEmpty())
+  {
+    return;
+  }
+  QWidget * control = ControlOf(parameter);
+  if (control == nullptr)
+  {
+    return;
+  }
+  control->setStyleSheet(QStringLiteral("background-color: #ffd6d6;"));
+  control->setStatusTip(message);
+  if (control == ui.widthSpin)
+  {
+    ui.heightSpin->setStyleSheet(control->styleSheet());
+    ui.heightSpin->setStatusTip(message);
+  }
+}
+
+QSlider *
+ModulePanel::GetAngleSlider() const
+{
+  return m_Ui->angleSlider;
+}
+
+QDoubleSpinBox *
+ModulePanel::GetAngleSpinBox() const
+{
+  return m_Ui->angleSpin;
+}
+
+QDoubleSpinBox *
+ModulePanel::GetWindowSpinBox() const
+{
+  return m_Ui->windowSpin;
+}
+
+QDoubleSpinBox *
+ModulePanel::GetLevelSpinBox() const
+{
+  return m_Ui->levelSpin;
+}
+} // namespace vr

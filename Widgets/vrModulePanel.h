@@ -1,0 +1,159 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrModulePanel_h
+#define vrModulePanel_h
+
+#include "vrCPRView.h"
+#include "vrReformationController.h"
+#include "vrReformationParameters.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <string>
+
+namespace Ui
+{
+class ModulePanel;
+}
+class QSlider;
+class QDoubleSpinBox;
+
+namespace vr
+{
+/** A window/level preset of the display section (intensities in HU).
+ * \ingroup VesselReformation
+ */
+struct WindowLevelPreset
+{
+  const char * Name;
+  double       Window;
+  double       Level;
+};
+/** CTA (W 900, L 200: lumen, soft tissue and bone at once, as the demo's pictures), bone (W 2000, L 500) and soft
+ * tissue (W 400, L 40). */
+constexpr WindowLevelPreset CTAPreset{ "CTA", 900.0, 200.0 };
+constexpr WindowLevelPreset BonePreset{ "Bone", 2000.0, 500.0 };
+constexpr WindowLevelPreset SoftTissuePreset{ "Soft tissue", 400.0, 40.0 };
+
+/** Which outputs "Save outputs" writes.
+ * \ingroup VesselReformation
+ */
+struct OutputSelection
+{
+  bool CPR{ true };
+  bool CPRPNG{ true };
+  bool UnfilteredCPR{ true };
+  bool DepthMaps{ true };
+  bool FixedMask{ true };
+  bool OwnerLabels{ true };
+  bool CutSurface{ true };
+};
+
+/** \class ModulePanel
+ * \brief The module's parameter panel (layout in Resources/UI/vrModulePanel.ui): inputs, view, filter, display and
+ * outputs. It collects vr::ReformationParameters and says when they change; it computes nothing.
+ *
+ * parametersChanged() carries how the change should be requested: Interactive while the angle slider is being
+ * dragged, Final otherwise (spin boxes emit on Enter, on losing focus and on their arrows). Display settings
+ * (window, level, overlays, comparison) change nothing the logic computes and come through displayChanged().
+ *
+ * \sa ReformationController, CPRView
+ * \ingroup VesselReformation
+ */
+class ModulePanel : public QWidget
+{
+  Q_OBJECT
+
+public:
+  explicit ModulePanel(QWidget * parent = nullptr);
+  ~ModulePanel() override;
+
+  /** \return the parameters the controls show (view, filter, and the display window and level). */
+  ReformationParameters
+  GetParameters() const;
+  /** Shows \a parameters in the controls without emitting anything. */
+  void
+  SetParameters(const ReformationParameters & parameters);
+
+  /** Sets the angle (degrees, wrapped into [-180, 180)) as a user would, emitting parametersChanged(\a kind). */
+  void
+  SetAngle(double degrees, RequestKind kind);
+  double
+  GetAngle() const;
+
+  /** Sets the window and level controls; emits displayChanged(). */
+  void
+  SetWindowLevel(double window, double level);
+  /** Chooses a preset by name ("CTA", "Bone", "Soft tissue", "Full range"); \a fullRange gives the window and level of
+   * "Full range". Emits displayChanged(). \return false for an unknown name. */
+  bool
+  ApplyPreset(const QString & name, double fullRangeWindow, double fullRangeLevel);
+
+  CPROverlays
+  GetOverlays() const;
+  void
+  SetOverlays(const CPROverlays & overlays);
+  CPRComparison
+  GetComparison() const;
+  void
+  SetComparison(CPRComparison comparison);
+  OutputSelection
+  GetOutputSelection() const;
+
+  /** Shows where the inputs came from. */
+  void
+  SetInputDescription(const QString & volume, const QString & centerlines);
+  /** Marks the control of \a parameter (a vr::ParameterName) with \a message, or clears every mark when empty. */
+  void
+  MarkParameterError(const QString & parameter, const QString & message);
+
+  /** The controls, for hosts and tests. */
+  QSlider *
+  GetAngleSlider() const;
+  QDoubleSpinBox *
+  GetAngleSpinBox() const;
+  QDoubleSpinBox *
+  GetWindowSpinBox() const;
+  QDoubleSpinBox *
+  GetLevelSpinBox() const;
+  const Ui::ModulePanel &
+  GetUi() const
+  {
+    return *m_Ui;
+  }
+
+signals:
+  /** A parameter the logic uses changed. */
+  void
+  parametersChanged(vr::RequestKind kind);
+  /** Window, level, overlays or comparison changed: display only. */
+  void
+  displayChanged();
+  /** "Full range" was chosen: the host answers with SetWindowLevel() from the logic's display range. */
+  void
+  fullRangeRequested();
+  void
+  openVolumeRequested();
+  void
+  openCenterlinesRequested();
+  void
+  loadPhantomRequested(const QString & name);
+  void
+  saveOutputsRequested();
+
+private:
+  void
+  Connect();
+  QWidget *
+  ControlOf(const QString & parameter) const;
+
+  std::unique_ptr<Ui::ModulePanel> m_Ui;
+  bool                             m_Updating{ false };
+};
+
+/** \return \a degrees wrapped into [-180, 180). */
+double
+WrapAngle(double degrees);
+} // namespace vr
+
+#endif

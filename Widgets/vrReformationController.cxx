@@ -1,0 +1,432 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrReformationController.h"
+
+#include "vrInputError.h"
+#include "vrSurfacePreview.h"
+
+#include <QMetaObject>
+
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace vr
+{
+namespace
+{
+/** The logic's stage counts of \a after minus \a before. */
+StageCounts
+Difference(const StageCounts & after, const StageCounts & before)
+{
+  StageCounts counts;
+  counts.Conversion = after.Conversion - before.Conversion;
+  counts.Depth = after.Depth - before.Depth;
+  counts.Relax = after.Relax - before.Relax;
+  counts.Resample = after.Resample - before.Resample;
+  counts.UnfilteredSamplings = after.UnfilteredSamplings - before.UnfilteredSamplings;
+  counts.RelaxedSamplings = after.RelaxedSamplings - before.RelaxedSamplings;
+  counts.Surface = after.Surface - before.Surface;
+  return counts;
+}
+
+/** Registers the result types for queued signals once. */
+void
+RegisterMetaTypes()
+{
+  static const bool registered = []
+  {
+    qRegisterMetaType<std::shared_ptr<const ReformationResult>>();
+    qRegisterMetaType<std::shared_ptr<const ReformationInputs>>();
+    qRegisterMetaType<std::uint64_t>("std::uint64_t");
+    return true;
+  }();
+  (void)registered;
+}
+} // namespace
+
+ReformationController::ReformationController(QObject * parent)
+  : QObject(parent)
+{
+  RegisterMetaTypes();
+  m_Logic.SetProgressCallback(
+    [this](double fraction, const std::string & stage)
+    {
+      // Throttled by time: the relaxation reports every few iterations, the status bar needs a few steps per second,
+      // and each repaint of the window costs the processor the logic runs on (its OpenGL views are composed again).
+      const auto now = std::chrono::steady_clock::now();
+      if (fraction < 1.0 && m_ProgressStarted &&
+          std::chrono::duration<double>(now - m_LastProgressTime).count() < ProgressIntervalSeconds)
+      {
+        return;
+      }
+      m_ProgressStarted = true;
+      m_LastProgressTime = now;
+      const QString name = QString::fromStdString(stage);
+      Post([this, fraction, name] { emit progressChanged(fraction, name); });
+    });
+  m_Logic.SetWarningCallback(
+    [this](const std::string & message, const std::string &)
+    {
+      const QString text = QString::fromStdString(message);
+      Post([this, text] { emit warningIssued(text); });
+    });
+  m_Worker = std::thread([this] { WorkerLoop(); });
+}
+
+ReformationController::~ReformationController()
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_Quit = true;
+    m_PendingJob.reset();
+    m_PendingLoad.reset();
+    if (m_Running)
+    {
+      m_Logic.AbortUpdate();
+    }
+  }
+  m_Wake.notify_all();
+  m_Worker.join();
+}
+
+void
+ReformationController::LoadInputs(Loader loader, const QString & what)
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    if (m_PendingJob)
+    {
+      ++m_Statistics.Superseded;
+      m_PendingJob.reset();
+    }
+    m_PendingLoad = Load{ std::move(loader), what };
+    if (m_Running)
+    {
+      m_Logic.AbortUpdate();
+    }
+    // Results of every request made so far belong to the old inputs.
+    m_DisplayFloor = m_NextId;
+  }
+  SetBusy(true);
+  m_Wake.notify_all();
+}
+
+std::uint64_t
+ReformationController::Request(const ReformationParameters & parameters, RequestKind kind)
+{
+  std::uint64_t id = 0;
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    id = m_NextId++;
+    if (m_PendingJob)
+    {
+      ++m_Statistics.Superseded;
+    }
+    m_PendingJob = Job{ id, kind, parameters, std::chrono::steady_clock::now() };
+    if (kind == RequestKind::Final)
+    {
+      m_DisplayFloor = id;
+      if (m_Running)
+      {
+        m_Logic.AbortUpdate();
+      }
+    }
+  }
+  SetBusy(true);
+  m_Wake.notify_all();
+  return id;
+}
+
+std::shared_ptr<const ReformationInputs>
+ReformationController::GetInputs() const
+{
+  return m_Inputs;
+}
+
+bool
+ReformationController::IsIdle() const
+{
+  return !m_Busy;
+}
+
+StageCounts
+ReformationController::GetStageExecutionCounts() const
+{
+  std::lock_guard<std::mutex> lock(m_Mutex);
+  return m_Counts;
+}
+
+RequestStatistics
+ReformationController::GetStatistics() const
+{
+  std::lock_guard<std::mutex> lock(m_Mutex);
+  return m_Statistics;
+}
+
+std::shared_ptr<const ReformationResult>
+ReformationController::GetLatestResult() const
+{
+  return m_Latest;
+}
+
+void
+ReformationController::SetSurfaceWaitsForDisplay(bool wait, double maximumSeconds)
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_SurfaceWaitsForDisplay = wait;
+    m_SurfaceWaitSeconds = std::max(0.0, maximumSeconds);
+  }
+  m_Wake.notify_all();
+}
+
+void
+ReformationController::ImageShown(std::uint64_t requestId)
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_ShownId = std::max(m_ShownId, requestId);
+  }
+  m_Wake.notify_all();
+}
+
+void
+ReformationController::WorkerLoop()
+{
+  for (;;)
+  {
+    std::optional<Job>  job;
+    std::optional<Load> load;
+    {
+      std::unique_lock<std::mutex> lock(m_Mutex);
+      m_Wake.wait(lock, [this] { return m_Quit || m_PendingLoad || m_PendingJob; });
+      if (m_Quit)
+      {
+        return;
+      }
+      // A load goes first: requests made after it are for its data.
+      if (m_PendingLoad)
+      {
+        load.swap(m_PendingLoad);
+      }
+      else
+      {
+        job.swap(m_PendingJob);
+        m_RunningKind = job->Kind;
+      }
+      m_Running = true;
+    }
+    if (load)
+    {
+      RunLoad(*load);
+    }
+    else
+    {
+      RunJob(*job);
+    }
+    bool idle = false;
+    {
+      std::lock_guard<std::mutex> lock(m_Mutex);
+      m_Running = false;
+      idle = !m_PendingJob && !m_PendingLoad;
+    }
+    if (idle)
+    {
+      // Posted after the results, so when busyChanged(false) arrives every result has been delivered.
+      Post(
+        [this]
+        {
+          bool idleNow = false;
+          {
+            std::lock_guard<std::mutex> lock(m_Mutex);
+            idleNow = !m_Running && !m_PendingJob && !m_PendingLoad;
+          }
+          if (idleNow)
+          {
+            SetBusy(false);
+          }
+        });
+    }
+  }
+}
+
+void
+ReformationController::RunLoad(Load & load)
+{
+  try
+  {
+    auto inputs = std::make_shared<const ReformationInputs>(load.Run());
+    m_WorkerInputs = inputs;
+    m_Logic.SetVolumeNode(inputs->Volume);
+    m_Logic.SetCenterlineNode(inputs->Centerlines);
+    Post(
+      [this, inputs]
+      {
+        m_Inputs = inputs;
+        emit inputsLoaded(inputs);
+      });
+  }
+  catch (const std::exception & error)
+  {
+    const QString what = load.What;
+    const QString message = QString::fromStdString(error.what());
+    Post([this, what, message] { emit inputsFailed(what, message); });
+  }
+}
+
+void
+ReformationController::RunJob(const Job & job)
+{
+  auto images = Update(job, false);
+  if (!images)
+  {
+    return;
+  }
+  Deliver(images);
+  if (job.Kind != RequestKind::Final)
+  {
+    return;
+  }
+  {
+    std::unique_lock<std::mutex> lock(m_Mutex);
+    const auto                   superseded = [this] { return m_PendingJob || m_PendingLoad || m_Quit; };
+    if (m_SurfaceWaitsForDisplay)
+    {
+      m_Wake.wait_for(lock,
+                      std::chrono::duration<double>(m_SurfaceWaitSeconds),
+                      [&] { return superseded() || !m_SurfaceWaitsForDisplay || m_ShownId >= job.Id; });
+    }
+    if (superseded())
+    {
+      return; // superseded: its surface would be stale before it is drawn
+    }
+  }
+  auto surface = Update(job, true);
+  if (surface)
+  {
+    surface->PreviewSurface = images->PreviewSurface;
+    surface->PreviewStride = images->PreviewStride;
+    Deliver(surface);
+  }
+}
+
+std::shared_ptr<ReformationResult>
+ReformationController::Update(const Job & job, bool surface)
+{
+  using Clock = std::chrono::steady_clock;
+  if (!m_WorkerInputs)
+  {
+    const std::uint64_t id = job.Id;
+    Post([this, id] { emit requestFailed(id, tr("No volume and centerlines are loaded yet."), QString()); });
+    return nullptr;
+  }
+  m_Logic.SetParameters(job.Parameters);
+  m_Logic.SetSurfaceEnabled(surface);
+  m_ProgressStarted = false;
+  const StageCounts before = m_Logic.GetStageExecutionCounts();
+  const auto        start = Clock::now();
+  std::string       failure;
+  std::string       parameter;
+  try
+  {
+    const ReformationOutputs & outputs = m_Logic.Update();
+    const double               seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    auto                       result = std::make_shared<ReformationResult>();
+    result->RequestId = job.Id;
+    result->Kind = job.Kind;
+    result->Parameters = job.Parameters;
+    result->Outputs = outputs;
+    result->Inputs = m_WorkerInputs;
+    result->UpdateSeconds = seconds;
+    result->RequestTime = job.Time;
+    result->StartTime = start;
+    result->CountsAfter = m_Logic.GetStageExecutionCounts();
+    result->StagesRun = Difference(result->CountsAfter, before);
+    m_Logic.GetDisplayWindowLevel(result->LogicWindow, result->LogicLevel);
+    result->Warnings = m_Logic.GetWarnings();
+    if (!surface)
+    {
+      const auto & size = outputs.View.GetSize();
+      result->PreviewStride =
+        PreviewSurfaceStride(static_cast<unsigned int>(size[0]), static_cast<unsigned int>(size[1]));
+      const auto previewStart = Clock::now();
+      result->PreviewSurface = BuildPreviewSurface(outputs, result->PreviewStride);
+      result->PreviewSeconds = std::chrono::duration<double>(Clock::now() - previewStart).count();
+    }
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_Counts = result->CountsAfter;
+    return result;
+  }
+  catch (const Cancelled &)
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_Counts = m_Logic.GetStageExecutionCounts();
+    ++m_Statistics.Aborted;
+    return nullptr;
+  }
+  catch (const InputError & error)
+  {
+    failure = error.what();
+    parameter = error.Parameter();
+  }
+  catch (const std::exception & error)
+  {
+    failure = error.what();
+  }
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_Counts = m_Logic.GetStageExecutionCounts();
+    ++m_Statistics.Failed;
+  }
+  const std::uint64_t id = job.Id;
+  const QString       message = QString::fromStdString(failure);
+  const QString       name = QString::fromStdString(parameter);
+  Post([this, id, message, name] { emit requestFailed(id, message, name); });
+  return nullptr;
+}
+
+void
+ReformationController::Post(std::function<void()> call)
+{
+  QMetaObject::invokeMethod(this, std::move(call), Qt::QueuedConnection);
+}
+
+void
+ReformationController::Deliver(std::shared_ptr<ReformationResult> result)
+{
+  result->ReadyTime = std::chrono::steady_clock::now();
+  Post(
+    [this, result]
+    {
+      std::uint64_t floor = 0;
+      {
+        std::lock_guard<std::mutex> lock(m_Mutex);
+        floor = m_DisplayFloor;
+        if (result->RequestId < floor)
+        {
+          ++m_Statistics.Stale;
+          return;
+        }
+        if (!result->HasFullSurface())
+        {
+          ++m_Statistics.Displayed;
+        }
+      }
+      m_Latest = result;
+      emit resultReady(result);
+    });
+}
+
+void
+ReformationController::SetBusy(bool busy)
+{
+  if (busy == m_Busy)
+  {
+    return;
+  }
+  m_Busy = busy;
+  emit busyChanged(busy);
+}
+} // namespace vr

@@ -1,0 +1,261 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrReformationController_h
+#define vrReformationController_h
+
+#include "vrReformationInputs.h"
+#include "vrReformationParameters.h"
+#include "vrVesselReformationLogic.h"
+
+#include <QObject>
+#include <QString>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+class vtkPolyData;
+
+namespace vr
+{
+/** How a request treats the update running when it arrives.
+ * \ingroup VesselReformation
+ */
+enum class RequestKind
+{
+  /** Any change the user settled on (a spin box, a released slider, the end of a drag): aborts a running update
+   * and replaces a pending request. Its cut surface is built after its images are shown. */
+  Final,
+  /** A step of a drag: replaces a pending request but lets a running update finish and be shown, so that a drag
+   * shows a new image each time the logic finishes one, at most one update behind the mouse. No cut surface (the 3D
+   * view shows the preview). */
+  Interactive
+};
+
+/** One displayed reformation: the logic's outputs for one request, with what the views need beside them.
+ * \ingroup VesselReformation
+ */
+struct ReformationResult
+{
+  /** The request it answers (increasing in the order requests were made). */
+  std::uint64_t RequestId{ 0 };
+  RequestKind   Kind{ RequestKind::Final };
+  /** The parameters it was computed with. */
+  ReformationParameters Parameters;
+  /** The logic's output nodes (the logic makes new nodes when a stage reruns, so these stay as they are). Surface is
+   * null in the first result of a request and set in the second one (Final requests only). */
+  ReformationOutputs Outputs;
+  /** The data the outputs were computed from (the overlays' centerlines, branch names). */
+  std::shared_ptr<const ReformationInputs> Inputs;
+  /** The cut surface at every PreviewStride-th pixel (vr::BuildPreviewSurface), for the 3D view while dragging. */
+  vtkSmartPointer<vtkPolyData> PreviewSurface;
+  unsigned int                 PreviewStride{ 1 };
+  /** How many times each stage ran for this result (the logic's stage counts, after minus before). */
+  StageCounts StagesRun;
+  /** The logic's stage counts after this result's update. */
+  StageCounts CountsAfter;
+  /** Wall time of VesselReformationLogic::Update() for this result, in seconds. */
+  double UpdateSeconds{ 0.0 };
+  /** Wall time of building PreviewSurface on the worker after the update, in seconds (0 when not built). */
+  double PreviewSeconds{ 0.0 };
+  /** When the request was made, when the worker began its update, and when the worker handed the result to the GUI
+   * thread (the time from this to the display is the GUI's). */
+  std::chrono::steady_clock::time_point RequestTime;
+  std::chrono::steady_clock::time_point StartTime;
+  std::chrono::steady_clock::time_point ReadyTime;
+  /** The window and level the logic gives for display (VesselReformationLogic::GetDisplayWindowLevel). */
+  double LogicWindow{ 1.0 };
+  double LogicLevel{ 0.0 };
+  /** The warnings that hold for this result's inputs. */
+  std::vector<std::string> Warnings;
+  /** True for the second result of a Final request, the one with the full cut surface. */
+  bool
+  HasFullSurface() const
+  {
+    return Outputs.Surface != nullptr;
+  }
+};
+
+/** Counts of what happened to requests, for the status bar and for tests.
+ * \ingroup VesselReformation
+ */
+struct RequestStatistics
+{
+  /** Requests whose images were shown. */
+  unsigned int Displayed{ 0 };
+  /** Requests replaced while they waited, never started. */
+  unsigned int Superseded{ 0 };
+  /** Updates stopped by VesselReformationLogic::AbortUpdate(), their vr::Cancelled dropped. */
+  unsigned int Aborted{ 0 };
+  /** Results that finished after a newer Final request was made, dropped without being shown. */
+  unsigned int Stale{ 0 };
+  /** Requests the logic refused (vr::InputError). */
+  unsigned int Failed{ 0 };
+};
+
+/** \class ReformationController
+ * \brief Runs the module logic on a worker thread for the widgets: they hand it parameters, it hands back results
+ * to display. It computes nothing of its own.
+ *
+ * One vr::VesselReformationLogic lives on one worker thread, which alone calls it (AbortUpdate() aside, which is
+ * thread-safe). At most one request waits: a new request replaces the waiting one (latest wins), and a Final request
+ * also aborts the running update through the logic's AbortUpdate() (ITK's abort flag), whose vr::Cancelled is
+ * dropped. So a fast drag never queues work. A result that finishes after a newer Final request was made is dropped
+ * too (stale). Results come back on the thread that owns the controller (the GUI thread) through resultReady().
+ *
+ * Each request runs in two steps: the images (depth, relaxation, both CPRs) with the logic's cut surface off, shown
+ * at once with a preview surface; then, for Final requests not yet superseded, the cut surface alone (the logic reruns
+ * only that stage), shown as a second result of the same request. With SetSurfaceWaitsForDisplay(true), the cut
+ * surface waits until ImageShown() says the images are on screen (or a time limit passes), so that it does not
+ * compete with the drawing of the images for the processor.
+ *
+ * Inputs are loaded on the worker thread as well (files, phantoms): a loader that throws vr::InputError leaves the
+ * inputs in use as they were and reports its message through inputsFailed().
+ *
+ * \sa VesselReformationLogic, CPRView, ThreeDView
+ * \ingroup VesselReformation
+ */
+class ReformationController : public QObject
+{
+  Q_OBJECT
+
+public:
+  using Loader = std::function<ReformationInputs()>;
+
+  explicit ReformationController(QObject * parent = nullptr);
+  /** Aborts a running update and joins the worker. */
+  ~ReformationController() override;
+
+  /** Loads new inputs on the worker: \a loader runs there. A running update is aborted and a waiting request dropped
+   * (they were for the old data). Emits inputsLoaded() or inputsFailed(). A later Request() runs on the new inputs.
+   * \param loader reads files or makes a phantom; throws vr::InputError on bad input.
+   * \param what names what is loaded in messages ("aorta.mha"). */
+  void
+  LoadInputs(Loader loader, const QString & what);
+
+  /** Asks for a reformation with \a parameters (see RequestKind for how it treats a running update).
+   * \return the request's id. */
+  std::uint64_t
+  Request(const ReformationParameters & parameters, RequestKind kind);
+
+  /** \return the inputs the next request runs on (null before the first load). GUI thread. */
+  std::shared_ptr<const ReformationInputs>
+  GetInputs() const;
+  /** \return true while nothing runs or waits (loads included). */
+  bool
+  IsIdle() const;
+  /** \return the logic's stage counts after its latest update (any thread). */
+  StageCounts
+  GetStageExecutionCounts() const;
+  /** \return what happened to requests so far. */
+  RequestStatistics
+  GetStatistics() const;
+  /** \return the most recent result shown, or null. */
+  std::shared_ptr<const ReformationResult>
+  GetLatestResult() const;
+
+  /** Whether a Final request's cut surface waits for ImageShown() of its images (default false: it follows at once),
+   * and for at most \a maximumSeconds (then it is built anyway, e.g. when no view is on screen). */
+  void
+  SetSurfaceWaitsForDisplay(bool wait, double maximumSeconds = 1.0);
+  /** Says that the images of request \a requestId (or a later one) are on screen. Any thread. */
+  void
+  ImageShown(std::uint64_t requestId);
+  /** The least time between two progressChanged() signals, in seconds (the first and the last always come). */
+  static constexpr double ProgressIntervalSeconds = 0.1;
+
+signals:
+  void
+  inputsLoaded(std::shared_ptr<const vr::ReformationInputs> inputs);
+  void
+  inputsFailed(const QString & what, const QString & message);
+  /** A result to display (stale ones are never emitted). */
+  void
+  resultReady(std::shared_ptr<const vr::ReformationResult> result);
+  /** The logic refused request \a requestId: \a message names the parameter or node; \a parameter is the parameter by
+   * meaning (vr::ParameterName) or empty. */
+  void
+  requestFailed(std::uint64_t requestId, const QString & message, const QString & parameter);
+  /** Overall progress of the running update in [0, 1] and its stage. */
+  void
+  progressChanged(double fraction, const QString & stage);
+  /** A warning of the logic (centerlines outside the volume, backend fallback). */
+  void
+  warningIssued(const QString & message);
+  /** Becomes true when work starts and false when nothing runs or waits. */
+  void
+  busyChanged(bool busy);
+
+private:
+  struct Job
+  {
+    std::uint64_t                         Id{ 0 };
+    RequestKind                           Kind{ RequestKind::Final };
+    ReformationParameters                 Parameters;
+    std::chrono::steady_clock::time_point Time;
+  };
+  struct Load
+  {
+    Loader  Run;
+    QString What;
+  };
+
+  void
+  WorkerLoop();
+  void
+  RunLoad(Load & load);
+  void
+  RunJob(const Job & job);
+  /** Runs one logic update with the cut surface on or off; returns the result, or null when cancelled or failed. */
+  std::shared_ptr<ReformationResult>
+  Update(const Job & job, bool surface);
+  /** Posts \a call to the GUI thread. */
+  void
+  Post(std::function<void()> call);
+  void
+  Deliver(std::shared_ptr<ReformationResult> result);
+  void
+  SetBusy(bool busy);
+
+  // Worker-only state.
+  VesselReformationLogic                   m_Logic;
+  std::shared_ptr<const ReformationInputs> m_WorkerInputs;
+  std::chrono::steady_clock::time_point    m_LastProgressTime;
+  bool                                     m_ProgressStarted{ false };
+
+  // Shared state, under m_Mutex.
+  mutable std::mutex      m_Mutex;
+  std::condition_variable m_Wake;
+  std::optional<Job>      m_PendingJob;
+  std::optional<Load>     m_PendingLoad;
+  bool                    m_Running{ false };
+  RequestKind             m_RunningKind{ RequestKind::Final };
+  bool                    m_Quit{ false };
+  std::uint64_t           m_NextId{ 1 };
+  StageCounts             m_Counts;
+  RequestStatistics       m_Statistics;
+  bool                    m_SurfaceWaitsForDisplay{ false };
+  double                  m_SurfaceWaitSeconds{ 1.0 };
+  std::uint64_t           m_ShownId{ 0 };
+
+  // GUI-thread state.
+  std::shared_ptr<const ReformationInputs> m_Inputs;
+  std::shared_ptr<const ReformationResult> m_Latest;
+  /** Results of requests older than this one are stale. */
+  std::uint64_t m_DisplayFloor{ 0 };
+  bool          m_Busy{ false };
+
+  std::thread m_Worker;
+};
+} // namespace vr
+
+Q_DECLARE_METATYPE(std::shared_ptr<const vr::ReformationResult>)
+Q_DECLARE_METATYPE(std::shared_ptr<const vr::ReformationInputs>)
+
+#endif

@@ -1,0 +1,156 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrViewerWindow_h
+#define vrViewerWindow_h
+
+#include "vrCPRView.h"
+#include "vrModulePanel.h"
+#include "vrReformationController.h"
+#include "vrThreeDView.h"
+
+#include <QMainWindow>
+#include <QString>
+
+#include <functional>
+#include <memory>
+
+class QLabel;
+class QProgressBar;
+
+namespace vr
+{
+/** \class ViewerWindow
+ * \brief The VesselReformationViewer's main window, a host for the module's widgets: the module panel, the CPR view
+ * and the 3D view around one ReformationController, with menus to open files and phantoms, save outputs and show the
+ * module description, and a status bar with the progress, each stage's time and the pixel readout.
+ *
+ * Bad files never crash it: the logic's message is shown in a dialog (or given to the error handler a host sets) and
+ * the data on screen stays.
+ *
+ * \sa ModulePanel, CPRView, ThreeDView, ReformationController
+ * \ingroup VesselReformation
+ */
+class ViewerWindow : public QMainWindow
+{
+  Q_OBJECT
+
+public:
+  /** Receives errors instead of a dialog: a title ("Cannot open aorta.mha") and the logic's message. */
+  using ErrorHandler = std::function<void(const QString & title, const QString & message)>;
+
+  explicit ViewerWindow(QWidget * parent = nullptr);
+  ~ViewerWindow() override;
+
+  /** Loads a built-in phantom (on the worker thread) and reforms it. */
+  void
+  LoadPhantom(const QString & name, double spacing = 1.5);
+  /** Opens a volume and centerlines together. */
+  void
+  OpenFiles(const QString & volume, const QString & centerlines);
+  /** Opens a volume, keeping the centerlines. */
+  void
+  OpenVolume(const QString & path);
+  /** Opens centerlines, keeping the volume. */
+  void
+  OpenCenterlines(const QString & path);
+
+  /** Sends the panel's parameters to the logic. */
+  void
+  RequestReformation(RequestKind kind);
+  /** Sends the panel's parameters at \a angle (degrees) to the logic as a step of a drag, leaving the panel as it is.
+   */
+  void
+  RequestTurn(double angle);
+  /** Writes the outputs on screen into \a folder (WriteOutputs); errors go to the error handler or a dialog.
+   * \return whether they were written. */
+  bool
+  SaveOutputs(const QString & folder);
+  /** Renders the window into a PNG at \a path, atomically. \return an empty string, or what went wrong. */
+  QString
+  WriteScreenshot(const QString & path);
+
+  /** Errors go to \a handler instead of a dialog (scripted mode); an empty handler restores dialogs. */
+  void
+  SetErrorHandler(ErrorHandler handler);
+  /** \return the latest error shown: "title: message", or empty. */
+  QString
+  GetLastError() const
+  {
+    return m_LastError;
+  }
+
+  /** \return the module description with the paper's citation, as the About box shows it (HTML). */
+  static QString
+  AboutText();
+
+  ModulePanel *
+  GetPanel() const
+  {
+    return m_Panel;
+  }
+  CPRView *
+  GetCPRView() const
+  {
+    return m_CPRView;
+  }
+  ThreeDView *
+  GetThreeDView() const
+  {
+    return m_ThreeDView;
+  }
+  ReformationController *
+  GetController() const
+  {
+    return m_Controller;
+  }
+
+signals:
+  /** An error was shown (dialog or handler). */
+  void
+  errorShown(const QString & title, const QString & message);
+
+private:
+  void
+  BuildMenus();
+  void
+  ConnectParts();
+  void
+  ApplyDisplay();
+  void
+  ShowError(const QString & title, const QString & message);
+  void
+  ShowResult(const std::shared_ptr<const ReformationResult> & result);
+  void
+  ShowTimes();
+  void
+  ShowAbout();
+  void
+  ChooseAndOpenVolume(bool dicomFolder);
+  void
+  ChooseAndOpenCenterlines();
+  void
+  ChooseAndSaveOutputs();
+  void
+  ChooseAndSaveScreenshot();
+
+  ReformationController * m_Controller{ nullptr };
+  ModulePanel *           m_Panel{ nullptr };
+  CPRView *               m_CPRView{ nullptr };
+  ThreeDView *            m_ThreeDView{ nullptr };
+  QLabel *                m_Readout{ nullptr };
+  QLabel *                m_Times{ nullptr };
+  QProgressBar *          m_Progress{ nullptr };
+  ErrorHandler            m_ErrorHandler;
+  QString                 m_LastError;
+  double                  m_DragStartAngle{ 0.0 };
+  /** While a left-drag in the CPR view turns the view, its steps go to the controller directly and the panel shows
+   * the angle of each image as it is shown: a change of the panel repaints the window, which Qt composes with its
+   * OpenGL views, and at the mouse's 60 Hz those repaints took the processor the logic needs. */
+  bool m_Turning{ false };
+  bool m_FullRangeOnNextResult{ false };
+  /** The images on screen, and the full cut surface of the same request once it came. */
+  std::shared_ptr<const ReformationResult> m_Shown;
+  std::shared_ptr<const ReformationResult> m_ShownSurface;
+};
+} // namespace vr
+
+#endif
