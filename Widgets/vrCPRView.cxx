@@ -376,7 +376,7 @@ CPRView::UpdatePanes()
     const auto & parameters = m_Result->Parameters;
     // Two short lines, so that the caption fits under the image in the side-by-side comparison too.
     std::string filtered = "bilateral: w " + TrimNumber(parameters.Relaxation) + ", a " +
-                           TrimNumber(parameters.Anisotropy) + " mm^-2\n" + std::to_string(parameters.Iterations) +
+                           TrimNumber(parameters.EffectiveAnisotropy()) + " mm^-2\n" + std::to_string(parameters.Iterations) +
                            " iterations";
     m_Filtered->Caption->SetInput(filtered.c_str());
     m_Unfiltered->Caption->SetInput("unfiltered (w = 0)");

@@ -241,7 +241,7 @@ ModulePanel::SetParameters(const ReformationParameters & parameters)
   SelectText(ui.interpolationCombo, ToString(parameters.Interpolation));
   ui.fixLumenCheck->setChecked(parameters.FixLumen);
   ui.relaxationSpin->setValue(parameters.Relaxation);
-  ui.anisotropySpin->setValue(parameters.Anisotropy);
+  ui.anisotropySpin->setValue(parameters.EffectiveAnisotropy());
   ui.iterationsSpin->setValue(static_cast<int>(parameters.Iterations));
   SelectText(ui.backendCombo, ToString(parameters.Backend));
   if (parameters.Window > 0.0)

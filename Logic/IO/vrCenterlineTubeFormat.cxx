@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -288,11 +289,21 @@ ReadTubeTree(const std::string & path, CoordinateSpace space, CenterlineReadRepo
       reader->Update();
       tree = itk::CenterlineTree::FromSpatialObject(reader->GetGroup());
     }
+    catch (const InputError &)
+    {
+      throw;
+    }
     catch (const itk::ExceptionObject & exception)
     {
       const std::string detail = metaMessages.FirstLine();
       throw InputError("centerline file " + path + ": not a readable TubeTK/MetaIO .tre file: " +
                        CondenseITKMessage(exception) + (detail.empty() ? std::string() : " (" + detail + ")"));
+    }
+    catch (const std::exception & exception)
+    {
+      // MetaIO's own parsing throws standard exceptions on some malformed lines (fuzzing: MET_ReadSubType).
+      throw InputError("centerline file " + path + ": not a readable TubeTK/MetaIO .tre file: MetaIO failed (" +
+                       std::string(exception.what()).substr(0, 200) + ")");
     }
     metaText = metaMessages.FirstLine();
   }
