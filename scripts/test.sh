@@ -40,7 +40,7 @@ fi
 if [ -z "$sanitize" ]; then
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release "${launcher[@]}"
   cmake --build build
-  ctest --test-dir build --output-on-failure --timeout 900
+  ctest --test-dir build --output-on-failure --timeout 900 -j "$(nproc)"
   exit 0
 fi
 
@@ -59,5 +59,5 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release "${compilers[@]}" "${
 start=$(date +%s)
 cmake --build "$build"
 built=$(date +%s)
-ctest --test-dir "$build" --output-on-failure --timeout 1800
+ctest --test-dir "$build" --output-on-failure --timeout 1800 -j "$(nproc)"
 echo "test.sh --sanitize=$sanitize: build $((built - start)) s, tests $(($(date +%s) - built)) s"

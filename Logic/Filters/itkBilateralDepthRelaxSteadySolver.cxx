@@ -33,6 +33,13 @@ constexpr double InnerReduction = 0.1;
 constexpr unsigned int MaximumInnerIterations = 40;
 constexpr unsigned int RebuildAfterCycles = 4;
 
+/** Outer iterations take Newton steps from the first one whose residual has not fallen below this fraction of the
+ * previous one. */
+constexpr double NewtonAfterReduction = 0.5;
+
+/** The longest step along a lagged-weights correction, in multiples of it. */
+constexpr float MaximumStep = 64.0f;
+
 /** Partial sums per row: a fixed number of lanes, added in a fixed order, whatever the vector width or thread. */
 constexpr long Lanes = 16;
 
@@ -779,6 +786,9 @@ AssembleRow(float * __restrict c,
             float * __restrict inverse,
             float * __restrict e,
             float * __restrict n,
+            float * __restrict hc,
+            float * __restrict he,
+            float * __restrict hn,
             float * __restrict residual,
             const double * __restrict d,
             const double * __restrict dAbove,
@@ -788,21 +798,32 @@ AssembleRow(float * __restrict c,
             const float * __restrict right,
             const float * __restrict down,
             const float * __restrict up,
-            long width)
+            float twiceAnisotropy,
+            long  width)
 {
   constexpr float Smallest = std::numeric_limits<float>::min();
   for (long x = 0; x < width; ++x)
   {
+    const float toRight = static_cast<float>(d[x + 1] - d[x]);
+    const float toLeft = static_cast<float>(d[x - 1] - d[x]);
+    const float toAbove = static_cast<float>(dAbove[x] - d[x]);
+    const float toBelow = static_cast<float>(dBelow[x] - d[x]);
     const float diagonal = ((right[x] + right[x - 1]) + (down[x] + up[x])) * active[x];
-    const float flux = right[x] * static_cast<float>(d[x + 1] - d[x]) +
-                       right[x - 1] * static_cast<float>(d[x - 1] - d[x]) +
-                       down[x] * static_cast<float>(dAbove[x] - d[x]) + up[x] * static_cast<float>(dBelow[x] - d[x]);
+    const float flux = right[x] * toRight + right[x - 1] * toLeft + down[x] * toAbove + up[x] * toBelow;
     const float live = diagonal > 0.0f ? 1.0f : 0.0f;
     c[x] = diagonal;
     inverse[x] = live / std::max(diagonal, Smallest);
     e[x] = right[x] * active[x] * active[x + 1];
     n[x] = down[x] * active[x] * activeAbove[x];
     residual[x] = flux * live;
+    // The energy's curvature along each edge: d^2/dx^2 (1 - R(x)) / (2a) = R(x) (1 - 2 a x^2).
+    const float curvatureRight = right[x] * (1.0f - twiceAnisotropy * toRight * toRight);
+    const float curvatureLeft = right[x - 1] * (1.0f - twiceAnisotropy * toLeft * toLeft);
+    const float curvatureAbove = down[x] * (1.0f - twiceAnisotropy * toAbove * toAbove);
+    const float curvatureBelow = up[x] * (1.0f - twiceAnisotropy * toBelow * toBelow);
+    hc[x] = ((curvatureRight + curvatureLeft) + (curvatureAbove + curvatureBelow)) * active[x];
+    he[x] = curvatureRight * active[x] * active[x + 1];
+    hn[x] = curvatureAbove * active[x] * activeAbove[x];
   }
 }
 
@@ -832,15 +853,90 @@ DirectionRow(float * __restrict v, const float * __restrict z, float beta, long 
   }
 }
 
+/** expm1(u) for |u| <= 1/2, by its Taylor polynomial to degree 8 (relative error below 3e-8). */
+inline float
+SmallExpMinusOne(float u)
+{
+  float p = u * (1.0f / 40320.0f) + 1.0f / 5040.0f;
+  p = p * u + 1.0f / 720.0f;
+  p = p * u + 1.0f / 120.0f;
+  p = p * u + 1.0f / 24.0f;
+  p = p * u + 1.0f / 6.0f;
+  p = p * u + 0.5f;
+  p = p * u + 1.0f;
+  return p * u;
+}
+
+/** (1 - R(from + step)) - (1 - R(from)) = R(from) - R(from + step): an edge's share of the energy change, times 2a.
+ * Where the exponent's change u = -a step (2 from + step) is small, as R(from) (-expm1(u)), which keeps its digits
+ * when the step is much smaller than the difference; elsewhere as the plain difference of the two weights. */
+inline float
+EdgeEnergyChange(float from, float step, float anisotropy, float scale)
+{
+  const float to = from + step;
+  const float u = -anisotropy * step * (from + to);
+  const float near = -RangeWeight(from, scale) * SmallExpMinusOne(std::clamp(u, -0.5f, 0.5f));
+  const float far = RangeWeight(from, scale) - RangeWeight(to, scale);
+  return std::abs(u) <= 0.5f ? near : far;
+}
+
+/** The change of the energy sum (1 - R(D_p - D_q)) over a row's edges to the right and to the row below (\a below
+ * null for the last row) when the depths move by \a step times \a delta, times 2a, summed in Lanes partial sums. */
+double
+EnergyChangeRow(const double * __restrict d,
+                const double * __restrict below,
+                const float * __restrict delta,
+                const float * __restrict deltaBelow,
+                float step,
+                float anisotropy,
+                float scale,
+                float * __restrict scratch,
+                long width)
+{
+  for (long x = 0; x + 1 < width; ++x)
+  {
+    scratch[x] =
+      EdgeEnergyChange(static_cast<float>(d[x + 1] - d[x]), step * (delta[x + 1] - delta[x]), anisotropy, scale);
+  }
+  scratch[width - 1] = 0.0f;
+  if (below)
+  {
+    for (long x = 0; x < width; ++x)
+    {
+      scratch[x] +=
+        EdgeEnergyChange(static_cast<float>(below[x] - d[x]), step * (deltaBelow[x] - delta[x]), anisotropy, scale);
+    }
+  }
+  double lanes[Lanes] = {};
+  long   i = 0;
+  for (; i + Lanes <= width; i += Lanes)
+  {
+    for (long j = 0; j < Lanes; ++j)
+    {
+      lanes[j] += scratch[i + j];
+    }
+  }
+  for (long j = 0; i < width; ++i, ++j)
+  {
+    lanes[j] += scratch[i];
+  }
+  double sum = 0.0;
+  for (long j = 0; j < Lanes; ++j)
+  {
+    sum += lanes[j];
+  }
+  return sum;
+}
+
 /** depth += delta on a row, kept within [low, high]: the fixed point lies within the range of the input (each free
  * pixel a weighted mean of its neighbours), so a correction that leaves it, as one can in a mode the weights all
  * but decouple, is cut back to it. */
 void
-AddRow(double * __restrict depth, const float * __restrict delta, double low, double high, long width)
+AddRow(double * __restrict depth, const float * __restrict delta, float step, double low, double high, long width)
 {
   for (long x = 0; x < width; ++x)
   {
-    const double moved = depth[x] + static_cast<double>(delta[x]);
+    const double moved = depth[x] + static_cast<double>(step * delta[x]);
     depth[x] = std::min(std::max(moved, low), high);
   }
 }
@@ -905,6 +1001,7 @@ struct SolverBuffers
   Array<double>              Depth;
   Array<float>               WeightRight, WeightDown, Fixed, Active;
   Array<float>               Residual, Z, Delta, Direction, Product;
+  Array<float>               HessianC, HessianE, HessianN, Saved;
   std::vector<double>        RowSums;
   std::vector<std::uint64_t> RowSignatures;
   std::vector<double>        RowMaxima;
@@ -997,6 +1094,7 @@ public:
     , m_Stride(PaddedStride(width))
     , m_Scale(static_cast<float>(anisotropy > 0.0 ? std::sqrt(anisotropy / std::log(2.0)) : 0.0))
     , m_Isotropic(anisotropy == 0.0)
+    , m_TwiceAnisotropy(static_cast<float>(2.0 * anisotropy))
   {
     const std::size_t size = static_cast<std::size_t>(m_Stride * (height + 3));
     bool              fresh = false;
@@ -1010,6 +1108,10 @@ public:
     m_Delta = buffers.Delta.Reserve(size, fresh);
     m_Direction = buffers.Direction.Reserve(size, fresh);
     m_Product = buffers.Product.Reserve(size, fresh);
+    m_HessianC = buffers.HessianC.Reserve(size, fresh);
+    m_HessianE = buffers.HessianE.Reserve(size, fresh);
+    m_HessianN = buffers.HessianN.Reserve(size, fresh);
+    m_Saved = buffers.Saved.Reserve(size, fresh);
     buffers.RowSums.assign(static_cast<std::size_t>(height), 0.0);
     buffers.RowSignatures.assign(static_cast<std::size_t>(height), 0);
     buffers.RowMaxima.assign(static_cast<std::size_t>(height), 0.0);
@@ -1253,6 +1355,9 @@ public:
                             l.Inverse + row,
                             l.E + row,
                             l.N + row,
+                            m_HessianC + row,
+                            m_HessianE + row,
+                            m_HessianN + row,
                             m_Residual + row,
                             m_Depth + row,
                             m_Depth + row + s,
@@ -1262,6 +1367,7 @@ public:
                             m_WeightRight + row,
                             m_WeightDown + row,
                             m_WeightDown + row - s,
+                            m_TwiceAnisotropy,
                             m_Width);
                 maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, m_Width);
               }
@@ -1641,11 +1747,18 @@ public:
     return sum;
   }
 
-  /** Conjugate gradients on the finest level, preconditioned by V-cycles, until max |r| / C falls below
-   * \a target. Adds the correction to the depths; returns the V-cycles spent. */
-  unsigned int
-  SolveCorrection(double target)
+  /** Conjugate gradients on the finest level, preconditioned by V-cycles of the lagged-weights operator, until
+   * max |r| / C falls below \a target: on the energy's Hessian when \a newton, else on the lagged-weights operator.
+   * Leaves the correction in m_Delta and the V-cycles spent in m_LastCycles. Returns false when a Newton solve meets
+   * a direction of non-positive curvature (left in m_Direction, m_NegativeCurvature set); the correction is then
+   * unusable. */
+  bool
+  SolveCorrection(double target, bool newton)
   {
+    const float * opC = newton ? m_HessianC : m_Buffers.Levels[0].C;
+    const float * opE = newton ? m_HessianE : m_Buffers.Levels[0].E;
+    const float * opN = newton ? m_HessianN : m_Buffers.Levels[0].N;
+    m_NegativeCurvature = false;
     const Level &         l = m_Buffers.Levels[0];
     const long            s = m_Stride;
     const long            width = m_Width;
@@ -1670,13 +1783,18 @@ public:
                     m_Direction + row,
                     m_Direction + row + s,
                     m_Direction + row - s,
-                    l.C + row,
-                    l.E + row,
-                    l.N + row,
-                    l.N + row - s,
+                    opC + row,
+                    opE + row,
+                    opN + row,
+                    opN + row - s,
                     width);
           return RowDot(m_Direction + row, m_Product + row, width);
         });
+      m_NegativeCurvature = newton && !(curvature > 0.0) && rz > 0.0;
+      if (m_NegativeCurvature)
+      {
+        return false;
+      }
       if (!(curvature > 0.0) || !(rz > 0.0))
       {
         break;
@@ -1716,16 +1834,119 @@ public:
                 }
               });
     }
+    m_LastCycles = m_Cycles - cyclesBefore;
+    return true;
+  }
+
+  /** The energy change, times 2a, when the depths move by \a step times the correction. */
+  double
+  EnergyChange(float step)
+  {
+    const float anisotropy = 0.5f * m_TwiceAnisotropy;
+    return SumRows(
+      [&](long y)
+      {
+        const long row = At(0, y);
+        const bool last = y + 1 == m_Height;
+        return EnergyChangeRow(m_Depth + row,
+                               last ? nullptr : m_Depth + row + m_Stride,
+                               m_Delta + row,
+                               m_Delta + row + m_Stride,
+                               step,
+                               anisotropy,
+                               m_Scale,
+                               m_Product + row,
+                               m_Width);
+      });
+  }
+
+  /** The step along the direction of negative curvature the conjugate gradients met (copied into the correction),
+   * in either sense, that lowers the energy most: first steps move a depth by at most J / 32, and each further one
+   * doubles it, up to 2 J. Returns the energy change, times 2a (0 with a step of 0 when no step lowers it). */
+  double
+  SearchNegativeCurvature(float & step)
+  {
+    std::vector<double> & maxima = m_Buffers.RowMaxima;
     ForRows(m_Height,
             true,
             [&](long y0, long y1)
             {
               for (long y = y0; y < y1; ++y)
               {
-                AddRow(m_Depth + At(0, y), m_Delta + At(0, y), m_Lowest, m_Highest, width);
+                const long row = At(0, y);
+                std::copy(m_Direction + row, m_Direction + row + m_Width, m_Delta + row);
+                maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Delta + row, m_Active + row, m_Width);
               }
             });
-    return m_Cycles - cyclesBefore;
+    step = 0.0f;
+    const double largest = *std::max_element(maxima.begin(), maxima.end());
+    if (!(largest > 0.0))
+    {
+      return 0.0;
+    }
+    const float  unit = static_cast<float>(1.0 / (32.0 * largest * std::sqrt(0.5 * m_TwiceAnisotropy)));
+    const double forward = EnergyChange(unit);
+    const double backward = EnergyChange(-unit);
+    double       change = std::min(forward, backward);
+    if (!(change < 0.0))
+    {
+      return 0.0;
+    }
+    step = forward <= backward ? unit : -unit;
+    while (std::abs(step) < 64.0f * unit)
+    {
+      const double further = EnergyChange(2.0f * step);
+      if (!(further < change))
+      {
+        break;
+      }
+      change = further;
+      step *= 2.0f;
+    }
+    return change;
+  }
+
+  /** The step along the lagged-weights correction, 1 or a power of two up to MaximumStep, that lowers the energy
+   * most (the step 1 lowers it: each lagged-weights problem majorises the energy). Returns the energy change, times
+   * 2a. */
+  double
+  SearchLaggedStep(float & step)
+  {
+    step = 1.0f;
+    double change = EnergyChange(step);
+    while (step < MaximumStep)
+    {
+      const double further = EnergyChange(2.0f * step);
+      if (!(further < change))
+      {
+        break;
+      }
+      change = further;
+      step *= 2.0f;
+    }
+    return change;
+  }
+
+  /** to = from on every row. */
+  void
+  CopyRows(const float * from, float * to)
+  {
+    ForRows(m_Height, true, [&](long y0, long y1) { std::copy(from + At(0, y0), from + At(0, y1), to + At(0, y0)); });
+  }
+
+  /** depth += step times the correction. */
+  void
+  ApplyCorrection(float step)
+  {
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                AddRow(m_Depth + At(0, y), m_Delta + At(0, y), step, m_Lowest, m_Highest, m_Width);
+              }
+            });
   }
 
   BilateralDepthRelaxSteadySolver::Report
@@ -1742,6 +1963,8 @@ public:
     bool   rebuild = true;
     double first = 0.0;
     double done = 0.0;
+    double previous = std::numeric_limits<double>::infinity();
+    bool   newton = false;
     for (unsigned int outer = 0;; ++outer)
     {
       if (outer > 0)
@@ -1789,8 +2012,43 @@ public:
         ++report.HierarchyBuilds;
         rebuild = false;
       }
-      const unsigned int cycles = SolveCorrection(std::max(InnerReduction * residual, 0.5 * tolerance));
-      rebuild = cycles > RebuildAfterCycles;
+      const double target = std::max(InnerReduction * residual, 0.5 * tolerance);
+      // Newton steps once lagged weights have slowed down, for as long as they are taken.
+      newton = !m_Isotropic && (newton || residual > NewtonAfterReduction * previous);
+      previous = residual;
+      if (!newton)
+      {
+        SolveCorrection(target, false);
+        ApplyCorrection(1.0f);
+      }
+      else if (SolveCorrection(target, true) && EnergyChange(1.0f) <= 0.0)
+      {
+        ApplyCorrection(1.0f);
+      }
+      else
+      {
+        newton = false;
+        float        curvatureStep = 0.0f;
+        const double curvatureChange = m_NegativeCurvature ? SearchNegativeCurvature(curvatureStep) : 0.0;
+        if (curvatureStep != 0.0f)
+        {
+          CopyRows(m_Delta, m_Saved);
+        }
+        Assemble();
+        SolveCorrection(target, false);
+        float        laggedStep = 1.0f;
+        const double laggedChange = SearchLaggedStep(laggedStep);
+        if (curvatureStep != 0.0f && curvatureChange < laggedChange)
+        {
+          CopyRows(m_Saved, m_Delta);
+          ApplyCorrection(curvatureStep);
+        }
+        else
+        {
+          ApplyCorrection(laggedStep);
+        }
+      }
+      rebuild = m_LastCycles > RebuildAfterCycles;
     }
     report.Cycles = m_Cycles;
     return report;
@@ -1804,8 +2062,11 @@ private:
   long               m_Stride;
   float              m_Scale;
   bool               m_Isotropic;
+  float              m_TwiceAnisotropy;
   std::size_t        m_LevelCount{ 1 };
   unsigned int       m_Cycles{ 0 };
+  unsigned int       m_LastCycles{ 0 };
+  bool               m_NegativeCurvature{ false };
 
   double * m_Depth;
   float *  m_WeightRight;
@@ -1819,6 +2080,10 @@ private:
   float *  m_Delta;
   float *  m_Direction;
   float *  m_Product;
+  float *  m_HessianC;
+  float *  m_HessianE;
+  float *  m_HessianN;
+  float *  m_Saved;
 };
 } // namespace
 

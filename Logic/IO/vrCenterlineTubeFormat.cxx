@@ -111,6 +111,12 @@ CheckTubeFile(const std::string & path)
     {
       fail("line \"" + Trim(line).substr(0, 40) + "\" is not \"Field = value\"; not a MetaIO .tre file");
     }
+    // MetaIO reads the line after an ObjectType into 500 characters and takes what follows "= ": a line ending at its
+    // "=", or longer than that buffer, makes it throw (fuzzing), leaking what it had read.
+    if (equals + 1 >= line.size() || line.size() > 400)
+    {
+      fail("line \"" + Trim(line).substr(0, 40) + "\" has no value after its \"=\" or is over 400 characters");
+    }
     const std::string key = Trim(line.substr(0, equals));
     const std::string value = line.substr(equals + 1);
     if (key == "ObjectType")

@@ -1450,6 +1450,12 @@ TEST_F(BadInputTest, TubeFileDeclaringTwoBillionPoints)
                                  "ObjectType = Scene\nNDims = 3\nNObjects = 1\nObjectType = Tube\nNDims = 200\nID = 1\n"
                                  "ParentID = -1\nPointDim = 4 x y z r\nNPoints = 1\nPoints = \n0 0 0 1\n");
   ExpectRejected({ Volume(), dims }, { "dims.tre", "NDims" });
+  // A field with nothing after its "=": MetaIO's scene reader throws a standard exception on it and leaks what it had
+  // read (a fuzzer's find).
+  const std::string bare = Write("bare.tre",
+                                 "ObjectType = Scene\nNDims = 3\nNObjects = 1\nObjectType = Tube\nNDims =\nID = 1\n"
+                                 "ParentID = -1\nPointDim = 4 x y z r\nNPoints = 1\nPoints = \n0 0 0 1\n");
+  ExpectRejected({ Volume(), bare }, { "bare.tre", "no value" });
 }
 
 TEST_F(BadInputTest, MarkupsNestedAHundredThousandDeep)
