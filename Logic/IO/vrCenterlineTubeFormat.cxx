@@ -117,6 +117,15 @@ CheckTubeFile(const std::string & path)
     {
       fail("line \"" + Trim(line).substr(0, 40) + "\" has no value after its \"=\" or is over 400 characters");
     }
+    // MetaIO copies string values into fixed 255-character fields without always ending them (fuzzing: a PointDim
+    // of 300 bytes made MetaTube read past its field); header lines of a valid file are short printable ASCII.
+    if (line.size() - equals - 1 > 200 ||
+        std::any_of(line.begin(), line.end(), [](char c) { return (c < 0x20 && c != '\t' && c != '\r') || c > 0x7E; }))
+    {
+      fail("line \"" + Trim(line).substr(0, 20) +
+           "...\" has a value over 200 characters or a character that is "
+           "not printable ASCII");
+    }
     const std::string key = Trim(line.substr(0, equals));
     const std::string value = line.substr(equals + 1);
     if (key == "ObjectType")

@@ -1456,6 +1456,12 @@ TEST_F(BadInputTest, TubeFileDeclaringTwoBillionPoints)
                                  "ObjectType = Scene\nNDims = 3\nNObjects = 1\nObjectType = Tube\nNDims =\nID = 1\n"
                                  "ParentID = -1\nPointDim = 4 x y z r\nNPoints = 1\nPoints = \n0 0 0 1\n");
   ExpectRejected({ Volume(), bare }, { "bare.tre", "no value" });
+  // A PointDim longer than MetaIO's fixed field, which it then reads past (a fuzzer's find).
+  const std::string wide = Write("wide.tre",
+                                 "ObjectType = Scene\nNDims = 3\nNObjects = 1\nObjectType = Tube\nNDims = 3\nID = 1\n"
+                                 "ParentID = -1\nPointDim = x y z r" +
+                                   std::string(300, 'q') + "\nNPoints = 1\nPoints = \n0 0 0 1\n");
+  ExpectRejected({ Volume(), wide }, { "wide.tre", "200 characters" });
 }
 
 TEST_F(BadInputTest, MarkupsNestedAHundredThousandDeep)
