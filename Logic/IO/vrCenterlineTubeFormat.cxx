@@ -73,6 +73,7 @@ CheckTubeFile(const std::string & path)
   const std::string text((std::istreambuf_iterator<char>(input)), std::istreambuf_iterator<char>());
   std::size_t       at = 0;
   long long         objects = 0;
+  long long         declaredObjects = -1; // the scene's NObjects
   std::string       type;
   long long         dimensions = 0;
   long long         points = -1;
@@ -142,6 +143,11 @@ CheckTubeFile(const std::string & path)
         fail("ObjectType " + type.substr(0, 20) +
              " is not one of a centerline file's (Scene, Group, Tube, VesselTube)");
       }
+      // MetaIO's scene reader fails on a second scene and leaks what it had read (fuzzing).
+      if (type == "Scene" && objects != 1)
+      {
+        fail("a Scene may only be the file's first object");
+      }
       dimensions = 0;
       points = -1;
       fields = 0;
@@ -164,7 +170,11 @@ CheckTubeFile(const std::string & path)
     }
     else if (key == "NObjects")
     {
-      wholeNumber(key, value, 0, MaximumTubeObjects);
+      const long long count = wholeNumber(key, value, 0, MaximumTubeObjects);
+      if (type == "Scene")
+      {
+        declaredObjects = count;
+      }
     }
     else if (key == "ID" || key == "ParentID")
     {
@@ -283,6 +293,13 @@ CheckTubeFile(const std::string & path)
   if (objects == 0)
   {
     fail("no ObjectType; not a MetaIO .tre file");
+  }
+  // A scene holding other than the objects it declares makes MetaIO's reader fail part-way, leaking what it read.
+  if (declaredObjects >= 0 && objects - 1 != declaredObjects)
+  {
+    where.clear();
+    fail("the scene declares NObjects = " + std::to_string(declaredObjects) + " but holds " +
+         std::to_string(objects - 1));
   }
 }
 } // namespace
