@@ -1465,7 +1465,7 @@ TEST_F(BadInputTest, TubeFileDeclaringTwoBillionPoints)
   // A scene declaring more objects than it holds: MetaIO's scene reader fails part-way and leaks (a fuzzer's find).
   const std::string short_ = Write("short.tre",
                                    "ObjectType = Scene\nNDims = 3\nNObjects = 4\nObjectType = Tube\nNDims = 3\nID = 1\n"
-                                   "ParentID = -1\nPointDim = 4 x y z r\nNPoints = 1\nPoints = \n0.5 0.5 0.5 1.5\n");
+                                   "ParentID = -1\nPointDim = x y z r\nNPoints = 1\nPoints = \n0.5 0.5 0.5 1.5\n");
   ExpectRejected({ Volume(), short_ }, { "short.tre", "NObjects = 4" });
 }
 
