@@ -261,7 +261,8 @@ RunDemo(int argc, char * argv[])
               << (thorax ? " (the paper's thoracic figure)" : " (the paper's Fig. 2)") << std::right << std::endl
               << "  depth.nrrd, depth-relaxed.nrrd, cpr.nrrd, cpr-unfiltered.nrrd  the images, view in their metadata"
               << std::endl
-              << "  cut-surface.vtp                          the relaxed cut surface in 3D (RAS), coloured by HU"
+              << "  cut-surface.vtp                          the relaxed cut surface in 3D (LPS, SPACE recorded, as 3D "
+                 "Slicer stores models), coloured by HU"
               << std::endl;
     return EXIT_SUCCESS;
   }
