@@ -31,6 +31,7 @@
 namespace
 {
 namespace fs = std::filesystem;
+using vr::test::Contains;
 using vr::test::LabelMap;
 using vr::test::ModuleRun;
 using vr::test::P;
@@ -39,22 +40,10 @@ const std::string Executable = VR_EXTRACT_EXE;
 const std::string Library = VR_EXTRACT_LIB;
 const fs::path    DataFolder = fs::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
 
-bool
-Contains(const std::string & text, const std::string & part)
-{
-  return text.find(part) != std::string::npos;
-}
-
-/** A fresh folder for one test, under the build tree. */
 fs::path
 TestFolder()
 {
-  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path folder =
-    fs::path(VR_TEST_OUTPUT_DIR) / (std::string("ExtractCenterlines.") + info->test_suite_name() + "." + info->name());
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
+  return vr::test::FreshFolderForThisTest(VR_TEST_OUTPUT_DIR, "ExtractCenterlines.");
 }
 
 ModuleRun

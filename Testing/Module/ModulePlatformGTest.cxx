@@ -46,6 +46,7 @@
 
 namespace
 {
+using vr::test::Contains;
 namespace fs = std::filesystem;
 using vr::test::ModuleRun;
 
@@ -78,12 +79,6 @@ std::string
 Library(const std::string & module)
 {
   return (ModuleFolder / ("lib" + module + "Lib.so")).string();
-}
-
-bool
-Contains(const std::string & text, const std::string & part)
-{
-  return text.find(part) != std::string::npos;
 }
 
 bool

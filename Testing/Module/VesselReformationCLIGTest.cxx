@@ -9,6 +9,7 @@
 #include "vrModuleDescription.h"
 #include "vrReformationParameters.h"
 #include "vrModuleRuns.h"
+#include "vrTestFiles.h"
 #include "vrVolumeIO.h"
 
 #include "itkImageFileWriter.h"
@@ -50,6 +51,7 @@ extern char ** environ;
 
 namespace
 {
+using vr::test::Contains;
 namespace fs = std::filesystem;
 
 const std::string ReformationExecutable = VR_REFORMATION_EXE;
@@ -174,12 +176,6 @@ RunInProcess(const std::string & library, const std::vector<std::string> & argum
   result.Out = ReadText(out);
   result.Err = ReadText(err);
   return result;
-}
-
-bool
-Contains(const std::string & text, const std::string & part)
-{
-  return text.find(part) != std::string::npos;
 }
 
 /** The files of a folder, by name. */

@@ -20,26 +20,16 @@
 namespace
 {
 namespace fs = std::filesystem;
+using vr::test::Contains;
 using vr::test::ModuleRun;
 
 const std::string Executable = VR_REFORMATION_EXE;
 const fs::path    DataFolder = fs::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
 
-bool
-Contains(const std::string & text, const std::string & part)
-{
-  return text.find(part) != std::string::npos;
-}
-
 fs::path
 TestFolder()
 {
-  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path folder = fs::path(VR_TEST_OUTPUT_DIR) / (std::string("VesselReformationSegmentation.") +
-                                                          info->test_suite_name() + "." + info->name());
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
+  return vr::test::FreshFolderForThisTest(VR_TEST_OUTPUT_DIR, "VesselReformationSegmentation.");
 }
 
 ModuleRun

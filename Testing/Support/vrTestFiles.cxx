@@ -70,6 +70,22 @@ FolderEntries(const std::filesystem::path & folder)
   return names;
 }
 
+bool
+Contains(const std::string & text, const std::string & part)
+{
+  return text.find(part) != std::string::npos;
+}
+
+std::filesystem::path
+FreshFolderForThisTest(const std::filesystem::path & root, const std::string & prefix)
+{
+  const auto * info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto   folder = root / (prefix + info->test_suite_name() + "." + info->name());
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  return folder;
+}
+
 std::string
 ReadTextFile(const std::string & path)
 {

@@ -50,6 +50,14 @@ FolderEntries(const std::filesystem::path & folder);
 std::string
 InputErrorOf(const std::function<void()> & action);
 
+/** Whether \a text contains \a part. */
+bool
+Contains(const std::string & text, const std::string & part);
+
+/** An empty folder for the running GoogleTest test: <root>/<prefix><suite>.<test>, emptied first. */
+std::filesystem::path
+FreshFolderForThisTest(const std::filesystem::path & root, const std::string & prefix);
+
 /** The shared real-data folder (VR_SHARED_DATA_DIR/vmtk-aorta-mra), or "" when this checkout lacks it. */
 std::string
 AortaDataFolder();
