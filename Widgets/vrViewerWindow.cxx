@@ -25,6 +25,7 @@
 #include <QSlider>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTimer>
 
 #include <vtkImageData.h>
 #include <vtkPointData.h>
@@ -78,6 +79,11 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   m_Progress->setMaximumWidth(160);
   m_Progress->setTextVisible(false);
   m_Progress->setVisible(false);
+  m_ProgressDelay = new QTimer(this);
+  m_ProgressDelay->setSingleShot(true);
+  m_ProgressDelay->setTimerType(Qt::PreciseTimer);
+  m_ProgressDelay->setInterval(ProgressDelayMilliseconds);
+  connect(m_ProgressDelay, &QTimer::timeout, m_Progress, [this] { m_Progress->setVisible(true); });
   statusBar()->addWidget(m_Readout, 1);
   statusBar()->addPermanentWidget(m_Times);
   statusBar()->addPermanentWidget(m_Progress);
@@ -89,6 +95,12 @@ ViewerWindow::ViewerWindow(QWidget * parent)
 }
 
 ViewerWindow::~ViewerWindow() = default;
+
+bool
+ViewerWindow::IsProgressShown() const
+{
+  return m_Progress->isVisible();
+}
 
 void
 ViewerWindow::BuildMenus()
@@ -282,10 +294,16 @@ ViewerWindow::ConnectParts()
           this,
           [this](bool busy)
           {
-            m_Progress->setVisible(busy);
+            // Work that ends within the delay never shows the bar (and never repaints the window for it).
             if (busy)
             {
               m_Progress->setValue(0);
+              m_ProgressDelay->start();
+            }
+            else
+            {
+              m_ProgressDelay->stop();
+              m_Progress->setVisible(false);
             }
           });
 }

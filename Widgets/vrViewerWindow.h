@@ -17,6 +17,7 @@
 
 class QLabel;
 class QProgressBar;
+class QTimer;
 
 namespace vr
 {
@@ -112,6 +113,14 @@ public:
   {
     return m_Controller;
   }
+  /** \return whether the status bar shows the progress bar now. */
+  bool
+  IsProgressShown() const;
+
+  /** How long an update runs before the status bar shows its progress, in seconds. Showing the bar repaints the
+   * window, which Qt composes again with its two OpenGL views: for the angle changes of a drag, which take about a
+   * tenth of a second, those repaints took a third of the processor the logic ran on. */
+  static constexpr int ProgressDelayMilliseconds = 400;
 
 signals:
   /** An error was shown (dialog or handler). */
@@ -160,6 +169,7 @@ private:
   QLabel *                m_Readout{ nullptr };
   QLabel *                m_Times{ nullptr };
   QProgressBar *          m_Progress{ nullptr };
+  QTimer *                m_ProgressDelay{ nullptr };
   ErrorHandler            m_ErrorHandler;
   QString                 m_LastError;
   double                  m_DragStartAngle{ 0.0 };

@@ -34,8 +34,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <set>
 
 namespace
@@ -387,6 +389,82 @@ TEST_F(WidgetsTest, ARequestArrivingDuringARelaxationAbortsItThroughTheLogic)
   EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetResult()->Outputs.View.GetAngleInDegrees(), -80.0);
   EXPECT_EQ(Window().GetCPRView()->GetResult()->Parameters.Iterations, 200);
   ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(-80.0)).CPR);
+}
+
+/** While the controller is busy: when the progress bar first showed, in seconds after the busy period began (negative
+ * when it never did), and how long the busy period lasted. */
+struct ProgressSighting
+{
+  double FirstShown{ -1.0 };
+  double Busy{ 0.0 };
+};
+
+ProgressSighting
+WatchProgressDuring(ViewerWindow & window, const std::function<void()> & request)
+{
+  using Clock = std::chrono::steady_clock;
+  ProgressSighting  sighting;
+  Clock::time_point busySince;
+  bool              busy = false;
+  bool              ended = false;
+  auto              connection = QObject::connect(window.GetController(),
+                                     &ReformationController::busyChanged,
+                                     window.GetController(),
+                                     [&](bool now)
+                                     {
+                                       if (now && !busy)
+                                       {
+                                         busySince = Clock::now();
+                                       }
+                                       if (!now && busy)
+                                       {
+                                         sighting.Busy = std::chrono::duration<double>(Clock::now() - busySince).count();
+                                         ended = true;
+                                       }
+                                       busy = now;
+                                     });
+  request();
+  WaitUntil(
+    [&]
+    {
+      if (busy && sighting.FirstShown < 0.0 && window.IsProgressShown())
+      {
+        sighting.FirstShown = std::chrono::duration<double>(Clock::now() - busySince).count();
+      }
+      return ended;
+    },
+    120.0);
+  QObject::disconnect(connection);
+  EXPECT_TRUE(ended) << "the update did not end";
+  EXPECT_FALSE(window.IsProgressShown()) << "the progress bar stays after the update";
+  return sighting;
+}
+
+TEST_F(WidgetsTest, TheProgressBarShowsOnlyOnceAnUpdateHasRunForItsDelay)
+{
+  const double delay = ViewerWindow::ProgressDelayMilliseconds / 1000.0;
+  // A quick update (the small phantom, 200 iterations): no bar unless it ran past the delay.
+  const ProgressSighting quick =
+    WatchProgressDuring(Window(), [this] { Window().GetPanel()->SetAngle(StartAngle + 5.0, RequestKind::Final); });
+  if (quick.FirstShown >= 0.0)
+  {
+    EXPECT_GE(quick.FirstShown, delay - 0.002) << "shown before its delay";
+  }
+  else
+  {
+    EXPECT_GT(quick.Busy, 0.0);
+  }
+  // A long relaxation shows the bar, after the delay, and hides it when done.
+  ReformationParameters slow = TestParameters(StartAngle);
+  slow.Iterations = 100000;
+  Window().GetPanel()->SetParameters(slow);
+  const ProgressSighting lasting =
+    WatchProgressDuring(Window(), [this] { Window().GetPanel()->SetAngle(StartAngle + 10.0, RequestKind::Final); });
+  ASSERT_GT(lasting.Busy, delay) << "the long relaxation was not long";
+  EXPECT_GE(lasting.FirstShown, delay - 0.002);
+  EXPECT_LT(lasting.FirstShown, lasting.Busy);
+  Window().GetPanel()->SetParameters(TestParameters(StartAngle));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
 }
 
 /** The error dialog the window opened, or null. */
