@@ -13,7 +13,6 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
-#include <vtkCornerAnnotation.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
 #include <vtkImageData.h>
@@ -193,13 +192,24 @@ CPRView::CPRView(QWidget * parent)
   m_SplitLine->GetProperty()->SetLineWidth(1.0);
   m_Renderer->AddViewProp(m_SplitLine);
 
-  m_Annotation = vtkSmartPointer<vtkCornerAnnotation>::New();
-  m_Annotation->SetMaximumFontSize(15);
-  m_Annotation->SetMinimumFontSize(12);
-  m_Annotation->GetTextProperty()->SetColor(0.95, 0.95, 0.95);
-  m_Annotation->GetTextProperty()->ShadowOn();
-  m_Annotation->SetText(vtkCornerAnnotation::UpperLeft, "No reformation yet");
-  m_Renderer->AddViewProp(m_Annotation);
+  // Two text actors of one font size in the upper corners. (vtkCornerAnnotation fits its font size to the view
+  // by rendering the text at several sizes whenever it changes: at every angle that took half the CPR view's frame.)
+  for (auto * corner : { &m_UpperLeftText, &m_UpperRightText })
+  {
+    *corner = vtkSmartPointer<vtkTextActor>::New();
+    vtkTextProperty * text = (*corner)->GetTextProperty();
+    text->SetFontSize(14);
+    text->SetColor(0.95, 0.95, 0.95);
+    text->ShadowOn();
+    text->SetVerticalJustificationToTop();
+    (*corner)->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    m_Renderer->AddViewProp(*corner);
+  }
+  m_UpperLeftText->GetTextProperty()->SetJustificationToLeft();
+  m_UpperLeftText->GetPositionCoordinate()->SetValue(0.01, 0.99);
+  m_UpperRightText->GetTextProperty()->SetJustificationToRight();
+  m_UpperRightText->GetPositionCoordinate()->SetValue(0.99, 0.99);
+  m_UpperLeftText->SetInput("No reformation yet");
 
   m_Widget->setMouseTracking(true);
   m_Widget->installEventFilter(this);
@@ -489,11 +499,11 @@ CPRView::UpdateAnnotation()
   upper << "angle " << Format(view.GetAngleInDegrees(), 1) << " deg about up (LPS " << Format(up[0], 2) << ", "
         << Format(up[1], 2) << ", " << Format(up[2], 2) << ")\n"
         << "W " << Format(m_Window, 0) << "  L " << Format(m_Level, 0);
-  m_Annotation->SetText(vtkCornerAnnotation::UpperLeft, upper.str().c_str());
+  m_UpperLeftText->SetInput(upper.str().c_str());
   std::ostringstream right;
   right << view.GetSize()[0] << " x " << view.GetSize()[1] << " px\n"
         << Format(view.GetSpacing()[0], 2) << " x " << Format(view.GetSpacing()[1], 2) << " mm";
-  m_Annotation->SetText(vtkCornerAnnotation::UpperRight, right.str().c_str());
+  m_UpperRightText->SetInput(right.str().c_str());
 }
 
 void

@@ -16,7 +16,6 @@
 
 class QVTKOpenGLNativeWidget;
 class vtkActor;
-class vtkCornerAnnotation;
 class vtkGenericOpenGLRenderWindow;
 class vtkImageActor;
 class vtkImageData;
@@ -224,7 +223,8 @@ private:
   vtkSmartPointer<vtkRenderer>                  m_Renderer;
   std::unique_ptr<Pane>                         m_Filtered;
   std::unique_ptr<Pane>                         m_Unfiltered;
-  vtkSmartPointer<vtkCornerAnnotation>          m_Annotation;
+  vtkSmartPointer<vtkTextActor>                 m_UpperLeftText;
+  vtkSmartPointer<vtkTextActor>                 m_UpperRightText;
   vtkSmartPointer<vtkActor>                     m_SplitLine;
   vtkSmartPointer<vtkPolyData>                  m_CenterlinePolyData;
 
