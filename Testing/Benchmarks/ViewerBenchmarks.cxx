@@ -160,6 +160,9 @@ public:
 private:
   Viewer()
   {
+    // The window must go before the QApplication it lives in: Qt calls its post routines first when it shuts down
+    // (a static's destructor would run after main() has destroyed the application).
+    qAddPostRoutine([] { Instance().m_Window.reset(); });
     m_Window = std::make_unique<vr::ViewerWindow>();
     m_Window->resize(1600, 1000);
     m_Window->GetPanel()->SetParameters(BenchmarkParameters(DesignAngle));
