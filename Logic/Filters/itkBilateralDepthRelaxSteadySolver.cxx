@@ -779,8 +779,10 @@ WeightRow(float * __restrict right,
   return signature;
 }
 
-/** One row of the finest level's operator and residual (see SteadySolve::Assemble). A weight sum below FLT_MIN
- * (every weight all but underflowing) is inverted as FLT_MIN, so that no inverse overflows. */
+/** One row of the finest level's operator and residual (see SteadySolve::Assemble), and with \a Hessian the energy's
+ * Hessian too. A weight sum below FLT_MIN (every weight all but underflowing) is inverted as FLT_MIN, so that no
+ * inverse overflows. */
+template<bool Hessian>
 void
 AssembleRow(float * __restrict c,
             float * __restrict inverse,
@@ -816,14 +818,17 @@ AssembleRow(float * __restrict c,
     e[x] = right[x] * active[x] * active[x + 1];
     n[x] = down[x] * active[x] * activeAbove[x];
     residual[x] = flux * live;
-    // The energy's curvature along each edge: d^2/dx^2 (1 - R(x)) / (2a) = R(x) (1 - 2 a x^2).
-    const float curvatureRight = right[x] * (1.0f - twiceAnisotropy * toRight * toRight);
-    const float curvatureLeft = right[x - 1] * (1.0f - twiceAnisotropy * toLeft * toLeft);
-    const float curvatureAbove = down[x] * (1.0f - twiceAnisotropy * toAbove * toAbove);
-    const float curvatureBelow = up[x] * (1.0f - twiceAnisotropy * toBelow * toBelow);
-    hc[x] = ((curvatureRight + curvatureLeft) + (curvatureAbove + curvatureBelow)) * active[x];
-    he[x] = curvatureRight * active[x] * active[x + 1];
-    hn[x] = curvatureAbove * active[x] * activeAbove[x];
+    if constexpr (Hessian)
+    {
+      // The energy's curvature along each edge: d^2/dx^2 (1 - R(x)) / (2a) = R(x) (1 - 2 a x^2).
+      const float curvatureRight = right[x] * (1.0f - twiceAnisotropy * toRight * toRight);
+      const float curvatureLeft = right[x - 1] * (1.0f - twiceAnisotropy * toLeft * toLeft);
+      const float curvatureAbove = down[x] * (1.0f - twiceAnisotropy * toAbove * toAbove);
+      const float curvatureBelow = up[x] * (1.0f - twiceAnisotropy * toBelow * toBelow);
+      hc[x] = ((curvatureRight + curvatureLeft) + (curvatureAbove + curvatureBelow)) * active[x];
+      he[x] = curvatureRight * active[x] * active[x + 1];
+      hn[x] = curvatureAbove * active[x] * activeAbove[x];
+    }
   }
 }
 
@@ -1336,10 +1341,11 @@ public:
   }
 
   /** The finest level's operator from the weights (C = the pixel's weight sum, couplings between active pixels)
-   * and the residual sum R (D_q - D_p) as the conjugate gradients' right-hand side. Returns max |residual| / C over
-   * active pixels: the fixed-point residual |D_p - sum R D_q / sum R| in mm. */
+   * and the residual sum R (D_q - D_p) as the conjugate gradients' right-hand side, and with \a hessian the energy's
+   * Hessian for Newton steps (a third of the work, left out while lagged weights suffice). Returns max |residual| / C
+   * over active pixels: the fixed-point residual |D_p - sum R D_q / sum R| in mm. */
   double
-  Assemble()
+  Assemble(bool hessian)
   {
     Level &               l = m_Buffers.Levels[0];
     std::vector<double> & maxima = m_Buffers.RowMaxima;
@@ -1351,7 +1357,7 @@ public:
               for (long y = y0; y < y1; ++y)
               {
                 const long row = At(0, y);
-                AssembleRow(l.C + row,
+                (hessian ? AssembleRow<true> : AssembleRow<false>)(l.C + row,
                             l.Inverse + row,
                             l.E + row,
                             l.N + row,
@@ -1982,7 +1988,8 @@ public:
           }
         }
       }
-      const double residual = Assemble();
+      // The Hessian while Newton steps go on; an outer iteration that turns to them below assembles it then.
+      const double residual = Assemble(newton);
       report.Residual = residual;
       report.OuterIterations = outer;
       if (outer == 0)
@@ -2014,8 +2021,13 @@ public:
       }
       const double target = std::max(InnerReduction * residual, 0.5 * tolerance);
       // Newton steps once lagged weights have slowed down, for as long as they are taken.
+      const bool hessianAssembled = newton;
       newton = !m_Isotropic && (newton || residual > NewtonAfterReduction * previous);
       previous = residual;
+      if (newton && !hessianAssembled)
+      {
+        Assemble(true);
+      }
       if (!newton)
       {
         SolveCorrection(target, false);
@@ -2034,7 +2046,7 @@ public:
         {
           CopyRows(m_Delta, m_Saved);
         }
-        Assemble();
+        Assemble(false);
         SolveCorrection(target, false);
         float        laggedStep = 1.0f;
         const double laggedChange = SearchLaggedStep(laggedStep);
