@@ -2,6 +2,7 @@
 #include "vrBenchmarkScene.h"
 
 #include "itkCPRDepthImageFilter.h"
+#include "itkCTAPhantom.h"
 #include "itkRunoffPhantomImageSource.h"
 
 namespace vr::benchmarks
@@ -41,20 +42,42 @@ PhantomScene::GetVolume()
   return m_Volume;
 }
 
+namespace
+{
+DepthMap
+ScanlineDepthMap(const itk::CenterlineTree & tree, const itk::CPRViewSpecification & view)
+{
+  auto filter = itk::CPRDepthImageFilter<DepthImage>::New();
+  filter->SetCenterlineTree(tree);
+  filter->SetViewSpecification(view);
+  filter->Update();
+  DepthMap map{ filter->GetDepthOutput(), filter->GetFixedMaskOutput() };
+  map.Depth->DisconnectPipeline();
+  map.Fixed->DisconnectPipeline();
+  return map;
+}
+} // namespace
+
+const DepthMap &
+ThoraxDepthMap(unsigned int width, unsigned int height)
+{
+  static std::map<std::pair<unsigned int, unsigned int>, DepthMap> maps;
+  auto &                                                           map = maps[{ width, height }];
+  if (!map.Depth)
+  {
+    const auto phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax);
+    map = ScanlineDepthMap(phantom.Tree, PaperView(width, height, phantom.DesignAngleInDegrees));
+  }
+  return map;
+}
+
 const DepthMap &
 PhantomScene::GetDepthMap(unsigned int width, unsigned int height)
 {
   auto & map = m_DepthMaps[{ width, height }];
   if (!map.Depth)
   {
-    auto filter = itk::CPRDepthImageFilter<DepthImage>::New();
-    filter->SetCenterlineTree(m_Tree);
-    filter->SetViewSpecification(PaperView(width, height));
-    filter->Update();
-    map.Depth = filter->GetDepthOutput();
-    map.Fixed = filter->GetFixedMaskOutput();
-    map.Depth->DisconnectPipeline();
-    map.Fixed->DisconnectPipeline();
+    map = ScanlineDepthMap(m_Tree, PaperView(width, height));
   }
   return map;
 }

@@ -31,6 +31,11 @@ struct DepthMap
   MaskImage::Pointer  Fixed;
 };
 
+/** The thoracic phantom's scanline depth map at its design angle and W x H pixels (the fit spacing), with its fixed
+ * mask: seams of 2-10 mm at the aortic arch, built once per size on first use. */
+const DepthMap &
+ThoraxDepthMap(unsigned int width, unsigned int height);
+
 /** The run-off phantom (RunoffPhantomImageSource at its defaults: 1.5 mm voxels, 254 x 160 x 680) and its
  * exact centerline tree, built once per process on first use, outside any timing. */
 class PhantomScene
