@@ -470,6 +470,14 @@ ModulePanel::ShowPhantom(const QString & name)
 }
 
 void
+ModulePanel::SetIntensityUnit(const QString & unit)
+{
+  const QString suffix = unit.isEmpty() ? QString() : QLatin1Char(' ') + unit;
+  m_Ui->windowSpin->setSuffix(suffix);
+  m_Ui->levelSpin->setSuffix(suffix);
+}
+
+void
 ModulePanel::SetInputDescription(const QString & volume, const QString & centerlines, const QString & segmentation)
 {
   // A file by its name (the whole path in the status tip), a phantom by its description; the label shows what fits and

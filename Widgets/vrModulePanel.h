@@ -104,6 +104,9 @@ public:
   /** Chooses \a name in the phantom list (the phantom on screen), emitting nothing. */
   void
   ShowPhantom(const QString & name);
+  /** Labels the window and level in \a unit ("HU"; empty for intensities without a unit). */
+  void
+  SetIntensityUnit(const QString & unit);
   /** Shows where the inputs came from: the volume, the centerlines, and the segmentation they were extracted from
    * (empty when they came from a file or a phantom). */
   void

@@ -23,13 +23,16 @@ PixelReadout::ToText() const
   {
     return QString();
   }
-  QString text = QStringLiteral("(%1, %2)  RAS (%3, %4, %5) mm  %6 HU  depth %7 mm")
+  const QString intensity = IntensityUnit.empty()
+                              ? QStringLiteral("value %1").arg(Intensity, 0, 'f', 0)
+                              : QStringLiteral("%1 %2").arg(Intensity, 0, 'f', 0).arg(QString::fromStdString(IntensityUnit));
+  QString text = QStringLiteral("(%1, %2)  RAS (%3, %4, %5) mm  %6  depth %7 mm")
                    .arg(Column)
                    .arg(Row)
                    .arg(RAS[0], 0, 'f', 1)
                    .arg(RAS[1], 0, 'f', 1)
                    .arg(RAS[2], 0, 'f', 1)
-                   .arg(Intensity, 0, 'f', 0)
+                   .arg(intensity)
                    .arg(Depth, 0, 'f', 1);
   text += Branch > 0 ? QStringLiteral("  %1").arg(QString::fromStdString(BranchName)) : QStringLiteral("  no branch");
   if (Unfiltered)
@@ -66,6 +69,10 @@ ReadPixel(const ReformationResult & result, bool unfiltered, int column, int row
   if (readout.Branch > 0 && result.Inputs)
   {
     readout.BranchName = result.Inputs->BranchName(readout.Branch);
+  }
+  if (result.Inputs)
+  {
+    readout.IntensityUnit = result.Inputs->IntensityUnit;
   }
   const double ijk[4] = { static_cast<double>(column), static_cast<double>(row), readout.Depth, 1.0 };
   double       ras[4];

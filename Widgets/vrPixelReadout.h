@@ -25,15 +25,17 @@ struct PixelReadout
   /** The sampled point X = B(i, j) + d v in RAS mm: the output node's IJK->RAS matrix at (i, j, d), its third axis
    * being 1 mm along v. */
   std::array<double, 3> RAS{ { 0.0, 0.0, 0.0 } };
-  /** The CPR intensity there (HU for CT). */
-  double Intensity{ 0.0 };
+  /** The CPR intensity there, and its unit ("HU" for CT, empty for data without one; ReformationInputs). */
+  double      Intensity{ 0.0 };
+  std::string IntensityUnit;
   /** The depth d along the view direction, mm (relaxed for the filtered image, unfiltered otherwise). */
   double Depth{ 0.0 };
   /** The owner label (branch id, 0 = none) and its name. */
   int         Branch{ 0 };
   std::string BranchName;
 
-  /** \return one line for the status bar: "(i, j)  RAS (x, y, z) mm  v HU  depth d mm  branch". */
+  /** \return one line for the status bar: "(i, j)  RAS (x, y, z) mm  v HU  depth d mm  branch" ("value v" for
+   * intensities without a unit). */
   QString
   ToText() const;
 };

@@ -8,6 +8,9 @@
 #include "vrNodeConversion.h"
 #include "vrVolumeIO.h"
 
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -19,6 +22,21 @@ ReformationInputs::BranchName(int id) const
 {
   const auto found = BranchNames.find(id);
   return found != BranchNames.end() ? found->second : "branch " + std::to_string(id);
+}
+
+std::string
+IntensityUnitOf(VolumeNode * volume)
+{
+  // Air in CT is about -1000 HU; no other modality stores intensities this far below 0.
+  constexpr double AirBound = -500.0;
+  vtkImageData * image = volume != nullptr ? volume->GetImageData() : nullptr;
+  if (image == nullptr || image->GetPointData()->GetScalars() == nullptr)
+  {
+    return std::string();
+  }
+  double range[2];
+  image->GetScalarRange(range);
+  return range[0] <= AirBound ? "HU" : std::string();
 }
 
 std::vector<std::string>
@@ -72,6 +90,7 @@ MakePhantomInputs(const std::string & name, double spacing)
   inputs.CenterlineSource = phantom.Name + " phantom (exact centerlines)";
   inputs.IsPhantom = true;
   inputs.PhantomName = phantom.Name;
+  inputs.IntensityUnit = "HU";
   return inputs;
 }
 
@@ -107,6 +126,7 @@ MakeSegmentationInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<Volum
   inputs.Segmentation = std::move(segmentation);
   inputs.VolumeSource = inputs.Volume->GetName();
   inputs.CenterlineSource = "centerlines extracted from " + inputs.Segmentation->GetName();
+  inputs.IntensityUnit = IntensityUnitOf(inputs.Volume);
   return inputs;
 }
 
@@ -128,6 +148,7 @@ MakeInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<CenterlineNode> c
   inputs.Tree = ConvertCenterlineNodeToTree(inputs.Centerlines);
   inputs.VolumeSource = inputs.Volume->GetName();
   inputs.CenterlineSource = inputs.Centerlines->GetName();
+  inputs.IntensityUnit = IntensityUnitOf(inputs.Volume);
   return inputs;
 }
 } // namespace vr

@@ -47,11 +47,20 @@ struct ReformationInputs
   /** True for a built-in phantom (intensities in HU, so the CTA window suits it), and its name ("thorax"). */
   bool        IsPhantom{ false };
   std::string PhantomName;
+  /** The unit the views give the volume's intensities: "HU" for a CT (IntensityUnitOf), empty for other data (an MR
+   * angiography's intensities have no unit). */
+  std::string IntensityUnit;
 
   /** \return "name" of a branch id, or "branch <id>". */
   std::string
   BranchName(int id) const;
 };
+
+/** \return "HU" when \a volume holds a CT, else empty: a volume whose intensities reach -500 or below holds air
+ * in Hounsfield units (about -1000 HU); MR and the other modalities store no such values. Files rarely say their
+ * modality (NRRD, NIfTI and MetaImage do not), so the data decides. */
+std::string
+IntensityUnitOf(VolumeNode * volume);
 
 /** The names of the built-in phantoms the viewer offers (itk::GetCTAPhantomNames(): "runoff", "thorax"). */
 std::vector<std::string>

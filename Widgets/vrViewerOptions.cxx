@@ -114,8 +114,8 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
   app.add_option("--iterations", iterations, "filter iterations N (default 500)");
   app.add_option("--backend", backend, "relax backend: auto, cpu or opencl (default auto)");
   app.add_option("--fixLumen", fixLumen, "fix the lumen: on or off (default on)");
-  app.add_option("--window", window, "display window width, in the volume's unit (HU)");
-  app.add_option("--level", level, "display window level, in the volume's unit (HU)");
+  app.add_option("--window", window, "display window width, in the volume's unit (HU for CT)");
+  app.add_option("--level", level, "display window level, in the volume's unit (HU for CT)");
   app.add_option("--preset", options.Preset, "window/level preset: CTA, bone, soft-tissue or full");
   app.add_option("--overlays",
                  overlays,

@@ -232,6 +232,7 @@ ViewerWindow::ConnectParts()
                                          inputs->Segmentation ? QString::fromStdString(inputs->Segmentation->GetName())
                                                               : QString());
             m_ThreeDView->SetInputs(inputs);
+            m_Panel->SetIntensityUnit(QString::fromStdString(inputs->IntensityUnit));
             if (inputs->IsPhantom)
             {
               m_Panel->ShowPhantom(QString::fromStdString(inputs->PhantomName));

@@ -256,6 +256,8 @@ TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
     EXPECT_EQ(readout.Depth, depth[k]) << i << "," << j;
     const int branch = static_cast<int>(labels->GetScalarComponentAsDouble(i, j, 0, 0));
     EXPECT_EQ(readout.Branch, branch);
+    EXPECT_EQ(readout.IntensityUnit, "HU") << "the phantom is a CT";
+    EXPECT_TRUE(readout.ToText().contains(QStringLiteral(" HU  depth"))) << readout.ToText().toStdString();
     if (mask->GetScalarComponentAsDouble(i, j, 0, 0) > 0.0)
     {
       EXPECT_GT(branch, 0);
@@ -440,6 +442,12 @@ WatchProgressDuring(ViewerWindow & window, const std::function<void()> & request
   return sighting;
 }
 
+TEST_F(WidgetsTest, ThePhantomsWindowAndLevelAreInHU)
+{
+  EXPECT_EQ(Window().GetPanel()->GetUi().windowSpin->suffix(), QStringLiteral(" HU"));
+  EXPECT_EQ(Window().GetPanel()->GetUi().levelSpin->suffix(), QStringLiteral(" HU"));
+}
+
 TEST_F(WidgetsTest, TheProgressBarShowsOnlyOnceAnUpdateHasRunForItsDelay)
 {
   const double delay = ViewerWindow::ProgressDelayMilliseconds / 1000.0;
@@ -556,6 +564,25 @@ DistinctCellValues(vtkPolyData * data, const char * name)
   return values;
 }
 
+TEST(WidgetsInputs, HounsfieldUnitsOnlyForAVolumeThatHoldsAir)
+{
+  auto volumeWithMinimum = [](float minimum)
+  {
+    auto image = VolumeImageType::New();
+    image->SetRegions(VolumeImageType::RegionType({ { 0, 0, 0 } }, { { 4, 3, 2 } }));
+    image->Allocate();
+    image->FillBuffer(300.0f);
+    image->GetBufferPointer()[5] = minimum;
+    return ConvertItkImageToVolumeNode(image.GetPointer(), "volume");
+  };
+  EXPECT_EQ(IntensityUnitOf(volumeWithMinimum(-1024.0f)), "HU") << "a CT's air";
+  EXPECT_EQ(IntensityUnitOf(volumeWithMinimum(-500.0f)), "HU");
+  EXPECT_EQ(IntensityUnitOf(volumeWithMinimum(-499.0f)), "") << "above any air in HU";
+  EXPECT_EQ(IntensityUnitOf(volumeWithMinimum(0.0f)), "") << "an MR's intensities";
+  EXPECT_EQ(IntensityUnitOf(nullptr), "");
+  EXPECT_EQ(MakePhantomInputs("runoff", 6.0).IntensityUnit, "HU");
+}
+
 TEST(WidgetsSegmentation, TheVMTKLevelSetGivesTheLogicsCPRAndItsThreeBranchesAndABadFileKeepsTheData)
 {
   const std::string data = AortaDataFolder();
@@ -616,6 +643,15 @@ TEST(WidgetsSegmentation, TheVMTKLevelSetGivesTheLogicsCPRAndItsThreeBranchesAnd
   }
   EXPECT_EQ(window->GetCPRView()->GetCenterlineOverlay()->GetNumberOfLines(), 3);
   EXPECT_EQ(DistinctCellValues(window->GetThreeDView()->GetTubes(), "BranchIds").size(), 3u);
+
+  // An MR angiography: its intensities are no Hounsfield units, and neither the window nor the readout says so.
+  EXPECT_EQ(inputs->IntensityUnit, "");
+  EXPECT_EQ(window->GetPanel()->GetUi().windowSpin->suffix(), QString());
+  EXPECT_EQ(window->GetPanel()->GetUi().levelSpin->suffix(), QString());
+  const PixelReadout mrReadout = ReadPixel(*shown, false, 10, 10);
+  ASSERT_TRUE(mrReadout.Inside);
+  EXPECT_FALSE(mrReadout.ToText().contains(QStringLiteral("HU"))) << mrReadout.ToText().toStdString();
+  EXPECT_TRUE(mrReadout.ToText().contains(QStringLiteral("value "))) << mrReadout.ToText().toStdString();
 
   // A corrupt file: the reader's message in a dialog, and the data stays.
   ScopedTemporaryFolder folder;
