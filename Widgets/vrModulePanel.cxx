@@ -6,6 +6,7 @@
 #include "vrRelaxBackend.h"
 
 #include <QFileInfo>
+#include <QEvent>
 #include <QLabel>
 #include <QSignalBlocker>
 
@@ -68,6 +69,7 @@ ModulePanel::ModulePanel(QWidget * parent)
   for (QLabel * label : { m_Ui->volumeLabel, m_Ui->centerlineLabel, m_Ui->segmentationLabel })
   {
     label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
+    label->installEventFilter(this);
   }
   m_Ui->presetCombo->setCurrentText(QString::fromLatin1(CTAPreset.Name));
   // Every phantom the factory makes (itk::MakeCTAPhantom).
@@ -487,12 +489,33 @@ ModulePanel::SetInputDescription(const QString & volume, const QString & centerl
     const QFileInfo file(text);
     return text.contains(QLatin1Char('/')) && !file.fileName().isEmpty() ? file.fileName() : text;
   };
-  m_Ui->volumeLabel->setText(shortName(volume));
-  m_Ui->centerlineLabel->setText(shortName(centerlines));
+  SetElidedText(m_Ui->volumeLabel, shortName(volume));
+  SetElidedText(m_Ui->centerlineLabel, shortName(centerlines));
   m_Ui->volumeLabel->setStatusTip(volume);
   m_Ui->centerlineLabel->setStatusTip(centerlines);
-  m_Ui->segmentationLabel->setText(segmentation.isEmpty() ? tr("(none)") : shortName(segmentation));
+  SetElidedText(m_Ui->segmentationLabel, segmentation.isEmpty() ? tr("(none)") : shortName(segmentation));
   m_Ui->segmentationLabel->setStatusTip(segmentation);
+}
+
+void
+ModulePanel::SetElidedText(QLabel * label, const QString & text)
+{
+  label->setProperty("fullText", text);
+  // A file name keeps its end (the extension, a series number); a description (a phantom's) its beginning.
+  const bool file = text.contains(QLatin1Char('.')) && !text.contains(QLatin1Char(' '));
+  label->setText(
+    label->fontMetrics().elidedText(text, file ? Qt::ElideMiddle : Qt::ElideRight, std::max(label->width(), 1)));
+}
+
+bool
+ModulePanel::eventFilter(QObject * watched, QEvent * event)
+{
+  auto * label = qobject_cast<QLabel *>(watched);
+  if (event->type() == QEvent::Resize && label != nullptr && label->property("fullText").isValid())
+  {
+    SetElidedText(label, label->property("fullText").toString());
+  }
+  return QWidget::eventFilter(watched, event);
 }
 
 QWidget *

@@ -17,6 +17,7 @@ class ModulePanel;
 }
 class QSlider;
 class QDoubleSpinBox;
+class QLabel;
 
 namespace vr
 {
@@ -137,6 +138,11 @@ public:
     return *m_Ui;
   }
 
+protected:
+  /** Elides the input labels again when their width changes. */
+  bool
+  eventFilter(QObject * watched, QEvent * event) override;
+
 signals:
   /** A parameter the logic uses changed. */
   void
@@ -169,6 +175,10 @@ private:
   /** Enables the kernel's chosen spin box, and N and w for the Jacobi solver only. */
   void
   EnableFilterControls();
+  /** Shows \a text in an input label, with an ellipsis when it is wider than the label: in the middle of a file
+   * name, at the end of a description. */
+  void
+  SetElidedText(QLabel * label, const QString & text);
 
   std::unique_ptr<Ui::ModulePanel> m_Ui;
   bool                             m_Updating{ false };

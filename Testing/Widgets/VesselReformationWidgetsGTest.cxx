@@ -23,6 +23,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QMessageBox>
 #include <QSlider>
 #include <QTest>
@@ -442,6 +443,33 @@ WatchProgressDuring(ViewerWindow & window, const std::function<void()> & request
   return sighting;
 }
 
+TEST_F(WidgetsTest, AnInputNameTooLongForItsLabelShowsBothEndsAroundAnEllipsis)
+{
+  QLabel *      label = Window().GetPanel()->GetUi().volumeLabel;
+  const QString name = QStringLiteral("a-very-long-volume-file-name-of-a-study-with-its-series-description-v2.nrrd");
+  Window().GetPanel()->SetInputDescription(QStringLiteral("/data/") + name, QStringLiteral("c.vtp"), QString());
+  ASSERT_GT(label->width(), 10);
+  ASSERT_GT(label->fontMetrics().horizontalAdvance(name), label->width()) << "the name must not fit for this test";
+  // The beginning and the end of the name around one ellipsis.
+  const QStringList parts = label->text().split(QChar(0x2026));
+  ASSERT_EQ(parts.size(), 2) << label->text().toStdString();
+  EXPECT_FALSE(parts[0].isEmpty());
+  EXPECT_FALSE(parts[1].isEmpty());
+  EXPECT_TRUE(name.startsWith(parts[0])) << label->text().toStdString();
+  EXPECT_TRUE(name.endsWith(parts[1])) << label->text().toStdString();
+  EXPECT_LE(label->fontMetrics().horizontalAdvance(label->text()), label->width());
+  EXPECT_EQ(label->statusTip(), QStringLiteral("/data/") + name);
+  // Wider, it shows more; a short name whole.
+  const QString narrow = label->text();
+  Window().GetPanel()->setFixedWidth(Window().GetPanel()->width() + 200);
+  QApplication::processEvents();
+  EXPECT_GT(label->text().size(), narrow.size());
+  Window().GetPanel()->setMinimumWidth(0);
+  Window().GetPanel()->setMaximumWidth(QWIDGETSIZE_MAX);
+  Window().GetPanel()->SetInputDescription(QStringLiteral("/data/ct.nrrd"), QStringLiteral("c.vtp"), QString());
+  EXPECT_EQ(label->text(), QStringLiteral("ct.nrrd"));
+}
+
 TEST_F(WidgetsTest, ThePhantomsWindowAndLevelAreInHU)
 {
   EXPECT_EQ(Window().GetPanel()->GetUi().windowSpin->suffix(), QStringLiteral(" HU"));
@@ -617,7 +645,8 @@ TEST(WidgetsSegmentation, TheVMTKLevelSetGivesTheLogicsCPRAndItsThreeBranchesAnd
   const auto shown = window->GetCPRView()->GetResult();
   const auto inputs = shown->Inputs;
   ASSERT_TRUE(inputs->Segmentation);
-  EXPECT_EQ(window->GetPanel()->GetUi().segmentationLabel->text(), QStringLiteral("aorta-final-levelset.mha"));
+  EXPECT_EQ(window->GetPanel()->GetUi().segmentationLabel->property("fullText").toString(),
+            QStringLiteral("aorta-final-levelset.mha"));
 
   // The reference: a logic of its own on the files, read anew.
   VesselReformationLogic   logic;
