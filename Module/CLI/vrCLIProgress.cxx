@@ -112,7 +112,13 @@ CLIProgress::End()
   }
   for (const auto & [name, value] : m_ReturnValues)
   {
-    m_Out << "<filter-result name=\"" << name << "\">" << value << "</filter-result>\n";
+    // CTK reads these lines as XML: a value in words (a backend's reason) may hold &, < or >.
+    std::string escaped;
+    for (const char c : value)
+    {
+      escaped += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '>' ? "&gt;" : std::string(1, c);
+    }
+    m_Out << "<filter-result name=\"" << name << "\">" << escaped << "</filter-result>\n";
   }
   m_Out << "<filter-end>\n<filter-name>" << m_Name << "</filter-name>\n<filter-time>" << ElapsedSeconds()
         << "</filter-time>\n</filter-end>" << std::endl;
