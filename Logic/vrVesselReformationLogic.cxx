@@ -1000,7 +1000,8 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
                                         const ReformationParameters & parameters,
                                         const ProgressCallback &      progress,
                                         std::vector<std::string> &    warnings,
-                                        std::string *                 backendUsed)
+                                        std::string *                 backendUsed,
+                                        std::string *                 backendReason)
 {
   parameters.Validate();
   if (depth == nullptr)
@@ -1008,13 +1009,23 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
     throw InputError("relaxation: no depth image given");
   }
   std::string  notice;
+  std::string  reason;
   RelaxBackend chosen = RelaxBackend::CPU;
   const bool   steady = parameters.Solver == itk::BilateralDepthRelaxSolver::Steady;
-  auto         filter =
-    CreateRelaxFilter(steady ? RelaxBackend::CPU : parameters.Backend, parameters.OpenCLDevice, notice, &chosen);
+  auto         filter = CreateRelaxFilter(
+    steady ? RelaxBackend::CPU : parameters.Backend, parameters.OpenCLDevice, notice, &chosen, &reason);
   if (steady && parameters.Backend == RelaxBackend::OpenCL)
   {
     notice = SteadySolverOnCPUNotice(parameters.Backend);
+  }
+  if (steady && parameters.Backend != RelaxBackend::CPU)
+  {
+    // The same words as the logic's own choice (ChooseRelaxFilter).
+    reason = std::string(ToString(parameters.Backend)) + ": the steady solver has no OpenCL kernel, so the CPU";
+  }
+  if (backendReason != nullptr)
+  {
+    *backendReason = reason;
   }
   if (!notice.empty())
   {

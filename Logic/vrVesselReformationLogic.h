@@ -258,6 +258,7 @@ public:
    * \param progress receives progress; may be empty.
    * \param warnings receives the backend notice, if any.
    * \param backendUsed if not null, receives the backend that relaxed ("cpu" or "opencl").
+   * \param backendReason if not null, receives why, in words (as ReformationOutputs::RelaxBackendReason).
    * \return the relaxed depth, with the input's metadata. Throws vr::InputError. */
   static DepthImageType::Pointer
   RelaxDepthImage(const DepthImageType *        depth,
@@ -265,7 +266,8 @@ public:
                   const ReformationParameters & parameters,
                   const ProgressCallback &      progress,
                   std::vector<std::string> &    warnings,
-                  std::string *                 backendUsed = nullptr);
+                  std::string *                 backendUsed = nullptr,
+                  std::string *                 backendReason = nullptr);
 
   /** \param size a view's size in pixels.
    * \return the bytes the reformation of that view needs: depth, mask, labels, relaxation buffers, both CPRs,

@@ -57,6 +57,7 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
 
   std::vector<std::string> warnings;
   std::string              backend = "cpu";
+  std::string              backendReason;
   const auto               start = std::chrono::steady_clock::now();
   const auto               relaxed = vr::VesselReformationLogic::RelaxDepthImage(
     depth,
@@ -71,7 +72,8 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
       progress.Update(fraction, stage);
     },
     warnings,
-    &backend);
+    &backend,
+    &backendReason);
   for (const auto & warning : warnings)
   {
     progress.Print(std::cerr, "warning: " + warning);
@@ -86,6 +88,11 @@ RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & pro
   progress.SetReturnValue("backendUsed", backend);
   progress.SetReturnValue("imageSize", std::to_string(size[0]) + "," + std::to_string(size[1]));
   progress.SetReturnValue("relaxTime", milliseconds.str());
+  // The backend's reason goes to the log, not to a returned value: a free text cannot be one of CTK's index-1000
+  // parameters, whose values hosts pass back after the positional arguments.
+  progress.Print(std::cout,
+                 "BilateralDepthRelax: " + std::to_string(size[0]) + " x " + std::to_string(size[1]) + " pixels, " +
+                   milliseconds.str() + " ms on " + backend + "; relax backend: " + backendReason);
 }
 } // namespace
 

@@ -633,6 +633,21 @@ TEST_F(ReturnValues, RelaxModuleReturnsItsBackendSizeAndTime)
   EXPECT_EQ(values["backendUsed"], "cpu");
   EXPECT_EQ(values["imageSize"], "24,16");
   EXPECT_GE(Number(values["relaxTime"]), 0.0);
+  // The backend's reason, in the log.
+  EXPECT_TRUE(Contains(run.Out, "24 x 16 pixels")) << run.Out;
+  EXPECT_TRUE(Contains(run.Out, "on cpu; relax backend: cpu requested\n")) << run.Out;
+
+  // The steady solver asked for on OpenCL relaxes on the CPU, and the log says why.
+  const ModuleRun steady = vr::test::RunProgram({ Executable("BilateralDepthRelax"),
+                                                  "--backend",
+                                                  "opencl",
+                                                  "--solver",
+                                                  "steady",
+                                                  m_Folder.File("depth.nrrd"),
+                                                  m_Folder.File("relaxed-steady.nrrd") });
+  ASSERT_EQ(steady.ExitCode, 0) << steady.Err;
+  EXPECT_TRUE(Contains(steady.Out, "on cpu; relax backend: opencl: the steady solver has no OpenCL kernel, so the CPU\n"))
+    << steady.Out;
 }
 
 TEST_F(ReturnValues, AReturnParameterFileInAMissingFolderFailsBeforeTheWork)
