@@ -80,6 +80,9 @@ RunViewer(int argc, char ** argv)
 
   const bool scripted = !options.ScreenshotPath.empty();
   int        exitStatus = EXIT_SUCCESS;
+  // Read by the slots below while the event loop runs, so it lives as long as the loop (AddressSanitizer found it
+  // declared in the block that connects them, out of scope by then).
+  bool written = false;
   if (scripted)
   {
     window.SetErrorHandler(
@@ -104,7 +107,6 @@ RunViewer(int argc, char ** argv)
                        QApplication::exit(EXIT_FAILURE);
                      });
     // Done when the full cut surface is drawn in the 3D view and nothing else is due.
-    bool written = false;
     QObject::connect(window.GetThreeDView(),
                      &vr::ThreeDView::rendered,
                      &window,
