@@ -489,22 +489,25 @@ ModulePanel::SetInputDescription(const QString & volume, const QString & centerl
     const QFileInfo file(text);
     return text.contains(QLatin1Char('/')) && !file.fileName().isEmpty() ? file.fileName() : text;
   };
-  SetElidedText(m_Ui->volumeLabel, shortName(volume));
-  SetElidedText(m_Ui->centerlineLabel, shortName(centerlines));
+  auto isFile = [](const QString & text) { return text.contains(QLatin1Char('/')); };
+  SetElidedText(m_Ui->volumeLabel, shortName(volume), isFile(volume));
+  SetElidedText(m_Ui->centerlineLabel, shortName(centerlines), isFile(centerlines));
   m_Ui->volumeLabel->setStatusTip(volume);
   m_Ui->centerlineLabel->setStatusTip(centerlines);
-  SetElidedText(m_Ui->segmentationLabel, segmentation.isEmpty() ? tr("(none)") : shortName(segmentation));
+  SetElidedText(m_Ui->segmentationLabel,
+                segmentation.isEmpty() ? tr("(none)") : shortName(segmentation),
+                isFile(segmentation));
   m_Ui->segmentationLabel->setStatusTip(segmentation);
 }
 
 void
-ModulePanel::SetElidedText(QLabel * label, const QString & text)
+ModulePanel::SetElidedText(QLabel * label, const QString & text, bool fileName)
 {
   label->setProperty("fullText", text);
+  label->setProperty("fileName", fileName);
   // A file name keeps its end (the extension, a series number); a description (a phantom's) its beginning.
-  const bool file = text.contains(QLatin1Char('.')) && !text.contains(QLatin1Char(' '));
   label->setText(
-    label->fontMetrics().elidedText(text, file ? Qt::ElideMiddle : Qt::ElideRight, std::max(label->width(), 1)));
+    label->fontMetrics().elidedText(text, fileName ? Qt::ElideMiddle : Qt::ElideRight, std::max(label->width(), 1)));
 }
 
 bool
@@ -513,7 +516,7 @@ ModulePanel::eventFilter(QObject * watched, QEvent * event)
   auto * label = qobject_cast<QLabel *>(watched);
   if (event->type() == QEvent::Resize && label != nullptr && label->property("fullText").isValid())
   {
-    SetElidedText(label, label->property("fullText").toString());
+    SetElidedText(label, label->property("fullText").toString(), label->property("fileName").toBool());
   }
   return QWidget::eventFilter(watched, event);
 }

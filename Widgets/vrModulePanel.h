@@ -176,9 +176,9 @@ private:
   void
   EnableFilterControls();
   /** Shows \a text in an input label, with an ellipsis when it is wider than the label: in the middle of a file
-   * name, at the end of a description. */
+   * name (\a fileName), at the end of a description. */
   void
-  SetElidedText(QLabel * label, const QString & text);
+  SetElidedText(QLabel * label, const QString & text, bool fileName);
 
   std::unique_ptr<Ui::ModulePanel> m_Ui;
   bool                             m_Updating{ false };

@@ -468,6 +468,13 @@ TEST_F(WidgetsTest, AnInputNameTooLongForItsLabelShowsBothEndsAroundAnEllipsis)
   Window().GetPanel()->setMaximumWidth(QWIDGETSIZE_MAX);
   Window().GetPanel()->SetInputDescription(QStringLiteral("/data/ct.nrrd"), QStringLiteral("c.vtp"), QString());
   EXPECT_EQ(label->text(), QStringLiteral("ct.nrrd"));
+  // A description (not a file) keeps its beginning.
+  const QString description =
+    QStringLiteral("runoff phantom, synthetic leg run-off CTA with its exact centerlines (1.5 mm voxels)");
+  Window().GetPanel()->SetInputDescription(description, QStringLiteral("c.vtp"), QString());
+  ASSERT_GT(label->fontMetrics().horizontalAdvance(description), label->width());
+  EXPECT_TRUE(label->text().endsWith(QChar(0x2026))) << label->text().toStdString();
+  EXPECT_TRUE(description.startsWith(label->text().chopped(1))) << label->text().toStdString();
 }
 
 TEST_F(WidgetsTest, ThePhantomsWindowAndLevelAreInHU)
