@@ -72,6 +72,13 @@ SteadySolverOnCPUNotice(RelaxBackend backend)
          ": the steady solver has no OpenCL kernel; relaxing on the CPU instead";
 }
 
+/** Why the relaxation runs on the CPU when the steady solver was asked for with \a backend (the backend's reason). */
+std::string
+SteadySolverOnCPUReason(RelaxBackend backend)
+{
+  return std::string(ToString(backend)) + ": the steady solver has no OpenCL kernel, so the CPU";
+}
+
 /** Sets w, the range kernel (J or a, as the parameters give it), N and the solver on \a filter. */
 void
 ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & parameters)
@@ -509,7 +516,7 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
   {
     // Asked for OpenCL by name, the user hears why it is not used; auto simply reports its reason.
     notice = Parameters.Backend == RelaxBackend::OpenCL ? SteadySolverOnCPUNotice(Parameters.Backend) : "";
-    reason = std::string(ToString(Parameters.Backend)) + ": the steady solver has no OpenCL kernel, so the CPU";
+    reason = SteadySolverOnCPUReason(Parameters.Backend);
     tryOpenCL = false;
   }
   else if (Parameters.Backend == RelaxBackend::OpenCL)
@@ -1020,8 +1027,7 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   }
   if (steady && parameters.Backend != RelaxBackend::CPU)
   {
-    // The same words as the logic's own choice (ChooseRelaxFilter).
-    reason = std::string(ToString(parameters.Backend)) + ": the steady solver has no OpenCL kernel, so the CPU";
+    reason = SteadySolverOnCPUReason(parameters.Backend);
   }
   if (backendReason != nullptr)
   {
