@@ -8,6 +8,9 @@
 #include "vrNodeConversion.h"
 #include "vrVesselReformationLogic.h"
 
+#include "PlainBilateralDepthRelax.h"
+#include "vrTestImages.h"
+
 #include <gtest/gtest.h>
 
 #include <vtkCellArray.h>
@@ -696,28 +699,15 @@ TEST(VesselReformationLogicRelax, RelaxDepthImageFollowsEquationOne)
 }
 
 // Issue 13: the jump threshold reaches the filter (J = 2 mm and a = 0.25 mm^-2 give the same picture, J = 3 mm
-// unset), and the steady solver finds the fixed point. Depths [0, 1, 3] with the ends fixed: one pass moves the
-// middle to f(1), f(x) = (R(x) 0 + R(3 - x) 3) / (R(x) + R(3 - x)), R(d) = exp(-(d/J)^2); the steady solver finds
-// the fixed point x = f(x) that those passes approach from 1 (bilateral weights allow several: 1.5 is one, but from
-// 1 the passes go to the one near 0.67 for J = 2), here by plain iteration of f in double.
+// unset), and the steady solver finds the fixed point, on the hand-worked case of depths [0, 1, 3] with the ends
+// fixed (vr::test::ThreePixelMiddleAfterOnePass, ThreePixelMiddleFixedPoint).
 TEST(VesselReformationLogicRelax, JumpThresholdAndSteadySolverReachTheFilter)
 {
-  auto depth = vr::DepthImageType::New();
-  depth->SetRegions(vr::DepthImageType::RegionType({ { 0, 0 } }, { { 3, 1 } }));
-  depth->Allocate();
-  depth->GetBufferPointer()[0] = 0.0f;
-  depth->GetBufferPointer()[1] = 1.0f;
-  depth->GetBufferPointer()[2] = 3.0f;
-  auto mask = vr::MaskImageType::New();
-  mask->SetRegions(depth->GetLargestPossibleRegion());
-  mask->Allocate();
-  mask->GetBufferPointer()[0] = 1;
-  mask->GetBufferPointer()[1] = 0;
-  mask->GetBufferPointer()[2] = 1;
-  auto middle = [&](const ReformationParameters & parameters, std::vector<std::string> & warnings)
+  const auto depth = vr::test::MakeDepthImage(3, 1, { 0.0f, 1.0f, 3.0f });
+  const auto mask = vr::test::MakeMaskImage(3, 1, { 1, 0, 1 });
+  auto       middle = [&](const ReformationParameters & parameters, std::vector<std::string> & warnings)
   { return VesselReformationLogic::RelaxDepthImage(depth, mask, parameters, {}, warnings)->GetBufferPointer()[1]; };
-  auto expected = [](double J)
-  { return 3.0 * std::exp(-4.0 / (J * J)) / (std::exp(-1.0 / (J * J)) + std::exp(-4.0 / (J * J))); };
+  auto expected = [](double J) { return vr::test::ThreePixelMiddleAfterOnePass(1.0, J); };
   ReformationParameters parameters;
   parameters.Iterations = 1;
   parameters.Backend = vr::RelaxBackend::CPU;
@@ -730,16 +720,7 @@ TEST(VesselReformationLogicRelax, JumpThresholdAndSteadySolverReachTheFilter)
   EXPECT_NEAR(middle(parameters, warnings), expected(2.0), 1e-6);
   EXPECT_TRUE(warnings.empty());
 
-  auto fixedPoint = [](double J)
-  {
-    double x = 1.0;
-    for (int pass = 0; pass < 100000; ++pass)
-    {
-      x = 3.0 * std::exp(-(3.0 - x) * (3.0 - x) / (J * J)) /
-          (std::exp(-x * x / (J * J)) + std::exp(-(3.0 - x) * (3.0 - x) / (J * J)));
-    }
-    return x;
-  };
+  const auto fixedPoint = vr::test::ThreePixelMiddleFixedPoint;
   ASSERT_GT(std::abs(fixedPoint(2.0) - expected(2.0)), 0.1) << "one pass is not the fixed point here";
   parameters.Solver = itk::BilateralDepthRelaxSolver::Steady;
   EXPECT_NEAR(middle(parameters, warnings), fixedPoint(2.0), 1e-3);

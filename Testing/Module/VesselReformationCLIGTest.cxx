@@ -8,8 +8,10 @@
 #include "vrImageIO.h"
 #include "vrModuleDescription.h"
 #include "vrReformationParameters.h"
+#include "PlainBilateralDepthRelax.h"
 #include "vrModuleRuns.h"
 #include "vrTestFiles.h"
+#include "vrTestImages.h"
 #include "vrVolumeIO.h"
 
 #include "itkImageFileWriter.h"
@@ -894,26 +896,14 @@ TEST(BilateralDepthRelaxModule, RelaxesByEquationOneAndHoldsTheMask)
 }
 
 // Issue 13: --jumpThreshold J is the range kernel's scale, R(d) = exp(-(d/J)^2), 3 mm when neither it nor
-// --anisotropy is given; --solver steady gives the fixed point. Depths [0, 1, 3], w = 1, one Jacobi pass: the middle
-// pixel becomes f(1), f(x) = (R(x) 0 + R(3 - x) 3) / (R(x) + R(3 - x)), by hand; the steady solver gives the fixed
-// point x = f(x) that the passes approach from 1, found here by plain iteration of f in double.
+// --anisotropy is given; --solver steady gives the fixed point. The hand-worked case of depths [0, 1, 3] with the ends
+// fixed, w = 1: one Jacobi pass moves the middle to f(1), the steady solver to the fixed point x = f(x) that the
+// passes approach from 1 (vr::test::ThreePixelMiddleAfterOnePass, ThreePixelMiddleFixedPoint).
 TEST(BilateralDepthRelaxModule, JumpThresholdScalesTheRangeKernelAndSteadyFindsTheFixedPoint)
 {
   const fs::path folder = TestFolder();
-  auto           depth = vr::DepthImageType::New();
-  depth->SetRegions(vr::DepthImageType::RegionType({ { 0, 0 } }, { { 3, 1 } }));
-  depth->Allocate();
-  depth->GetBufferPointer()[0] = 0.0f;
-  depth->GetBufferPointer()[1] = 1.0f;
-  depth->GetBufferPointer()[2] = 3.0f;
-  vr::WriteImage2D(depth.GetPointer(), (folder / "depth.nrrd").string());
-  auto mask = vr::MaskImageType::New();
-  mask->SetRegions(depth->GetLargestPossibleRegion());
-  mask->Allocate();
-  mask->GetBufferPointer()[0] = 1;
-  mask->GetBufferPointer()[1] = 0;
-  mask->GetBufferPointer()[2] = 1;
-  vr::WriteImage2D(mask.GetPointer(), (folder / "mask.nrrd").string());
+  vr::WriteImage2D(vr::test::MakeDepthImage(3, 1, { 0.0f, 1.0f, 3.0f }).GetPointer(), (folder / "depth.nrrd").string());
+  vr::WriteImage2D(vr::test::MakeMaskImage(3, 1, { 1, 0, 1 }).GetPointer(), (folder / "mask.nrrd").string());
   auto middle = [&](std::vector<std::string> flags, const std::string & name)
   {
     std::vector<std::string> command = {
@@ -926,23 +916,12 @@ TEST(BilateralDepthRelaxModule, JumpThresholdScalesTheRangeKernelAndSteadyFindsT
     EXPECT_EQ(run.ExitCode, 0) << run.Err;
     return static_cast<double>(vr::ReadDepthImage((folder / name).string())->GetBufferPointer()[1]);
   };
-  auto expected = [](double J)
-  {
-    const double near = std::exp(-(1.0 / J) * (1.0 / J));
-    const double far = std::exp(-(2.0 / J) * (2.0 / J));
-    return 3.0 * far / (near + far);
-  };
+  auto expected = [](double J) { return vr::test::ThreePixelMiddleAfterOnePass(1.0, J); };
   EXPECT_NEAR(middle({ "--iterations", "1", "--jumpThreshold", "2" }, "j2.nrrd"), expected(2.0), 1e-6);
   EXPECT_NEAR(middle({ "--iterations", "1", "--anisotropy", "0.25" }, "a025.nrrd"), expected(2.0), 1e-6);
   EXPECT_NEAR(middle({ "--iterations", "1" }, "default.nrrd"), expected(3.0), 1e-6);
   EXPECT_NEAR(middle({ "--iterations", "1", "--jumpThreshold", "0.5" }, "j05.nrrd"), expected(0.5), 1e-6);
-  double fixedPoint = 1.0;
-  for (int pass = 0; pass < 100000; ++pass)
-  {
-    const double near = std::exp(-fixedPoint * fixedPoint / 4.0);
-    const double far = std::exp(-(3.0 - fixedPoint) * (3.0 - fixedPoint) / 4.0);
-    fixedPoint = 3.0 * far / (near + far);
-  }
+  const double fixedPoint = vr::test::ThreePixelMiddleFixedPoint(2.0);
   ASSERT_GT(std::abs(expected(2.0) - fixedPoint), 0.1) << "one Jacobi pass is not the fixed point here";
   EXPECT_NEAR(middle({ "--solver", "steady", "--jumpThreshold", "2" }, "steady.nrrd"), fixedPoint, 1e-3);
 }

@@ -145,4 +145,23 @@ PlainJacobiToResidual(const std::vector<float> &         depth,
   }
   return current;
 }
+
+double
+ThreePixelMiddleAfterOnePass(double x, double J)
+{
+  const double near = std::exp(-(x / J) * (x / J));
+  const double far = std::exp(-((3.0 - x) / J) * ((3.0 - x) / J));
+  return 3.0 * far / (near + far);
+}
+
+double
+ThreePixelMiddleFixedPoint(double J)
+{
+  double x = 1.0;
+  for (int pass = 0; pass < 100000; ++pass)
+  {
+    x = ThreePixelMiddleAfterOnePass(x, J);
+  }
+  return x;
+}
 } // namespace vr::test

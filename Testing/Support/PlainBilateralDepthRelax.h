@@ -50,6 +50,17 @@ PlainJacobiToResidual(const std::vector<float> &         depth,
                       unsigned int                       maximumIterations,
                       unsigned int &                     iterations,
                       unsigned int                       checkEvery = 50);
+
+/** The hand-worked case of a 3 x 1 depth map [0, x, 3] whose two ends are fixed, w = 1, jump threshold \a J (mm):
+ * one Jacobi pass takes the middle pixel to f(x) = (R(x) 0 + R(3 - x) 3) / (R(x) + R(3 - x)), R(d) = exp(-(d/J)^2).
+ * \return f(\a x). */
+double
+ThreePixelMiddleAfterOnePass(double x, double J);
+
+/** The fixed point x = f(x) of that case that Jacobi passes approach from x = 1 (bilateral weights allow several:
+ * 1.5 is one, but from 1 the passes go to the one near 0.67 for J = 2), by plain iteration of f in double. */
+double
+ThreePixelMiddleFixedPoint(double J);
 } // namespace vr::test
 
 #endif
