@@ -93,11 +93,32 @@ Measure(const fs::path & png)
   return facts;
 }
 
+/** Runs the viewer with \a arguments and --screenshot \a png, expects a clean exit and a window-sized picture (1600
+ * pixels wide) of more than 2000 colours and a grey deviation above 20, prints what it measured and leaves it in
+ * \a facts. Call it through ASSERT_NO_FATAL_FAILURE: a crash or a failed run ends the test. */
+void
+TakeScreenshot(std::vector<std::string> arguments, const fs::path & png, PictureFacts & facts)
+{
+  arguments.push_back("--screenshot");
+  arguments.push_back(png.string());
+  const ProcessResult result = RunViewer(arguments);
+  ASSERT_FALSE(result.Crashed);
+  ASSERT_EQ(result.ExitCode, 0) << result.Err;
+  ASSERT_TRUE(fs::exists(png));
+  facts = Measure(png);
+  EXPECT_EQ(facts.Width, 1600);
+  EXPECT_GT(facts.Colours, 2000u) << "a CPR, overlays, a shaded 3D view and text";
+  EXPECT_GT(facts.GreyDeviation, 20.0);
+  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
+            << facts.BrightShare << std::endl;
+}
+
 TEST(ViewerScreenshot, OnThePhantom)
 {
-  const fs::path      folder = TestFolder();
-  const fs::path      png = folder / "phantom.png";
-  const ProcessResult result = RunViewer({ "--phantomSpacing",
+  const fs::path folder = TestFolder();
+  const fs::path png = folder / "phantom.png";
+  PictureFacts   facts;
+  ASSERT_NO_FATAL_FAILURE(TakeScreenshot({ "--phantomSpacing",
                                            "3",
                                            "--size",
                                            "256,512",
@@ -106,20 +127,11 @@ TEST(ViewerScreenshot, OnThePhantom)
                                            "--angle",
                                            "30",
                                            "--overlays",
-                                           "centerlines,labels",
-                                           "--screenshot",
-                                           png.string() });
-  ASSERT_FALSE(result.Crashed);
-  ASSERT_EQ(result.ExitCode, 0) << result.Err;
-  ASSERT_TRUE(fs::exists(png));
-  const PictureFacts facts = Measure(png);
-  EXPECT_EQ(facts.Width, 1600);
+                                           "centerlines,labels" },
+                                         png,
+                                         facts));
   EXPECT_EQ(facts.Height, 1000);
-  EXPECT_GT(facts.Colours, 2000u) << "a CPR, labels, a shaded 3D view and text";
-  EXPECT_GT(facts.GreyDeviation, 20.0);
   EXPECT_GT(facts.BrightShare, 0.002) << "contrast-filled lumen and bone appear bright through the CTA window";
-  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
-            << facts.BrightShare << std::endl;
   EXPECT_EQ(fs::directory_iterator(folder) != fs::directory_iterator(), true);
   std::size_t files = 0;
   for ([[maybe_unused]] const auto & entry : fs::directory_iterator(folder))
@@ -131,9 +143,10 @@ TEST(ViewerScreenshot, OnThePhantom)
 
 TEST(ViewerScreenshot, OnTheThoracicPhantomWithTheJumpThresholdAndTheSteadySolver)
 {
-  const fs::path      folder = TestFolder();
-  const fs::path      png = folder / "thorax.png";
-  const ProcessResult result = RunViewer({ "--phantom",
+  const fs::path folder = TestFolder();
+  const fs::path png = folder / "thorax.png";
+  PictureFacts   facts;
+  ASSERT_NO_FATAL_FAILURE(TakeScreenshot({ "--phantom",
                                            "thorax",
                                            "--phantomSpacing",
                                            "3",
@@ -146,18 +159,10 @@ TEST(ViewerScreenshot, OnTheThoracicPhantomWithTheJumpThresholdAndTheSteadySolve
                                            "--angle",
                                            "30",
                                            "--overlays",
-                                           "centerlines",
-                                           "--screenshot",
-                                           png.string() });
-  ASSERT_FALSE(result.Crashed);
-  ASSERT_EQ(result.ExitCode, 0) << result.Err;
-  const PictureFacts facts = Measure(png);
-  EXPECT_EQ(facts.Width, 1600);
-  EXPECT_GT(facts.Colours, 2000u);
-  EXPECT_GT(facts.GreyDeviation, 20.0);
+                                           "centerlines" },
+                                         png,
+                                         facts));
   EXPECT_GT(facts.BrightShare, 0.002) << "the contrast-filled aorta and the spine through the CTA window";
-  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
-            << facts.BrightShare << std::endl;
 }
 
 TEST(ViewerScreenshot, OnTheVMTKAorta)
@@ -167,25 +172,18 @@ TEST(ViewerScreenshot, OnTheVMTKAorta)
   {
     GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
   }
-  const fs::path      folder = TestFolder();
-  const fs::path      png = folder / "aorta.mha.png";
-  const ProcessResult result = RunViewer({ (fs::path(data) / "aorta.mha").string(),
+  const fs::path folder = TestFolder();
+  const fs::path png = folder / "aorta.mha.png";
+  PictureFacts   facts;
+  ASSERT_NO_FATAL_FAILURE(TakeScreenshot({ (fs::path(data) / "aorta.mha").string(),
                                            (fs::path(data) / "aorta-centerline.vtp").string(),
                                            "--up",
                                            "auto",
                                            "--angle",
-                                           "20",
-                                           "--screenshot",
-                                           png.string() });
-  ASSERT_FALSE(result.Crashed);
-  ASSERT_EQ(result.ExitCode, 0) << result.Err;
-  const PictureFacts facts = Measure(png);
-  EXPECT_EQ(facts.Width, 1600);
-  EXPECT_GT(facts.Colours, 2000u);
-  EXPECT_GT(facts.GreyDeviation, 20.0);
+                                           "20" },
+                                         png,
+                                         facts));
   EXPECT_GT(facts.BrightShare, 0.02) << "the contrast-filled aorta and iliacs through the full-range window";
-  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
-            << facts.BrightShare << std::endl;
 }
 
 TEST(ViewerScreenshot, OnTheVMTKAortaWithItsLevelSetInsteadOfCenterlines)
@@ -195,26 +193,19 @@ TEST(ViewerScreenshot, OnTheVMTKAortaWithItsLevelSetInsteadOfCenterlines)
   {
     GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
   }
-  const fs::path      folder = TestFolder();
-  const fs::path      png = folder / "aorta-levelset.png";
-  const ProcessResult result = RunViewer({ (fs::path(data) / "aorta.mha").string(),
+  const fs::path folder = TestFolder();
+  const fs::path png = folder / "aorta-levelset.png";
+  PictureFacts   facts;
+  ASSERT_NO_FATAL_FAILURE(TakeScreenshot({ (fs::path(data) / "aorta.mha").string(),
                                            "--segmentation",
                                            (fs::path(data) / "aorta-final-levelset.mha").string(),
                                            "--up",
                                            "auto",
                                            "--angle",
-                                           "20",
-                                           "--screenshot",
-                                           png.string() });
-  ASSERT_FALSE(result.Crashed);
-  ASSERT_EQ(result.ExitCode, 0) << result.Err;
-  const PictureFacts facts = Measure(png);
-  EXPECT_EQ(facts.Width, 1600);
-  EXPECT_GT(facts.Colours, 2000u);
-  EXPECT_GT(facts.GreyDeviation, 20.0);
+                                           "20" },
+                                         png,
+                                         facts));
   EXPECT_GT(facts.BrightShare, 0.02) << "the contrast-filled aorta and iliacs through the full-range window";
-  std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
-            << facts.BrightShare << std::endl;
 
   // A segmentation file that does not read: the reader's message, exit 1, no picture.
   const std::string corrupt = (folder / "corrupt-mask.nii").string();
