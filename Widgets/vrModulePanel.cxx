@@ -494,9 +494,8 @@ ModulePanel::SetInputDescription(const QString & volume, const QString & centerl
   SetElidedText(m_Ui->centerlineLabel, shortName(centerlines), isFile(centerlines));
   m_Ui->volumeLabel->setStatusTip(volume);
   m_Ui->centerlineLabel->setStatusTip(centerlines);
-  SetElidedText(m_Ui->segmentationLabel,
-                segmentation.isEmpty() ? tr("(none)") : shortName(segmentation),
-                isFile(segmentation));
+  SetElidedText(
+    m_Ui->segmentationLabel, segmentation.isEmpty() ? tr("(none)") : shortName(segmentation), isFile(segmentation));
   m_Ui->segmentationLabel->setStatusTip(segmentation);
 }
 

@@ -23,9 +23,10 @@ PixelReadout::ToText() const
   {
     return QString();
   }
-  const QString intensity = IntensityUnit.empty()
-                              ? QStringLiteral("value %1").arg(Intensity, 0, 'f', 0)
-                              : QStringLiteral("%1 %2").arg(Intensity, 0, 'f', 0).arg(QString::fromStdString(IntensityUnit));
+  const QString intensity =
+    IntensityUnit.empty()
+      ? QStringLiteral("value %1").arg(Intensity, 0, 'f', 0)
+      : QStringLiteral("%1 %2").arg(Intensity, 0, 'f', 0).arg(QString::fromStdString(IntensityUnit));
   QString text = QStringLiteral("(%1, %2)  RAS (%3, %4, %5) mm  %6  depth %7 mm")
                    .arg(Column)
                    .arg(Row)

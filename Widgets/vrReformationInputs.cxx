@@ -29,7 +29,7 @@ IntensityUnitOf(VolumeNode * volume)
 {
   // Air in CT is about -1000 HU; no other modality stores intensities this far below 0.
   constexpr double AirBound = -500.0;
-  vtkImageData * image = volume != nullptr ? volume->GetImageData() : nullptr;
+  vtkImageData *   image = volume != nullptr ? volume->GetImageData() : nullptr;
   if (image == nullptr || image->GetPointData()->GetScalars() == nullptr)
   {
     return std::string();

@@ -1358,23 +1358,23 @@ public:
               {
                 const long row = At(0, y);
                 (hessian ? AssembleRow<true> : AssembleRow<false>)(l.C + row,
-                            l.Inverse + row,
-                            l.E + row,
-                            l.N + row,
-                            m_HessianC + row,
-                            m_HessianE + row,
-                            m_HessianN + row,
-                            m_Residual + row,
-                            m_Depth + row,
-                            m_Depth + row + s,
-                            m_Depth + row - s,
-                            m_Active + row,
-                            m_Active + row + s,
-                            m_WeightRight + row,
-                            m_WeightDown + row,
-                            m_WeightDown + row - s,
-                            m_TwiceAnisotropy,
-                            m_Width);
+                                                                   l.Inverse + row,
+                                                                   l.E + row,
+                                                                   l.N + row,
+                                                                   m_HessianC + row,
+                                                                   m_HessianE + row,
+                                                                   m_HessianN + row,
+                                                                   m_Residual + row,
+                                                                   m_Depth + row,
+                                                                   m_Depth + row + s,
+                                                                   m_Depth + row - s,
+                                                                   m_Active + row,
+                                                                   m_Active + row + s,
+                                                                   m_WeightRight + row,
+                                                                   m_WeightDown + row,
+                                                                   m_WeightDown + row - s,
+                                                                   m_TwiceAnisotropy,
+                                                                   m_Width);
                 maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, m_Width);
               }
             });

@@ -707,7 +707,7 @@ TEST(VesselReformationLogicRelax, JumpThresholdAndSteadySolverReachTheFilter)
   const auto mask = vr::test::MakeMaskImage(3, 1, { 1, 0, 1 });
   auto       middle = [&](const ReformationParameters & parameters, std::vector<std::string> & warnings)
   { return VesselReformationLogic::RelaxDepthImage(depth, mask, parameters, {}, warnings)->GetBufferPointer()[1]; };
-  auto expected = [](double J) { return vr::test::ThreePixelMiddleAfterOnePass(1.0, J); };
+  auto                  expected = [](double J) { return vr::test::ThreePixelMiddleAfterOnePass(1.0, J); };
   ReformationParameters parameters;
   parameters.Iterations = 1;
   parameters.Backend = vr::RelaxBackend::CPU;

@@ -646,7 +646,8 @@ TEST_F(ReturnValues, RelaxModuleReturnsItsBackendSizeAndTime)
                                                   m_Folder.File("depth.nrrd"),
                                                   m_Folder.File("relaxed-steady.nrrd") });
   ASSERT_EQ(steady.ExitCode, 0) << steady.Err;
-  EXPECT_TRUE(Contains(steady.Out, "on cpu; relax backend: opencl: the steady solver has no OpenCL kernel, so the CPU\n"))
+  EXPECT_TRUE(
+    Contains(steady.Out, "on cpu; relax backend: opencl: the steady solver has no OpenCL kernel, so the CPU\n"))
     << steady.Out;
 }
 

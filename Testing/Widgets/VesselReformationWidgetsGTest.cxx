@@ -421,7 +421,8 @@ WatchProgressDuring(ViewerWindow & window, const std::function<void()> & request
                                        }
                                        if (!now && busy)
                                        {
-                                         sighting.Busy = std::chrono::duration<double>(Clock::now() - busySince).count();
+                                         sighting.Busy =
+                                           std::chrono::duration<double>(Clock::now() - busySince).count();
                                          ended = true;
                                        }
                                        busy = now;
