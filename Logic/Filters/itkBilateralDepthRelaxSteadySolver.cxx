@@ -14,6 +14,15 @@
 #include <utility>
 #include <vector>
 
+// The row loops below are compiled for baseline x86-64, AVX2 (x86-64-v3) and AVX-512 (x86-64-v4), and the dynamic
+// loader picks one per process from the CPU (GNU ifunc): every row of a solve runs the same code, so results stay
+// independent of the thread count. Builds without runtime dispatch follow the compiler flags.
+#if defined(VR_STEADY_SOLVER_RUNTIME_DISPATCH)
+#define VR_ROW_LOOP __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#else
+#define VR_ROW_LOOP
+#endif
+
 namespace itk
 {
 namespace
@@ -399,7 +408,7 @@ BuildGalerkinRow(const Level & f, Level & c, long J)
 
 /** Gauss-Seidel on every other point of a 5-point row from column \a first: x_p = (b_p + sum w_pq x_q) / C_p.
  * The points updated are never each other's neighbours, so the row is one vector operation. */
-void
+VR_ROW_LOOP void
 SmoothRow5(float * __restrict x,
            const float * __restrict above,
            const float * __restrict below,
@@ -419,7 +428,7 @@ SmoothRow5(float * __restrict x,
 }
 
 /** The first colour of a Gauss-Seidel sweep that starts from x = 0: the neighbours are all 0, so x_p = b_p / C_p. */
-void
+VR_ROW_LOOP void
 SmoothRowFromZero(float * __restrict x,
                   const float * __restrict b,
                   const float * __restrict inverse,
@@ -433,7 +442,7 @@ SmoothRowFromZero(float * __restrict x,
 }
 
 /** The same on a 9-point row; \a neBelow and \a nwBelow point at the row below's NE and NW (see Level). */
-void
+VR_ROW_LOOP void
 SmoothRow9(float * __restrict x,
            const float * __restrict above,
            const float * __restrict below,
@@ -459,7 +468,7 @@ SmoothRow9(float * __restrict x,
 }
 
 /** r = b - A x on a 5-point row. */
-void
+VR_ROW_LOOP void
 ResidualRow5(float * __restrict r,
              const float * __restrict x,
              const float * __restrict above,
@@ -478,7 +487,7 @@ ResidualRow5(float * __restrict r,
 }
 
 /** r = b - A x on a 9-point row. */
-void
+VR_ROW_LOOP void
 ResidualRow9(float * __restrict r,
              const float * __restrict x,
              const float * __restrict above,
@@ -502,7 +511,7 @@ ResidualRow9(float * __restrict r,
 }
 
 /** q = A v on a 5-point row. */
-void
+VR_ROW_LOOP void
 ApplyRow5(float * __restrict q,
           const float * __restrict v,
           const float * __restrict above,
@@ -521,7 +530,7 @@ ApplyRow5(float * __restrict q,
 
 /** One coarse row of b_c = P^T r_f: \a r is the fine row 2J, \a rAbove row 2J + 1, \a rBelow row 2J - 1; the
  * weights of the coarse row (and, for those stored a row lower, of the row below). */
-void
+VR_ROW_LOOP void
 RestrictRow(float * __restrict b,
             const float * __restrict r,
             const float * __restrict rAbove,
@@ -547,7 +556,7 @@ RestrictRow(float * __restrict b,
 
 /** One coarse row of x_f += P x_c: fine rows 2J (\a fine) and 2J + 1 (\a fineAbove) from coarse rows J (\a x) and
  * J + 1 (\a xAbove). */
-void
+VR_ROW_LOOP void
 ProlongRow(float * __restrict fine,
            float * __restrict fineAbove,
            const float * __restrict x,
@@ -714,14 +723,14 @@ RangeWeight(float difference, float scale)
 
 /** The range weights of a row's edges to the right (the last column has none) and, when \a below is not null, to
  * the row below; returns a signature of the vanishing ones (their count and the sum of their columns). */
-std::uint64_t
-WeightRow(float * __restrict right,
-          float * __restrict down,
-          const double * __restrict d,
-          const double * __restrict below,
-          float scale,
-          bool  isotropic,
-          long  width)
+VR_ROW_LOOP std::uint64_t
+            WeightRow(float * __restrict right,
+                      float * __restrict down,
+                      const double * __restrict d,
+                      const double * __restrict below,
+                      float scale,
+                      bool  isotropic,
+                      long  width)
 {
   std::uint64_t signature = 0;
   if (isotropic)
@@ -783,7 +792,7 @@ WeightRow(float * __restrict right,
  * Hessian too. A weight sum below FLT_MIN (every weight all but underflowing) is inverted as FLT_MIN, so that no
  * inverse overflows. */
 template<bool Hessian>
-void
+[[gnu::always_inline]] inline void
 AssembleRow(float * __restrict c,
             float * __restrict inverse,
             float * __restrict e,
@@ -832,8 +841,88 @@ AssembleRow(float * __restrict c,
   }
 }
 
+/** AssembleRow without and with the Hessian, each compiled for every instruction set. */
+VR_ROW_LOOP void
+AssembleOperatorRow(float * __restrict c,
+                    float * __restrict inverse,
+                    float * __restrict e,
+                    float * __restrict n,
+                    float * __restrict hc,
+                    float * __restrict he,
+                    float * __restrict hn,
+                    float * __restrict residual,
+                    const double * __restrict d,
+                    const double * __restrict dAbove,
+                    const double * __restrict dBelow,
+                    const float * __restrict active,
+                    const float * __restrict activeAbove,
+                    const float * __restrict right,
+                    const float * __restrict down,
+                    const float * __restrict up,
+                    float twiceAnisotropy,
+                    long  width)
+{
+  AssembleRow<false>(c,
+                     inverse,
+                     e,
+                     n,
+                     hc,
+                     he,
+                     hn,
+                     residual,
+                     d,
+                     dAbove,
+                     dBelow,
+                     active,
+                     activeAbove,
+                     right,
+                     down,
+                     up,
+                     twiceAnisotropy,
+                     width);
+}
+VR_ROW_LOOP void
+AssembleOperatorAndHessianRow(float * __restrict c,
+                              float * __restrict inverse,
+                              float * __restrict e,
+                              float * __restrict n,
+                              float * __restrict hc,
+                              float * __restrict he,
+                              float * __restrict hn,
+                              float * __restrict residual,
+                              const double * __restrict d,
+                              const double * __restrict dAbove,
+                              const double * __restrict dBelow,
+                              const float * __restrict active,
+                              const float * __restrict activeAbove,
+                              const float * __restrict right,
+                              const float * __restrict down,
+                              const float * __restrict up,
+                              float twiceAnisotropy,
+                              long  width)
+{
+  AssembleRow<true>(c,
+                    inverse,
+                    e,
+                    n,
+                    hc,
+                    he,
+                    hn,
+                    residual,
+                    d,
+                    dAbove,
+                    dBelow,
+                    active,
+                    activeAbove,
+                    right,
+                    down,
+                    up,
+                    twiceAnisotropy,
+                    width);
+}
+
 /** delta += alpha v, r -= alpha q on a row. */
-void
+VR_ROW_LOOP void
 UpdateRow(float * __restrict delta,
           float * __restrict r,
           const float * __restrict v,
@@ -849,7 +938,7 @@ UpdateRow(float * __restrict delta,
 }
 
 /** v = z + beta v on a row. */
-void
+VR_ROW_LOOP void
 DirectionRow(float * __restrict v, const float * __restrict z, float beta, long width)
 {
   for (long x = 0; x < width; ++x)
@@ -887,7 +976,7 @@ EdgeEnergyChange(float from, float step, float anisotropy, float scale)
 
 /** The change of the energy sum (1 - R(D_p - D_q)) over a row's edges to the right and to the row below (\a below
  * null for the last row) when the depths move by \a step times \a delta, times 2a, summed in Lanes partial sums. */
-double
+VR_ROW_LOOP double
 EnergyChangeRow(const double * __restrict d,
                 const double * __restrict below,
                 const float * __restrict delta,
@@ -936,7 +1025,7 @@ EnergyChangeRow(const double * __restrict d,
 /** depth += delta on a row, kept within [low, high]: the fixed point lies within the range of the input (each free
  * pixel a weighted mean of its neighbours), so a correction that leaves it, as one can in a mode the weights all
  * but decouple, is cut back to it. */
-void
+VR_ROW_LOOP void
 AddRow(double * __restrict depth, const float * __restrict delta, float step, double low, double high, long width)
 {
   for (long x = 0; x < width; ++x)
@@ -1022,7 +1111,7 @@ struct SolverBuffers
 };
 
 /** sum of a[i] b[i] over a row, in Lanes partial sums added in a fixed order: the same bits on any machine. */
-inline double
+VR_ROW_LOOP double
 RowDot(const float * __restrict a, const float * __restrict b, long count)
 {
   double lanes[Lanes] = {};
@@ -1047,7 +1136,7 @@ RowDot(const float * __restrict a, const float * __restrict b, long count)
 }
 
 /** max |r[i]| s[i] over a row, in Lanes partial maxima. */
-inline float
+VR_ROW_LOOP float
 RowMaximum(const float * __restrict r, const float * __restrict s, long count)
 {
   float lanes[Lanes] = {};
@@ -1357,24 +1446,24 @@ public:
               for (long y = y0; y < y1; ++y)
               {
                 const long row = At(0, y);
-                (hessian ? AssembleRow<true> : AssembleRow<false>)(l.C + row,
-                                                                   l.Inverse + row,
-                                                                   l.E + row,
-                                                                   l.N + row,
-                                                                   m_HessianC + row,
-                                                                   m_HessianE + row,
-                                                                   m_HessianN + row,
-                                                                   m_Residual + row,
-                                                                   m_Depth + row,
-                                                                   m_Depth + row + s,
-                                                                   m_Depth + row - s,
-                                                                   m_Active + row,
-                                                                   m_Active + row + s,
-                                                                   m_WeightRight + row,
-                                                                   m_WeightDown + row,
-                                                                   m_WeightDown + row - s,
-                                                                   m_TwiceAnisotropy,
-                                                                   m_Width);
+                (hessian ? AssembleOperatorAndHessianRow : AssembleOperatorRow)(l.C + row,
+                                                                                l.Inverse + row,
+                                                                                l.E + row,
+                                                                                l.N + row,
+                                                                                m_HessianC + row,
+                                                                                m_HessianE + row,
+                                                                                m_HessianN + row,
+                                                                                m_Residual + row,
+                                                                                m_Depth + row,
+                                                                                m_Depth + row + s,
+                                                                                m_Depth + row - s,
+                                                                                m_Active + row,
+                                                                                m_Active + row + s,
+                                                                                m_WeightRight + row,
+                                                                                m_WeightDown + row,
+                                                                                m_WeightDown + row - s,
+                                                                                m_TwiceAnisotropy,
+                                                                                m_Width);
                 maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, m_Width);
               }
             });
