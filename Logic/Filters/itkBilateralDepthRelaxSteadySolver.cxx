@@ -1666,26 +1666,79 @@ public:
   void
   Smooth(const Level & l, bool forward)
   {
-    const bool parallel = l.IsParallel();
-    if (!l.NinePoint)
+    if (l.NinePoint)
+    {
+      SmoothFourColour(l, forward);
+    }
+    else
     {
       SmoothRedBlack(l, forward ? 0 : 1, false);
-      return;
     }
-    for (int step = 0; step < 4; ++step)
+  }
+
+  /** A four-colour Gauss-Seidel sweep of the 9-point level \a l in one pass over memory. Colour c holds the points
+   * with x % 2 + 2 (y % 2) == c; an even row holds colours 0 and 1, an odd row 2 and 3, and a point's neighbours of
+   * its own row are of the row's other colour. Forward (colours 0, 1, 2, 3): colours 0 and 1 on each even row y,
+   * then colours 2 and 3 on the odd row y - 1, whose neighbours in rows y - 2 and y are then done. Backward (3, 2, 1,
+   * 0): from the top, colours 3 and 2 on each odd row y, then 1 and 0 on the even row y + 1. Every point so sees the
+   * same values as in four passes, one per colour, at half the passes over memory. The rows of the second pair at
+   * the edges of each band wait for the neighbouring band, in a second step. */
+  void
+  SmoothFourColour(const Level & l, bool forward)
+  {
+    const long firstParity = forward ? 0 : 1;
+    // Forward, colours x % 2 == 0 then 1 on each row; backward, 1 then 0.
+    auto pair = [&](long y)
     {
-      const int colour = forward ? step : 3 - step;
-      const int rowParity = colour >> 1;
-      ForRows((l.Height + 1 - rowParity) / 2,
-              parallel,
-              [&](long h0, long h1)
+      SmoothRow<true>(l, y, forward ? 0 : 1);
+      SmoothRow<true>(l, y, forward ? 1 : 0);
+    };
+    ForRows(l.Height,
+            l.IsParallel(),
+            [&](long y0, long y1)
+            {
+              if (forward)
               {
-                for (long h = h0; h < h1; ++h)
+                for (long y = y0; y < y1; ++y)
                 {
-                  SmoothRow<true>(l, 2 * h + rowParity, colour & 1);
+                  if (y % 2 == firstParity)
+                  {
+                    pair(y);
+                    if (y - 1 > y0)
+                    {
+                      pair(y - 1);
+                    }
+                  }
                 }
-              });
-    }
+              }
+              else
+              {
+                for (long y = y1 - 1; y >= y0; --y)
+                {
+                  if (y % 2 == firstParity)
+                  {
+                    pair(y);
+                    if (y + 1 < y1 - 1)
+                    {
+                      pair(y + 1);
+                    }
+                  }
+                }
+              }
+            });
+    ForRows(l.Height,
+            l.IsParallel(),
+            [&](long y0, long y1)
+            {
+              if (y0 % 2 != firstParity)
+              {
+                pair(y0);
+              }
+              if (y1 - 1 > y0 && (y1 - 1) % 2 != firstParity)
+              {
+                pair(y1 - 1);
+              }
+            });
   }
 
   /** A red-black Gauss-Seidel sweep of the 5-point level \a l in one pass over memory: colour \a first on row y,
