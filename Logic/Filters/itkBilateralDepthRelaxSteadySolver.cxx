@@ -190,7 +190,7 @@ using NineOffsets = std::make_integer_sequence<int, 9>;
 
 /** P(p, K) for the fine point p = 2K + (OX, OY), read from the coarse level \a c at K's index \a k. */
 template<int OX, int OY>
-inline float
+[[gnu::always_inline]] inline float
 Interpolation(const Level & c, long k)
 {
   const long s = c.Stride;
@@ -226,7 +226,7 @@ Interpolation(const Level & c, long k)
 
 /** A(p, p + (DX, DY)) on level \a f. */
 template<bool NinePoint, int DX, int DY>
-inline float
+[[gnu::always_inline]] inline float
 OperatorEntry(const Level & f, long p)
 {
   if constexpr (DX == 0 && DY == 0)
@@ -243,38 +243,54 @@ OperatorEntry(const Level & f, long p)
   }
 }
 
+/** Fine point p's term of GalerkinEntry for its stencil offset D (0 to 8, (dx, dy) = (D % 3 - 1, D / 3 - 1)):
+ * A(p, q) P(q, K + L) for q = p + (dx, dy) in K + L's support, else 0. p = 2K + (OX, OY); \a kl is K + L's index. */
+template<bool NinePoint, int LX, int LY, int OX, int OY, int D>
+[[gnu::always_inline]] inline double
+GalerkinTerm(const Level & f, const Level & c, long kl, long p)
+{
+  constexpr int dx = D % 3 - 1;
+  constexpr int dy = D / 3 - 1;
+  constexpr int qx = OX + dx - 2 * LX;
+  constexpr int qy = OY + dy - 2 * LY;
+  if constexpr ((NinePoint || dx == 0 || dy == 0) && qx >= -1 && qx <= 1 && qy >= -1 && qy <= 1)
+  {
+    return static_cast<double>(OperatorEntry<NinePoint, dx, dy>(f, p)) * Interpolation<qx, qy>(c, kl);
+  }
+  else
+  {
+    return 0.0;
+  }
+}
+
+/** Fine point p = 2K + (O % 3 - 1, O / 3 - 1)'s share of GalerkinEntry: P(p, K) times the sum of its terms. */
+template<bool NinePoint, int LX, int LY, int O, int... D>
+[[gnu::always_inline]] inline double
+GalerkinShare(const Level & f, const Level & c, long k, long kl, long p0, std::integer_sequence<int, D...>)
+{
+  constexpr int ox = O % 3 - 1;
+  constexpr int oy = O / 3 - 1;
+  const long    p = p0 + ox + oy * f.Stride;
+  const double  row = (0.0 + ... + GalerkinTerm<NinePoint, LX, LY, ox, oy, D>(f, c, kl, p));
+  return static_cast<double>(Interpolation<ox, oy>(c, k)) * row;
+}
+
+template<bool NinePoint, int LX, int LY, int... O>
+[[gnu::always_inline]] inline double
+GalerkinSum(const Level & f, const Level & c, long k, long p0, std::integer_sequence<int, O...>)
+{
+  const long kl = k + LX + LY * c.Stride;
+  return (0.0 + ... + GalerkinShare<NinePoint, LX, LY, O>(f, c, k, kl, p0, NineOffsets{}));
+}
+
 /** The Galerkin coarse operator's entry A_c(K, K + (LX, LY)) = sum over fine p, q of P(p, K) A(p, q) P(q, K + L),
- * p in K's 3 x 3 support, q a stencil neighbour of p in K + L's support. */
+ * p in K's 3 x 3 support, q a stencil neighbour of p in K + L's support. Written as folds over compile-time offsets,
+ * not loops, so that a row of coarse points becomes vector operations. */
 template<bool NinePoint, int LX, int LY>
-inline double
+[[gnu::always_inline]] inline double
 GalerkinEntry(const Level & f, const Level & c, long k, long p0)
 {
-  double     sum = 0.0;
-  const long kl = k + LX + LY * c.Stride;
-  ForEachOf(NineOffsets{},
-            [&](auto o)
-            {
-              constexpr int ox = decltype(o)::value % 3 - 1;
-              constexpr int oy = decltype(o)::value / 3 - 1;
-              const long    p = p0 + ox + oy * f.Stride;
-              const double  pk = Interpolation<ox, oy>(c, k);
-              double        row = 0.0;
-              ForEachOf(NineOffsets{},
-                        [&](auto d)
-                        {
-                          constexpr int dx = decltype(d)::value % 3 - 1;
-                          constexpr int dy = decltype(d)::value / 3 - 1;
-                          constexpr int qx = ox + dx - 2 * LX;
-                          constexpr int qy = oy + dy - 2 * LY;
-                          if constexpr ((NinePoint || dx == 0 || dy == 0) && qx >= -1 && qx <= 1 && qy >= -1 && qy <= 1)
-                          {
-                            row += static_cast<double>(OperatorEntry<NinePoint, dx, dy>(f, p)) *
-                                   Interpolation<qx, qy>(c, kl);
-                          }
-                        });
-              sum += pk * row;
-            });
-  return sum;
+  return GalerkinSum<NinePoint, LX, LY>(f, c, k, p0, NineOffsets{});
 }
 
 /** Interpolation weights of coarse row \a J from the operator of the finer level \a f, following the weights: a
@@ -380,27 +396,44 @@ BuildCentreInterpolationRow(const Level & f, Level & c, long J)
   }
 }
 
+/** Coarse row \a J's operator. Each coarse point's entries read the interpolation and the finer operator only and
+ * write that point's own entries, so no point of the row depends on another (ivdep tells the vectoriser so). An
+ * inactive point has no interpolation to or from it, so its entries come out 0 without a test. */
 template<bool NinePoint>
-void
-BuildGalerkinRow(const Level & f, Level & c, long J)
+[[gnu::always_inline]] inline void
+BuildGalerkinRowOf(const Level & f, Level & c, long J)
 {
-  for (long I = 0; I < c.Width; ++I)
+  const long k0 = c.At(0, J);
+  const long p00 = f.At(0, 2 * J);
+  const long width = c.Width;
+#pragma GCC ivdep
+  for (long I = 0; I < width; ++I)
   {
-    const long k = c.At(I, J);
-    if (c.Active[k] == 0.0f)
-    {
-      c.C[k] = c.Inverse[k] = c.E[k] = c.N[k] = c.NE[k] = c.NW[k] = 0.0f;
-      continue;
-    }
-    const long   p0 = f.At(2 * I, 2 * J);
+    const long   k = k0 + I;
+    const long   p0 = p00 + 2 * I;
     const double diagonal = GalerkinEntry<NinePoint, 0, 0>(f, c, k, p0);
-    c.C[k] = diagonal > 0.0 ? static_cast<float>(diagonal) : 0.0f;
-    c.Inverse[k] = diagonal > 0.0 ? static_cast<float>(1.0 / diagonal) : 0.0f;
-    c.E[k] = static_cast<float>(-GalerkinEntry<NinePoint, 1, 0>(f, c, k, p0));
-    c.N[k] = static_cast<float>(-GalerkinEntry<NinePoint, 0, 1>(f, c, k, p0));
-    c.NE[k] = static_cast<float>(-GalerkinEntry<NinePoint, 1, 1>(f, c, k, p0));
-    c.NW[k] = static_cast<float>(-GalerkinEntry<NinePoint, -1, 1>(f, c, k, p0));
+    const bool   live = diagonal > 0.0;
+    const double inverse = 1.0 / (live ? diagonal : 1.0);
+    c.C[k] = live ? static_cast<float>(diagonal) : 0.0f;
+    c.Inverse[k] = live ? static_cast<float>(inverse) : 0.0f;
+    // 0 - entry, not -entry: an inactive point's couplings are +0.
+    c.E[k] = static_cast<float>(0.0 - GalerkinEntry<NinePoint, 1, 0>(f, c, k, p0));
+    c.N[k] = static_cast<float>(0.0 - GalerkinEntry<NinePoint, 0, 1>(f, c, k, p0));
+    c.NE[k] = static_cast<float>(0.0 - GalerkinEntry<NinePoint, 1, 1>(f, c, k, p0));
+    c.NW[k] = static_cast<float>(0.0 - GalerkinEntry<NinePoint, -1, 1>(f, c, k, p0));
   }
+}
+
+/** BuildGalerkinRowOf from the finest (5-point) and from a 9-point level, each compiled for every instruction set. */
+VR_ROW_LOOP void
+BuildGalerkinRowFrom5(const Level & f, Level & c, long J)
+{
+  BuildGalerkinRowOf<false>(f, c, J);
+}
+VR_ROW_LOOP void
+BuildGalerkinRowFrom9(const Level & f, Level & c, long J)
+{
+  BuildGalerkinRowOf<true>(f, c, J);
 }
 
 // The row loops below take raw pointers and plain numbers only, so that the compiler sees unit strides, no aliasing
@@ -1523,7 +1556,7 @@ public:
               {
                 for (long J = J0; J < J1; ++J)
                 {
-                  f.NinePoint ? BuildGalerkinRow<true>(f, c, J) : BuildGalerkinRow<false>(f, c, J);
+                  f.NinePoint ? BuildGalerkinRowFrom9(f, c, J) : BuildGalerkinRowFrom5(f, c, J);
                 }
               });
       ++count;
