@@ -99,7 +99,7 @@ struct Level
   bool NinePoint{ false };
 
   float * C{}, *Inverse{}, *E{}, *N{}, *NE{}, *NW{};
-  float * X{}, *B{}, *R{};
+  float * X{}, *B{};
   float * XA{}, *XB{}, *YA{}, *YB{}, *Q0{}, *Q1{}, *Q2{}, *Q3{};
   float * Active{}; // coarse levels: 1 where the point is active (its fine C point is), else 0
 
@@ -129,7 +129,7 @@ struct Level
     Height = height;
     Stride = PaddedStride(width);
     NinePoint = coarse;
-    Storage.resize(18);
+    Storage.resize(17);
     std::size_t next = 0;
     bool        fresh = false;
     auto        take = [&]() { return Storage[next++].Reserve(Size(), fresh); };
@@ -137,7 +137,6 @@ struct Level
     Inverse = take();
     E = take();
     N = take();
-    R = take();
     if (coarse)
     {
       NE = take();
@@ -645,64 +644,56 @@ SmoothRow(const Level & l, long y, long first)
   }
 }
 
-/** r = b - A x on rows [y0, y1) of level \a l. */
+/** r = b - A x on row \a y of level \a l, into \a r (the row's Width values). */
 template<bool NinePoint>
 void
-ResidualRows(const Level & l, long y0, long y1)
+ResidualRowInto(const Level & l, long y, float * r)
 {
   const long s = l.Stride;
-  for (long y = y0; y < y1; ++y)
+  const long p = l.At(0, y);
+  if constexpr (NinePoint)
   {
-    const long p = l.At(0, y);
-    if constexpr (NinePoint)
-    {
-      ResidualRow9(l.R + p,
-                   l.X + p,
-                   l.X + p + s,
-                   l.X + p - s,
-                   l.B + p,
-                   l.C + p,
-                   l.E + p,
-                   l.N + p,
-                   l.N + p - s,
-                   l.NE + p,
-                   l.NE + p - s,
-                   l.NW + p,
-                   l.NW + p - s,
-                   l.Width);
-    }
-    else
-    {
-      ResidualRow5(
-        l.R + p, l.X + p, l.X + p + s, l.X + p - s, l.B + p, l.C + p, l.E + p, l.N + p, l.N + p - s, l.Width);
-    }
+    ResidualRow9(r,
+                 l.X + p,
+                 l.X + p + s,
+                 l.X + p - s,
+                 l.B + p,
+                 l.C + p,
+                 l.E + p,
+                 l.N + p,
+                 l.N + p - s,
+                 l.NE + p,
+                 l.NE + p - s,
+                 l.NW + p,
+                 l.NW + p - s,
+                 l.Width);
+  }
+  else
+  {
+    ResidualRow5(r, l.X + p, l.X + p + s, l.X + p - s, l.B + p, l.C + p, l.E + p, l.N + p, l.N + p - s, l.Width);
   }
 }
 
-/** b_c = P^T r_f on coarse rows [J0, J1). */
+/** Coarse row \a J of b_c = P^T r_f, from the fine residual rows 2J (\a r), 2J + 1 (\a rAbove) and 2J - 1
+ * (\a rBelow). */
 void
-RestrictRows(const Level & f, const Level & c, long J0, long J1)
+RestrictRowOf(const Level & c, long J, const float * r, const float * rAbove, const float * rBelow)
 {
-  const long fs = f.Stride;
   const long cs = c.Stride;
-  for (long J = J0; J < J1; ++J)
-  {
-    const long k = c.At(0, J);
-    const long p = f.At(0, 2 * J);
-    RestrictRow(c.B + k,
-                f.R + p,
-                f.R + p + fs,
-                f.R + p - fs,
-                c.XA + k,
-                c.XB + k,
-                c.YA + k,
-                c.YB + k - cs,
-                c.Q0 + k,
-                c.Q1 + k,
-                c.Q2 + k - cs,
-                c.Q3 + k - cs,
-                c.Width);
-  }
+  const long k = c.At(0, J);
+  RestrictRow(c.B + k,
+              r,
+              rAbove,
+              rBelow,
+              c.XA + k,
+              c.XB + k,
+              c.YA + k,
+              c.YB + k - cs,
+              c.Q0 + k,
+              c.Q1 + k,
+              c.Q2 + k - cs,
+              c.Q3 + k - cs,
+              c.Width);
 }
 
 /** x_f += P x_c on coarse rows [J0, J1) (fine rows 2 J0 to 2 J1). */
@@ -1129,6 +1120,7 @@ struct SolverBuffers
   Array<float>               WeightRight, WeightDown, Fixed, Active;
   Array<float>               Residual, Z, Delta, Direction, Product;
   Array<float>               HessianC, HessianE, HessianN, Saved;
+  std::vector<float>         ResidualRows;
   std::vector<double>        RowSums;
   std::vector<std::uint64_t> RowSignatures;
   std::vector<double>        RowMaxima;
@@ -1240,6 +1232,8 @@ public:
     m_HessianN = buffers.HessianN.Reserve(size, fresh);
     m_Saved = buffers.Saved.Reserve(size, fresh);
     buffers.RowSums.assign(static_cast<std::size_t>(height), 0.0);
+    // Three residual rows per team member for ResidualAndRestrict, zero-padded; the finest level's are the widest.
+    buffers.ResidualRows.assign(static_cast<std::size_t>(3 * m_Stride) * m_Team.GetSize(), 0.0f);
     buffers.RowSignatures.assign(static_cast<std::size_t>(height), 0);
     buffers.RowMaxima.assign(static_cast<std::size_t>(height), 0.0);
     buffers.Levels.resize(std::max<std::size_t>(1, buffers.Levels.size()));
@@ -1266,6 +1260,30 @@ public:
       static_cast<std::size_t>(rows),
       [&](std::size_t begin, std::size_t end) { job(static_cast<long>(begin), static_cast<long>(end)); },
       parallel);
+  }
+
+  /** Runs \a job(member, begin, end) on the same bands of rows [0, rows) as ForRows, with the team member that
+   * works each band (0 for all of them when not \a parallel). */
+  template<typename TJob>
+  void
+  ForRowsOfMembers(long rows, bool parallel, const TJob & job)
+  {
+    const long size = m_Team.GetSize();
+    if (!parallel || size == 1 || rows < 2)
+    {
+      job(0u, 0L, rows);
+      return;
+    }
+    m_Team.Run(
+      [&](unsigned int member)
+      {
+        const long begin = rows * member / size;
+        const long end = rows * (member + 1) / size;
+        if (begin < end)
+        {
+          job(member, begin, end);
+        }
+      });
   }
 
   void
@@ -1831,34 +1849,43 @@ public:
             });
   }
 
-  /** b_c = P^T (b_f - A_f x_f): the residual of fine rows 2J and 2J + 1 and at once the restriction of coarse row
-   * J, which also needs fine row 2J - 1; a band's first coarse row waits for the band below, in a second step. */
+  /** b_c = P^T (b_f - A_f x_f). Coarse row J needs the fine residual of rows 2J - 1 to 2J + 1; each member of the
+   * team computes them into three rows of its own as it goes up its band (its first coarse row computes row 2J - 1
+   * too, which the band below computes as well), so the residual never goes through memory and no band waits for
+   * another. */
   void
   ResidualAndRestrict(const Level & f, const Level & c)
   {
-    const bool parallel = f.IsParallel();
-    auto       residual = [&](long y)
-    {
-      if (y < f.Height)
-      {
-        f.NinePoint ? ResidualRows<true>(f, y, y + 1) : ResidualRows<false>(f, y, y + 1);
-      }
-    };
-    ForRows(c.Height,
-            parallel,
-            [&](long J0, long J1)
-            {
-              for (long J = J0; J < J1; ++J)
-              {
-                residual(2 * J);
-                residual(2 * J + 1);
-                if (J > J0)
-                {
-                  RestrictRows(f, c, J, J + 1);
-                }
-              }
-            });
-    ForRows(c.Height, parallel, [&](long J0, long) { RestrictRows(f, c, J0, J0 + 1); });
+    const long stride = f.Stride;
+    float *    scratch = m_Buffers.ResidualRows.data();
+    ForRowsOfMembers(c.Height,
+                     f.IsParallel(),
+                     [&](unsigned int member, long J0, long J1)
+                     {
+                       // Three zero-padded rows: RestrictRow reads one column beyond each end.
+                       float * below = scratch + 3 * stride * member + 1;
+                       float * middle = below + stride;
+                       float * above = middle + stride;
+                       auto    residual = [&](long y, float * r)
+                       {
+                         if (y < 0 || y >= f.Height)
+                         {
+                           std::fill(r, r + f.Width, 0.0f);
+                         }
+                         else
+                         {
+                           f.NinePoint ? ResidualRowInto<true>(f, y, r) : ResidualRowInto<false>(f, y, r);
+                         }
+                       };
+                       residual(2 * J0 - 1, below);
+                       for (long J = J0; J < J1; ++J)
+                       {
+                         residual(2 * J, middle);
+                         residual(2 * J + 1, above);
+                         RestrictRowOf(c, J, middle, above, below);
+                         std::swap(below, above);
+                       }
+                     });
   }
 
   /** One V(1,1)-cycle from level \a k down: x_k = M^-1 b_k, x_k starting at 0. */
