@@ -1118,9 +1118,9 @@ struct SolverBuffers
   std::vector<Level>         Levels;
   Array<double>              Depth;
   Array<float>               WeightRight, WeightDown, Fixed, Active;
-  Array<float>               Residual, Z, Delta, Direction, Product;
+  Array<float>               Residual, Z, Delta, Direction;
   Array<float>               HessianC, HessianE, HessianN, Saved;
-  std::vector<float>         ResidualRows;
+  std::vector<float>         ResidualRows, ScratchRows;
   std::vector<double>        RowSums;
   std::vector<std::uint64_t> RowSignatures;
   std::vector<double>        RowMaxima;
@@ -1226,7 +1226,6 @@ public:
     m_Z = buffers.Z.Reserve(size, fresh);
     m_Delta = buffers.Delta.Reserve(size, fresh);
     m_Direction = buffers.Direction.Reserve(size, fresh);
-    m_Product = buffers.Product.Reserve(size, fresh);
     m_HessianC = buffers.HessianC.Reserve(size, fresh);
     m_HessianE = buffers.HessianE.Reserve(size, fresh);
     m_HessianN = buffers.HessianN.Reserve(size, fresh);
@@ -1234,6 +1233,7 @@ public:
     buffers.RowSums.assign(static_cast<std::size_t>(height), 0.0);
     // Three residual rows per team member for ResidualAndRestrict, zero-padded; the finest level's are the widest.
     buffers.ResidualRows.assign(static_cast<std::size_t>(3 * m_Stride) * m_Team.GetSize(), 0.0f);
+    buffers.ScratchRows.assign(static_cast<std::size_t>(m_Stride) * m_Team.GetSize(), 0.0f);
     buffers.RowSignatures.assign(static_cast<std::size_t>(height), 0);
     buffers.RowMaxima.assign(static_cast<std::size_t>(height), 0.0);
     buffers.Levels.resize(std::max<std::size_t>(1, buffers.Levels.size()));
@@ -1932,27 +1932,36 @@ public:
     ++m_Cycles;
   }
 
-  /** sum over rows of \a rowSum(y), each row's sum formed independently and the rows added in order. */
+  /** sum over rows of \a rowSum(y, scratch), each row's sum formed independently and the rows added in order;
+   * \a scratch is a row of Width floats of the thread's own, for values the row's sum needs only while it is formed. */
   template<typename TRowSum>
   double
   SumRows(const TRowSum & rowSum)
   {
     std::vector<double> & rows = m_Buffers.RowSums;
-    ForRows(m_Height,
-            true,
-            [&](long y0, long y1)
-            {
-              for (long y = y0; y < y1; ++y)
-              {
-                rows[static_cast<std::size_t>(y)] = rowSum(y);
-              }
-            });
+    ForRowsOfMembers(m_Height,
+                     true,
+                     [&](unsigned int member, long y0, long y1)
+                     {
+                       float * scratch = ScratchRow(member);
+                       for (long y = y0; y < y1; ++y)
+                       {
+                         rows[static_cast<std::size_t>(y)] = rowSum(y, scratch);
+                       }
+                     });
     double sum = 0.0;
     for (const double value : rows)
     {
       sum += value;
     }
     return sum;
+  }
+
+  /** Team member \a member's scratch row. */
+  float *
+  ScratchRow(unsigned int member)
+  {
+    return m_Buffers.ScratchRows.data() + static_cast<std::size_t>(m_Stride) * member;
   }
 
   /** Conjugate gradients on the finest level, preconditioned by V-cycles of the lagged-weights operator, until
@@ -1974,7 +1983,7 @@ public:
     std::vector<double> & maxima = m_Buffers.RowMaxima;
     Precondition();
     double rz = SumRows(
-      [&](long y)
+      [&](long y, float *)
       {
         const long row = At(0, y);
         std::copy(m_Z + row, m_Z + row + width, m_Direction + row);
@@ -1983,20 +1992,26 @@ public:
       });
     for (unsigned int iteration = 0; iteration < MaximumInnerIterations; ++iteration)
     {
+      // A v row by row into the thread's scratch row, here for its dot product and again in the update below:
+      // computing it twice costs less than writing it out and reading it back.
+      auto applyRow = [&](long y, float * product)
+      {
+        const long row = At(0, y);
+        ApplyRow5(product,
+                  m_Direction + row,
+                  m_Direction + row + s,
+                  m_Direction + row - s,
+                  opC + row,
+                  opE + row,
+                  opN + row,
+                  opN + row - s,
+                  width);
+      };
       const double curvature = SumRows(
-        [&](long y)
+        [&](long y, float * product)
         {
-          const long row = At(0, y);
-          ApplyRow5(m_Product + row,
-                    m_Direction + row,
-                    m_Direction + row + s,
-                    m_Direction + row - s,
-                    opC + row,
-                    opE + row,
-                    opN + row,
-                    opN + row - s,
-                    width);
-          return RowDot(m_Direction + row, m_Product + row, width);
+          applyRow(y, product);
+          return RowDot(m_Direction + At(0, y), product, width);
         });
       m_NegativeCurvature = newton && !(curvature > 0.0) && rz > 0.0;
       if (m_NegativeCurvature)
@@ -2008,24 +2023,26 @@ public:
         break;
       }
       const float alpha = static_cast<float>(rz / curvature);
-      ForRows(m_Height,
-              true,
-              [&](long y0, long y1)
-              {
-                for (long y = y0; y < y1; ++y)
-                {
-                  const long row = At(0, y);
-                  UpdateRow(m_Delta + row, m_Residual + row, m_Direction + row, m_Product + row, alpha, width);
-                  maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, width);
-                }
-              });
+      ForRowsOfMembers(m_Height,
+                       true,
+                       [&](unsigned int member, long y0, long y1)
+                       {
+                         float * product = ScratchRow(member);
+                         for (long y = y0; y < y1; ++y)
+                         {
+                           const long row = At(0, y);
+                           applyRow(y, product);
+                           UpdateRow(m_Delta + row, m_Residual + row, m_Direction + row, product, alpha, width);
+                           maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, width);
+                         }
+                       });
       if (*std::max_element(maxima.begin(), maxima.end()) <= target)
       {
         break;
       }
       Precondition();
       const double rzNext = SumRows(
-        [&](long y)
+        [&](long y, float *)
         {
           const long row = At(0, y);
           return RowDot(m_Residual + row, m_Z + row, width);
@@ -2052,7 +2069,7 @@ public:
   {
     const float anisotropy = 0.5f * m_TwiceAnisotropy;
     return SumRows(
-      [&](long y)
+      [&](long y, float * scratch)
       {
         const long row = At(0, y);
         const bool last = y + 1 == m_Height;
@@ -2063,7 +2080,7 @@ public:
                                step,
                                anisotropy,
                                m_Scale,
-                               m_Product + row,
+                               scratch,
                                m_Width);
       });
   }
@@ -2293,7 +2310,6 @@ private:
   float *  m_Z;
   float *  m_Delta;
   float *  m_Direction;
-  float *  m_Product;
   float *  m_HessianC;
   float *  m_HessianE;
   float *  m_HessianN;
