@@ -98,7 +98,7 @@ struct Level
   long Stride{ 0 };
   bool NinePoint{ false };
 
-  float * C{}, *Inverse{}, *E{}, *N{}, *NE{}, *NW{};
+  float * C{}, *E{}, *N{}, *NE{}, *NW{};
   float * X{}, *B{};
   float * XA{}, *XB{}, *YA{}, *YB{}, *Q0{}, *Q1{}, *Q2{}, *Q3{};
   float * Active{}; // coarse levels: 1 where the point is active (its fine C point is), else 0
@@ -129,12 +129,11 @@ struct Level
     Height = height;
     Stride = PaddedStride(width);
     NinePoint = coarse;
-    Storage.resize(17);
+    Storage.resize(16);
     std::size_t next = 0;
     bool        fresh = false;
     auto        take = [&]() { return Storage[next++].Reserve(Size(), fresh); };
     C = take();
-    Inverse = take();
     E = take();
     N = take();
     if (coarse)
@@ -411,10 +410,7 @@ BuildGalerkinRowOf(const Level & f, Level & c, long J)
     const long   k = k0 + I;
     const long   p0 = p00 + 2 * I;
     const double diagonal = GalerkinEntry<NinePoint, 0, 0>(f, c, k, p0);
-    const bool   live = diagonal > 0.0;
-    const double inverse = 1.0 / (live ? diagonal : 1.0);
-    c.C[k] = live ? static_cast<float>(diagonal) : 0.0f;
-    c.Inverse[k] = live ? static_cast<float>(inverse) : 0.0f;
+    c.C[k] = diagonal > 0.0 ? static_cast<float>(diagonal) : 0.0f;
     // 0 - entry, not -entry: an inactive point's couplings are +0.
     c.E[k] = static_cast<float>(0.0 - GalerkinEntry<NinePoint, 1, 0>(f, c, k, p0));
     c.N[k] = static_cast<float>(0.0 - GalerkinEntry<NinePoint, 0, 1>(f, c, k, p0));
@@ -438,6 +434,16 @@ BuildGalerkinRowFrom9(const Level & f, Level & c, long J)
 // The row loops below take raw pointers and plain numbers only, so that the compiler sees unit strides, no aliasing
 // and loop-invariant bounds, and turns each into vector operations.
 
+/** value / C_p at an active point (C_p > 0; one below FLT_MIN taken as FLT_MIN, so that nothing overflows), 0 at an
+ * inactive one (C_p = 0). Divided where needed rather than multiplied by stored inverses: the solver is bound by
+ * memory traffic, and an array of inverses per level cost more to stream than the divisions. */
+inline float
+DividedByDiagonal(float value, float diagonal)
+{
+  const float quotient = value / std::max(diagonal, std::numeric_limits<float>::min());
+  return diagonal > 0.0f ? quotient : 0.0f;
+}
+
 /** Gauss-Seidel on every other point of a 5-point row from column \a first: x_p = (b_p + sum w_pq x_q) / C_p.
  * The points updated are never each other's neighbours, so the row is one vector operation. */
 VR_ROW_LOOP void
@@ -448,28 +454,24 @@ SmoothRow5(float * __restrict x,
            const float * __restrict e,
            const float * __restrict n,
            const float * __restrict nBelow,
-           const float * __restrict inverse,
+           const float * __restrict c,
            long first,
            long width)
 {
   for (long i = first; i < width; i += 2)
   {
     const float sum = b[i] + e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i];
-    x[i] = sum * inverse[i];
+    x[i] = DividedByDiagonal(sum, c[i]);
   }
 }
 
 /** The first colour of a Gauss-Seidel sweep that starts from x = 0: the neighbours are all 0, so x_p = b_p / C_p. */
 VR_ROW_LOOP void
-SmoothRowFromZero(float * __restrict x,
-                  const float * __restrict b,
-                  const float * __restrict inverse,
-                  long first,
-                  long width)
+SmoothRowFromZero(float * __restrict x, const float * __restrict b, const float * __restrict c, long first, long width)
 {
   for (long i = first; i < width; i += 2)
   {
-    x[i] = b[i] * inverse[i];
+    x[i] = DividedByDiagonal(b[i], c[i]);
   }
 }
 
@@ -486,7 +488,7 @@ SmoothRow9(float * __restrict x,
            const float * __restrict neBelow,
            const float * __restrict nw,
            const float * __restrict nwBelow,
-           const float * __restrict inverse,
+           const float * __restrict c,
            long first,
            long width)
 {
@@ -495,7 +497,7 @@ SmoothRow9(float * __restrict x,
     const float sum = b[i] + e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i] +
                       ne[i] * above[i + 1] + neBelow[i - 1] * below[i - 1] + nw[i] * above[i - 1] +
                       nwBelow[i + 1] * below[i + 1];
-    x[i] = sum * inverse[i];
+    x[i] = DividedByDiagonal(sum, c[i]);
   }
 }
 
@@ -633,14 +635,13 @@ SmoothRow(const Level & l, long y, long first)
                l.NE + p - s,
                l.NW + p,
                l.NW + p - s,
-               l.Inverse + p,
+               l.C + p,
                first,
                l.Width);
   }
   else
   {
-    SmoothRow5(
-      l.X + p, l.X + p + s, l.X + p - s, l.B + p, l.E + p, l.N + p, l.N + p - s, l.Inverse + p, first, l.Width);
+    SmoothRow5(l.X + p, l.X + p + s, l.X + p - s, l.B + p, l.E + p, l.N + p, l.N + p - s, l.C + p, first, l.Width);
   }
 }
 
@@ -813,12 +814,10 @@ VR_ROW_LOOP std::uint64_t
 }
 
 /** One row of the finest level's operator and residual (see SteadySolve::Assemble), and with \a Hessian the energy's
- * Hessian too. A weight sum below FLT_MIN (every weight all but underflowing) is inverted as FLT_MIN, so that no
- * inverse overflows. */
+ * Hessian too. */
 template<bool Hessian>
 [[gnu::always_inline]] inline void
 AssembleRow(float * __restrict c,
-            float * __restrict inverse,
             float * __restrict e,
             float * __restrict n,
             float * __restrict hc,
@@ -836,7 +835,6 @@ AssembleRow(float * __restrict c,
             float twiceAnisotropy,
             long  width)
 {
-  constexpr float Smallest = std::numeric_limits<float>::min();
   for (long x = 0; x < width; ++x)
   {
     const float toRight = static_cast<float>(d[x + 1] - d[x]);
@@ -847,7 +845,6 @@ AssembleRow(float * __restrict c,
     const float flux = right[x] * toRight + right[x - 1] * toLeft + down[x] * toAbove + up[x] * toBelow;
     const float live = diagonal > 0.0f ? 1.0f : 0.0f;
     c[x] = diagonal;
-    inverse[x] = live / std::max(diagonal, Smallest);
     e[x] = right[x] * active[x] * active[x + 1];
     n[x] = down[x] * active[x] * activeAbove[x];
     residual[x] = flux * live;
@@ -868,7 +865,6 @@ AssembleRow(float * __restrict c,
 /** AssembleRow without and with the Hessian, each compiled for every instruction set. */
 VR_ROW_LOOP void
 AssembleOperatorRow(float * __restrict c,
-                    float * __restrict inverse,
                     float * __restrict e,
                     float * __restrict n,
                     float * __restrict hc,
@@ -886,28 +882,11 @@ AssembleOperatorRow(float * __restrict c,
                     float twiceAnisotropy,
                     long  width)
 {
-  AssembleRow<false>(c,
-                     inverse,
-                     e,
-                     n,
-                     hc,
-                     he,
-                     hn,
-                     residual,
-                     d,
-                     dAbove,
-                     dBelow,
-                     active,
-                     activeAbove,
-                     right,
-                     down,
-                     up,
-                     twiceAnisotropy,
-                     width);
+  AssembleRow<false>(
+    c, e, n, hc, he, hn, residual, d, dAbove, dBelow, active, activeAbove, right, down, up, twiceAnisotropy, width);
 }
 VR_ROW_LOOP void
 AssembleOperatorAndHessianRow(float * __restrict c,
-                              float * __restrict inverse,
                               float * __restrict e,
                               float * __restrict n,
                               float * __restrict hc,
@@ -925,24 +904,8 @@ AssembleOperatorAndHessianRow(float * __restrict c,
                               float twiceAnisotropy,
                               long  width)
 {
-  AssembleRow<true>(c,
-                    inverse,
-                    e,
-                    n,
-                    hc,
-                    he,
-                    hn,
-                    residual,
-                    d,
-                    dAbove,
-                    dBelow,
-                    active,
-                    activeAbove,
-                    right,
-                    down,
-                    up,
-                    twiceAnisotropy,
-                    width);
+  AssembleRow<true>(
+    c, e, n, hc, he, hn, residual, d, dAbove, dBelow, active, activeAbove, right, down, up, twiceAnisotropy, width);
 }
 
 /** delta += alpha v, r -= alpha q on a row. */
@@ -1177,6 +1140,33 @@ RowMaximum(const float * __restrict r, const float * __restrict s, long count)
   for (long j = 0; i < count; ++i, ++j)
   {
     const float value = std::abs(r[i]) * s[i];
+    lanes[j] = lanes[j] > value ? lanes[j] : value;
+  }
+  float largest = 0.0f;
+  for (long j = 0; j < Lanes; ++j)
+  {
+    largest = largest > lanes[j] ? largest : lanes[j];
+  }
+  return largest;
+}
+
+/** max |r[i]| / c[i] over a row's active points (see DividedByDiagonal), in Lanes partial maxima. */
+VR_ROW_LOOP float
+RowMaximumOverDiagonal(const float * __restrict r, const float * __restrict c, long count)
+{
+  float lanes[Lanes] = {};
+  long  i = 0;
+  for (; i + Lanes <= count; i += Lanes)
+  {
+    for (long j = 0; j < Lanes; ++j)
+    {
+      const float value = DividedByDiagonal(std::abs(r[i + j]), c[i + j]);
+      lanes[j] = lanes[j] > value ? lanes[j] : value;
+    }
+  }
+  for (long j = 0; i < count; ++i, ++j)
+  {
+    const float value = DividedByDiagonal(std::abs(r[i]), c[i]);
     lanes[j] = lanes[j] > value ? lanes[j] : value;
   }
   float largest = 0.0f;
@@ -1498,7 +1488,6 @@ public:
               {
                 const long row = At(0, y);
                 (hessian ? AssembleOperatorAndHessianRow : AssembleOperatorRow)(l.C + row,
-                                                                                l.Inverse + row,
                                                                                 l.E + row,
                                                                                 l.N + row,
                                                                                 m_HessianC + row,
@@ -1515,7 +1504,7 @@ public:
                                                                                 m_WeightDown + row - s,
                                                                                 m_TwiceAnisotropy,
                                                                                 m_Width);
-                maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, m_Width);
+                maxima[static_cast<std::size_t>(y)] = RowMaximumOverDiagonal(m_Residual + row, l.C + row, m_Width);
               }
             });
     return *std::max_element(maxima.begin(), maxima.end());
@@ -1807,7 +1796,7 @@ public:
       const long p = l.At(0, y);
       if (zero)
       {
-        SmoothRowFromZero(l.X + p, l.B + p, l.Inverse + p, (y + colour) & 1, l.Width);
+        SmoothRowFromZero(l.X + p, l.B + p, l.C + p, (y + colour) & 1, l.Width);
       }
       else
       {
@@ -1818,7 +1807,7 @@ public:
                    l.E + p,
                    l.N + p,
                    l.N + p - s,
-                   l.Inverse + p,
+                   l.C + p,
                    (y + colour) & 1,
                    l.Width);
       }
@@ -2033,7 +2022,8 @@ public:
                            const long row = At(0, y);
                            applyRow(y, product);
                            UpdateRow(m_Delta + row, m_Residual + row, m_Direction + row, product, alpha, width);
-                           maxima[static_cast<std::size_t>(y)] = RowMaximum(m_Residual + row, l.Inverse + row, width);
+                           maxima[static_cast<std::size_t>(y)] =
+                             RowMaximumOverDiagonal(m_Residual + row, l.C + row, width);
                          }
                        });
       if (*std::max_element(maxima.begin(), maxima.end()) <= target)

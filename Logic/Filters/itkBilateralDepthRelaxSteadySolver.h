@@ -90,7 +90,7 @@ public:
     double Residual{ 0.0 };
   };
 
-  /** Buffers kept from one solve to the next (about 68 bytes per pixel): reusing one spares allocating and first
+  /** Buffers kept from one solve to the next (about 62 bytes per pixel): reusing one spares allocating and first
    * touching them. One solve at a time per workspace. */
   class Workspace
   {
