@@ -1046,16 +1046,15 @@ public:
       m_Parent[std::max(a, b)] = std::min(a, b);
     }
   }
-  std::int32_t
-  Add()
-  {
-    m_Parent.push_back(static_cast<std::int32_t>(m_Parent.size()));
-    return m_Parent.back();
-  }
+  /** \a count regions, each its own. */
   void
-  Clear()
+  Reset(std::size_t count)
   {
-    m_Parent.clear();
+    m_Parent.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      m_Parent[k] = static_cast<std::int32_t>(k);
+    }
   }
   std::size_t
   Size() const
@@ -1089,6 +1088,7 @@ struct SolverBuffers
   std::vector<double>        RowMaxima;
   std::vector<RowRun>        Runs;
   std::vector<long>          RowRunStart;
+  std::vector<char>          RunJoined, RunFixed, RowChanged;
   Regions                    RunRegions;
   std::vector<char>          RegionAnchored;
   std::vector<double>        RegionSum, RegionPixels;
@@ -1351,65 +1351,118 @@ public:
 
   /** Marks the free pixels of regions without a fixed pixel (regions connected through non-zero weights), gives
    * each such region its mean depth, and marks every other free pixel active. Works on runs of pixels joined
-   * within their row, united with the runs they touch through a non-zero weight in the next row. Returns the
-   * floating pixel count; \a changed tells whether any pixel's activity changed. */
+   * within their row, united with the runs they touch through a non-zero weight in the next row. The passes over
+   * pixels run on bands of rows; only the union-find over runs and the means of floating regions are serial.
+   * Returns the floating pixel count; \a changed tells whether any pixel's activity changed. */
   std::size_t
   ClassifyRegions(bool & changed)
   {
     Regions &             regions = m_Buffers.RunRegions;
     std::vector<RowRun> & runs = m_Buffers.Runs;
     std::vector<long> &   rowStart = m_Buffers.RowRunStart;
-    regions.Clear();
-    runs.clear();
-    rowStart.assign(static_cast<std::size_t>(m_Height + 1), 0);
-    for (long y = 0; y < m_Height; ++y)
+    const std::size_t     rowCount = static_cast<std::size_t>(m_Height);
+    // The runs of each row (a run ends at a vanishing weight to its right or at the row's end), then their places.
+    rowStart.assign(rowCount + 1, 0);
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const float * right = m_WeightRight + At(0, y);
+                long          count = 1;
+                for (long x = 0; x + 1 < m_Width; ++x)
+                {
+                  count += right[x] == 0.0f ? 1 : 0;
+                }
+                rowStart[static_cast<std::size_t>(y) + 1] = count;
+              }
+            });
+    for (std::size_t y = 0; y < rowCount; ++y)
     {
-      rowStart[static_cast<std::size_t>(y)] = static_cast<long>(runs.size());
-      const float * right = m_WeightRight + At(0, y);
-      long          begin = 0;
-      for (long x = 0; x < m_Width; ++x)
-      {
-        if (x + 1 == m_Width || right[x] == 0.0f)
-        {
-          runs.push_back({ begin, x + 1, regions.Add() });
-          begin = x + 1;
-        }
-      }
+      rowStart[y + 1] += rowStart[y];
     }
-    rowStart[static_cast<std::size_t>(m_Height)] = static_cast<long>(runs.size());
-    for (long y = 0; y + 1 < m_Height; ++y)
+    const std::size_t   count = static_cast<std::size_t>(rowStart[rowCount]);
+    std::vector<char> & fixedRun = m_Buffers.RunFixed;
+    runs.resize(count);
+    fixedRun.assign(count, 0);
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const float * right = m_WeightRight + At(0, y);
+                const float * fixed = m_Fixed + At(0, y);
+                long          k = rowStart[static_cast<std::size_t>(y)];
+                long          begin = 0;
+                for (long x = 0; x < m_Width; ++x)
+                {
+                  if (x + 1 == m_Width || right[x] == 0.0f)
+                  {
+                    runs[static_cast<std::size_t>(k)] = { begin, x + 1, static_cast<std::int32_t>(k) };
+                    fixedRun[static_cast<std::size_t>(k)] =
+                      std::any_of(fixed + begin, fixed + x + 1, [](float value) { return value != 0.0f; });
+                    ++k;
+                    begin = x + 1;
+                  }
+                }
+              }
+            });
+    // Walks the overlapping runs of rows y and y + 1 in order. Row pair y's walk takes fewer than
+    // rowStart[y + 2] - rowStart[y] steps, so its steps can be numbered from rowStart[y] + rowStart[y + 1].
+    auto walk = [&](long y, const auto & step)
     {
-      const float *     down = m_WeightDown + At(0, y);
-      std::size_t       a = static_cast<std::size_t>(rowStart[static_cast<std::size_t>(y)]);
-      std::size_t       b = static_cast<std::size_t>(rowStart[static_cast<std::size_t>(y + 1)]);
+      const std::size_t row = static_cast<std::size_t>(y);
+      std::size_t       a = static_cast<std::size_t>(rowStart[row]);
+      std::size_t       b = static_cast<std::size_t>(rowStart[row + 1]);
       const std::size_t aEnd = b;
-      const std::size_t bEnd = static_cast<std::size_t>(rowStart[static_cast<std::size_t>(y + 2)]);
+      const std::size_t bEnd = static_cast<std::size_t>(rowStart[row + 2]);
+      std::size_t       number = static_cast<std::size_t>(rowStart[row] + rowStart[row + 1]);
       while (a < aEnd && b < bEnd)
       {
-        const long begin = std::max(runs[a].Begin, runs[b].Begin);
-        const long end = std::min(runs[a].End, runs[b].End);
-        if (std::any_of(down + begin, down + end, [](float weight) { return weight > 0.0f; }))
-        {
-          regions.Unite(runs[a].Region, runs[b].Region);
-        }
+        step(a, b, number++);
         runs[a].End < runs[b].End ? ++a : ++b;
       }
+    };
+    // Whether each such pair is joined by a non-zero weight, in parallel; then the unions, in order.
+    std::vector<char> & joined = m_Buffers.RunJoined;
+    joined.assign(2 * count, 0);
+    ForRows(m_Height - 1,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const float * down = m_WeightDown + At(0, y);
+                walk(y,
+                     [&](std::size_t a, std::size_t b, std::size_t number)
+                     {
+                       const long begin = std::max(runs[a].Begin, runs[b].Begin);
+                       const long end = std::min(runs[a].End, runs[b].End);
+                       joined[number] =
+                         std::any_of(down + begin, down + end, [](float weight) { return weight > 0.0f; });
+                     });
+              }
+            });
+    regions.Reset(count);
+    for (long y = 0; y + 1 < m_Height; ++y)
+    {
+      walk(y,
+           [&](std::size_t a, std::size_t b, std::size_t number)
+           {
+             if (joined[number])
+             {
+               regions.Unite(runs[a].Region, runs[b].Region);
+             }
+           });
     }
-    const std::size_t   count = regions.Size();
     std::vector<char> & anchored = m_Buffers.RegionAnchored;
     anchored.assign(count, 0);
-    for (long y = 0; y < m_Height; ++y)
+    for (std::size_t k = 0; k < count; ++k)
     {
-      const float * fixed = m_Fixed + At(0, y);
-      for (long k = rowStart[static_cast<std::size_t>(y)]; k < rowStart[static_cast<std::size_t>(y + 1)]; ++k)
-      {
-        RowRun & run = runs[static_cast<std::size_t>(k)];
-        run.Region = regions.Find(run.Region);
-        if (std::any_of(fixed + run.Begin, fixed + run.End, [](float value) { return value != 0.0f; }))
-        {
-          anchored[static_cast<std::size_t>(run.Region)] = 1;
-        }
-      }
+      runs[k].Region = regions.Find(runs[k].Region);
+      anchored[static_cast<std::size_t>(runs[k].Region)] |= fixedRun[k];
     }
     // The mean depth of each floating region, over its free pixels (a floating region has no fixed ones).
     std::vector<double> & sum = m_Buffers.RegionSum;
@@ -1432,41 +1485,59 @@ public:
         }
       }
     }
+    // Activity and the floating regions' means, per row; the counts per row go to RowMaxima (free until the next
+    // assembly) and are added in order.
+    std::vector<double> & rowCounts = m_Buffers.RowMaxima;
+    std::vector<char> &   rowChanged = m_Buffers.RowChanged;
+    rowChanged.assign(rowCount, 0);
+    ForRows(m_Height,
+            true,
+            [&](long y0, long y1)
+            {
+              for (long y = y0; y < y1; ++y)
+              {
+                const long    row = At(0, y);
+                const float * fixed = m_Fixed + row;
+                float *       active = m_Active + row;
+                double *      depth = m_Depth + row;
+                long          floating = 0;
+                long          changes = 0;
+                for (long k = rowStart[static_cast<std::size_t>(y)]; k < rowStart[static_cast<std::size_t>(y + 1)]; ++k)
+                {
+                  const RowRun &    run = runs[static_cast<std::size_t>(k)];
+                  const std::size_t region = static_cast<std::size_t>(run.Region);
+                  if (anchored[region])
+                  {
+                    for (long x = run.Begin; x < run.End; ++x)
+                    {
+                      const float now = 1.0f - fixed[x];
+                      changes += now != active[x];
+                      active[x] = now;
+                    }
+                  }
+                  else
+                  {
+                    const double mean = sum[region] / pixels[region];
+                    for (long x = run.Begin; x < run.End; ++x)
+                    {
+                      changes += active[x] != 0.0f;
+                      active[x] = 0.0f;
+                      depth[x] = mean;
+                    }
+                    floating += run.End - run.Begin;
+                  }
+                }
+                rowCounts[static_cast<std::size_t>(y)] = static_cast<double>(floating);
+                rowChanged[static_cast<std::size_t>(y)] = changes > 0 ? 1 : 0;
+              }
+            });
     std::size_t floating = 0;
-    std::size_t changes = 0;
-    for (long y = 0; y < m_Height; ++y)
+    changed = false;
+    for (std::size_t y = 0; y < rowCount; ++y)
     {
-      const long    row = At(0, y);
-      const float * fixed = m_Fixed + row;
-      float *       active = m_Active + row;
-      double *      depth = m_Depth + row;
-      for (long k = rowStart[static_cast<std::size_t>(y)]; k < rowStart[static_cast<std::size_t>(y + 1)]; ++k)
-      {
-        const RowRun &    run = runs[static_cast<std::size_t>(k)];
-        const std::size_t region = static_cast<std::size_t>(run.Region);
-        if (anchored[region])
-        {
-          for (long x = run.Begin; x < run.End; ++x)
-          {
-            const float now = 1.0f - fixed[x];
-            changes += now != active[x];
-            active[x] = now;
-          }
-        }
-        else
-        {
-          const double mean = sum[region] / pixels[region];
-          for (long x = run.Begin; x < run.End; ++x)
-          {
-            changes += active[x] != 0.0f;
-            active[x] = 0.0f;
-            depth[x] = mean;
-          }
-          floating += static_cast<std::size_t>(run.End - run.Begin);
-        }
-      }
+      floating += static_cast<std::size_t>(rowCounts[y]);
+      changed = changed || rowChanged[y] != 0;
     }
-    changed = changes > 0;
     return floating;
   }
 
