@@ -1279,6 +1279,9 @@ public:
   void
   Load(const float * depth, const unsigned char * fixed)
   {
+    // The input's range, per row in the same pass (into two per-row arrays free until the solve starts).
+    std::vector<double> & lowest = m_Buffers.RowSums;
+    std::vector<double> & highest = m_Buffers.RowMaxima;
     ForRows(m_Height,
             true,
             [&](long y0, long y1)
@@ -1292,11 +1295,13 @@ public:
                   m_Depth[row + x] = in[x];
                   m_Fixed[row + x] = fixed && fixed[y * m_Width + x] ? 1.0f : 0.0f;
                 }
+                const auto range = std::minmax_element(in, in + m_Width);
+                lowest[static_cast<std::size_t>(y)] = *range.first;
+                highest[static_cast<std::size_t>(y)] = *range.second;
               }
             });
-    const auto range = std::minmax_element(depth, depth + m_Width * m_Height);
-    m_Lowest = *range.first;
-    m_Highest = *range.second;
+    m_Lowest = *std::min_element(lowest.begin(), lowest.end());
+    m_Highest = *std::max_element(highest.begin(), highest.end());
   }
 
   void
