@@ -1258,22 +1258,11 @@ public:
   void
   ForRowsOfMembers(long rows, bool parallel, const TJob & job)
   {
-    const long size = m_Team.GetSize();
-    if (!parallel || size == 1 || rows < 2)
-    {
-      job(0u, 0L, rows);
-      return;
-    }
-    m_Team.Run(
-      [&](unsigned int member)
-      {
-        const long begin = rows * member / size;
-        const long end = rows * (member + 1) / size;
-        if (begin < end)
-        {
-          job(member, begin, end);
-        }
-      });
+    m_Team.ForMemberBands(
+      static_cast<std::size_t>(rows),
+      [&](unsigned int member, std::size_t begin, std::size_t end)
+      { job(member, static_cast<long>(begin), static_cast<long>(end)); },
+      parallel);
   }
 
   void

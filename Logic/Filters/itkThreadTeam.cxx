@@ -89,9 +89,18 @@ ThreadTeam::Run(const Job & job)
 void
 ThreadTeam::ForBands(std::size_t count, const std::function<void(std::size_t, std::size_t)> & job, bool parallel)
 {
+  this->ForMemberBands(
+    count, [&](unsigned int, std::size_t begin, std::size_t end) { job(begin, end); }, parallel);
+}
+
+void
+ThreadTeam::ForMemberBands(std::size_t                                                         count,
+                           const std::function<void(unsigned int, std::size_t, std::size_t)> & job,
+                           bool                                                                parallel)
+{
   if (!parallel || m_Size == 1 || count < 2)
   {
-    job(0, count);
+    job(0, 0, count);
     return;
   }
   const std::size_t size = m_Size;
@@ -102,7 +111,7 @@ ThreadTeam::ForBands(std::size_t count, const std::function<void(std::size_t, st
       const std::size_t end = count * (member + 1) / size;
       if (begin < end)
       {
-        job(begin, end);
+        job(member, begin, end);
       }
     });
 }

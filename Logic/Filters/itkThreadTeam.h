@@ -52,6 +52,13 @@ public:
   void
   ForBands(std::size_t count, const std::function<void(std::size_t, std::size_t)> & job, bool parallel = true);
 
+  /** ForBands, with the member that works each band as \a job's first argument (0 for the whole range when not
+   * \a parallel), for jobs that keep scratch space per member. */
+  void
+  ForMemberBands(std::size_t                                                         count,
+                 const std::function<void(unsigned int, std::size_t, std::size_t)> & job,
+                 bool                                                                parallel = true);
+
 private:
   void
   Serve(unsigned int member);
