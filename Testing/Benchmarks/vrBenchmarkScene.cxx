@@ -1,7 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrBenchmarkScene.h"
 
-#include "itkCPRDepthImageFilter.h"
 #include "itkCTAPhantom.h"
 #include "itkRunoffPhantomImageSource.h"
 
@@ -42,22 +41,6 @@ PhantomScene::GetVolume()
   return m_Volume;
 }
 
-namespace
-{
-DepthMap
-ScanlineDepthMap(const itk::CenterlineTree & tree, const itk::CPRViewSpecification & view)
-{
-  auto filter = itk::CPRDepthImageFilter<DepthImage>::New();
-  filter->SetCenterlineTree(tree);
-  filter->SetViewSpecification(view);
-  filter->Update();
-  DepthMap map{ filter->GetDepthOutput(), filter->GetFixedMaskOutput() };
-  map.Depth->DisconnectPipeline();
-  map.Fixed->DisconnectPipeline();
-  return map;
-}
-} // namespace
-
 const DepthMap &
 ThoraxDepthMap(unsigned int width, unsigned int height)
 {
@@ -66,7 +49,7 @@ ThoraxDepthMap(unsigned int width, unsigned int height)
   if (!map.Depth)
   {
     const auto phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax);
-    map = ScanlineDepthMap(phantom.Tree, PaperView(width, height, phantom.DesignAngleInDegrees));
+    map = vr::test::MakeScanlineDepthMap(phantom.Tree, PaperView(width, height, phantom.DesignAngleInDegrees));
   }
   return map;
 }
@@ -77,7 +60,7 @@ PhantomScene::GetDepthMap(unsigned int width, unsigned int height)
   auto & map = m_DepthMaps[{ width, height }];
   if (!map.Depth)
   {
-    map = ScanlineDepthMap(m_Tree, PaperView(width, height));
+    map = vr::test::MakeScanlineDepthMap(m_Tree, PaperView(width, height));
   }
   return map;
 }

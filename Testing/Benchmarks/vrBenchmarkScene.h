@@ -5,6 +5,7 @@
 #include "itkCPRViewGeometry.h"
 #include "itkCenterlineTree.h"
 #include "itkImage.h"
+#include "vrTestImages.h"
 
 #include <map>
 #include <utility>
@@ -25,11 +26,7 @@ itk::CPRViewSpecification
 PaperView(unsigned int width, unsigned int height, double angle = DesignAngle);
 
 /** A scanline mpCPR depth map with its fixed mask. */
-struct DepthMap
-{
-  DepthImage::Pointer Depth;
-  MaskImage::Pointer  Fixed;
-};
+using DepthMap = vr::test::PhantomDepthMap;
 
 /** The thoracic phantom's scanline depth map at its design angle and W x H pixels (the fit spacing), with its fixed
  * mask: seams of 2-10 mm at the aortic arch, built once per size on first use. */

@@ -73,9 +73,7 @@ MakeRandomMaskImage(unsigned int width, unsigned int height, double fraction, un
 PhantomDepthMap
 MakePhantomDepthMap(unsigned int width, unsigned int height, double spacing)
 {
-  auto phantom = itk::RunoffPhantomImageSource::New();
-  auto depthFilter = itk::CPRDepthImageFilter<DepthImage>::New();
-  depthFilter->SetCenterlineTree(phantom->GetCenterlineTree());
+  auto                      phantom = itk::RunoffPhantomImageSource::New();
   itk::CPRViewSpecification view;
   view.AngleInDegrees = 30.0;
   view.ImageSize = { { width, height } };
@@ -84,6 +82,14 @@ MakePhantomDepthMap(unsigned int width, unsigned int height, double spacing)
     view.PixelSpacing[0] = spacing;
     view.PixelSpacing[1] = spacing;
   }
+  return MakeScanlineDepthMap(phantom->GetCenterlineTree(), view);
+}
+
+PhantomDepthMap
+MakeScanlineDepthMap(const itk::CenterlineTree & tree, const itk::CPRViewSpecification & view)
+{
+  auto depthFilter = itk::CPRDepthImageFilter<DepthImage>::New();
+  depthFilter->SetCenterlineTree(tree);
   depthFilter->SetViewSpecification(view);
   depthFilter->Update();
   PhantomDepthMap map{ depthFilter->GetDepthOutput(), depthFilter->GetFixedMaskOutput() };

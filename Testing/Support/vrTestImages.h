@@ -2,6 +2,8 @@
 #ifndef vrTestImages_h
 #define vrTestImages_h
 
+#include "itkCPRViewGeometry.h"
+#include "itkCenterlineTree.h"
 #include "itkImage.h"
 
 #include <vector>
@@ -46,6 +48,9 @@ struct PhantomDepthMap
 };
 PhantomDepthMap
 MakePhantomDepthMap(unsigned int width, unsigned int height, double spacing = 0.0);
+/** The scanline mpCPR depth map and fixed mask of \a tree in \a view, disconnected from the filter that made them. */
+PhantomDepthMap
+MakeScanlineDepthMap(const itk::CenterlineTree & tree, const itk::CPRViewSpecification & view);
 
 /** The pixels of a 2D image, row-major. */
 template<typename TImage>
