@@ -125,56 +125,43 @@ RelaxPlain(benchmark::State & state)
   state.SetLabel("scalar double loop, 1 thread");
 }
 
+/** What every relax benchmark shares: a W x H image, milliseconds of real time, the median of \a repetitions; with
+ * \a oneRun, one iteration per repetition, for those that take seconds per run. */
+void
+Register(benchmark::internal::Benchmark * b, long width, long height, int repetitions, bool oneRun)
+{
+  b->Args({ width, height })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(repetitions)
+    ->ReportAggregatesOnly();
+  if (oneRun)
+  {
+    b->Iterations(1);
+  }
+}
+
 const bool Registered = []
 {
   for (const auto & size : { std::pair<long, long>{ 256, 768 }, std::pair<long, long>{ 512, 1024 } })
   {
-    benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU)
-      ->Args({ size.first, size.second })
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime()
-      ->Repetitions(10)
-      ->ReportAggregatesOnly();
+    Register(benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU), size.first, size.second, 10, false);
     // Seconds per run: a few runs give a stable median.
-    benchmark::RegisterBenchmark("Relax_Plain", RelaxPlain)
-      ->Args({ size.first, size.second })
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime()
-      ->Iterations(1)
-      ->Repetitions(3)
-      ->ReportAggregatesOnly();
+    Register(benchmark::RegisterBenchmark("Relax_Plain", RelaxPlain), size.first, size.second, 3, true);
   }
-  benchmark::RegisterBenchmark("Relax_Steady", RelaxSteady, false)
-    ->Args({ 512, 1024 })
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Repetitions(10)
-    ->ReportAggregatesOnly();
-  benchmark::RegisterBenchmark("Relax_Steady_Thorax", RelaxSteady, true)
-    ->Args({ 512, 1024 })
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly();
-  benchmark::RegisterBenchmark("Relax_Generic", RelaxGeneric)
-    ->Args({ 512, 1024 })
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Iterations(1)
-    ->Repetitions(3)
-    ->ReportAggregatesOnly();
+  Register(benchmark::RegisterBenchmark("Relax_Steady", RelaxSteady, false), 512, 1024, 10, false);
+  Register(benchmark::RegisterBenchmark("Relax_Steady_Thorax", RelaxSteady, true), 512, 1024, 3, true);
+  Register(benchmark::RegisterBenchmark("Relax_Generic", RelaxGeneric), 512, 1024, 3, true);
   const auto supported = itk::BilateralDepthRelaxKernel::GetSupportedInstructionSets();
   for (std::size_t k = 1; k < supported.size(); ++k)
   {
     // "AVX2+FMA" -> "Relax_CPU_AVX2+FMA": no slash, so the name keeps its W/H fields.
-    benchmark::RegisterBenchmark(("Relax_CPU_" + supported[k]).c_str(), RelaxCPUWithInstructionSet, supported[k])
-      ->Args({ 512, 1024 })
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime()
-      ->Iterations(1)
-      ->Repetitions(5)
-      ->ReportAggregatesOnly();
+    Register(
+      benchmark::RegisterBenchmark(("Relax_CPU_" + supported[k]).c_str(), RelaxCPUWithInstructionSet, supported[k]),
+      512,
+      1024,
+      5,
+      true);
   }
   return true;
 }();
