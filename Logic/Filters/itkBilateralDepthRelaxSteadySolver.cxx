@@ -178,12 +178,6 @@ struct Level
   }
 };
 
-template<typename F, int... I>
-inline void
-ForEachOf(std::integer_sequence<int, I...>, F && f)
-{
-  (f(std::integral_constant<int, I>{}), ...);
-}
 using NineOffsets = std::make_integer_sequence<int, 9>;
 
 /** P(p, K) for the fine point p = 2K + (OX, OY), read from the coarse level \a c at K's index \a k. */
@@ -1056,11 +1050,6 @@ public:
       m_Parent[k] = static_cast<std::int32_t>(k);
     }
   }
-  std::size_t
-  Size() const
-  {
-    return m_Parent.size();
-  }
 
 private:
   std::vector<std::int32_t> m_Parent;
@@ -1854,9 +1843,8 @@ public:
   void
   SmoothRedBlack(const Level & l, int first, bool fromZero)
   {
-    const int  second = 1 - first;
-    const long s = l.Stride;
-    auto       colourRow = [&](int colour, long y, bool zero)
+    const int second = 1 - first;
+    auto      colourRow = [&](int colour, long y, bool zero)
     {
       const long p = l.At(0, y);
       if (zero)
@@ -1865,16 +1853,7 @@ public:
       }
       else
       {
-        SmoothRow5(l.X + p,
-                   l.X + p + s,
-                   l.X + p - s,
-                   l.B + p,
-                   l.E + p,
-                   l.N + p,
-                   l.N + p - s,
-                   l.C + p,
-                   (y + colour) & 1,
-                   l.Width);
+        SmoothRow<false>(l, y, (y + colour) & 1);
       }
     };
     const bool parallel = l.IsParallel();
