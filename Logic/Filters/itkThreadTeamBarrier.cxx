@@ -11,11 +11,9 @@ namespace itk::detail
 {
 namespace
 {
-/** About 0.2-0.5 ms of polling before sleeping: longer than the usual imbalance of one relax iteration and than the
- * steady solver's serial work between two parallel steps (its small coarse grids, the regions), far shorter than a
- * scheduler time slice. A thread woken from sleep takes tens of microseconds to run again, more in a virtual machine;
- * with a tenth of this, a run-off steady solve put its helper to sleep several hundred times. */
-constexpr unsigned int SpinsBeforeSleeping = 20000;
+/** About 20-50 microseconds of polling before sleeping: longer than the usual imbalance of one relax iteration,
+ * far shorter than a scheduler time slice. */
+constexpr unsigned int SpinsBeforeSleeping = 2000;
 
 inline void
 PauseCPU()
