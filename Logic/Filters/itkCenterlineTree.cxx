@@ -156,6 +156,7 @@ CenterlineTree::ToSpatialObject() const
     }
     tube->SetPoints(points);
     tube->SetId(branch.Id);
+    tube->GetProperty().SetName(branch.Name); // MetaIO's "Name", which TubeTK's .tre files carry
     tube->Update();
     group->AddChild(tube);
   }
@@ -183,6 +184,7 @@ CenterlineTree::FromSpatialObject(const GroupType * group)
     }
     CenterlineBranch branch;
     branch.Id = tube->GetId();
+    branch.Name = tube->GetProperty().GetName();
     bool anyRadius = false;
     for (const auto & point : tube->GetPoints())
     {

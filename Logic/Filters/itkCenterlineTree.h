@@ -13,7 +13,11 @@ namespace itk
 
 /** \class CenterlineBranch
  * \brief One vessel section: an ordered polyline in LPS millimetres, an optional lumen radius per point (mm),
- * and an integer id >= 1 that labels the pixels it owns in the reformation.
+ * an integer id >= 1 that labels the pixels it owns in the reformation, and the vessel's name when one is known.
+ *
+ * The name travels with the branch through every conversion (node, polydata, files), so that whatever renumbers
+ * the ids on the way (merging overlapping paths, splitting a trunk where a child leaves it) cannot attach a name to
+ * the wrong vessel.
  * \ingroup VesselReformation
  */
 struct CenterlineBranch
@@ -22,6 +26,9 @@ struct CenterlineBranch
 
   int                    Id{ 1 };
   std::vector<PointType> Points;
+  /** What the vessel is called ("left common iliac artery", a curve's name, a mask file's name); empty when the
+   * source names nothing. Not part of the geometry: operator== ignores it. */
+  std::string Name;
   /** Lumen radius per point, in mm; empty when unknown. */
   std::vector<double> Radii;
 
@@ -31,7 +38,7 @@ struct CenterlineBranch
     return !Radii.empty();
   }
 
-  /** Same id, points and radii, exactly. */
+  /** Same id, points and radii, exactly (the name is a label, not geometry: renaming changes no output). */
   bool
   operator==(const CenterlineBranch & other) const
   {

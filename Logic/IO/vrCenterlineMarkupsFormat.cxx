@@ -253,9 +253,12 @@ ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineRea
       otherTypes.push_back(type.empty() ? "(no type)" : type);
       continue;
     }
-    if (markup.contains("name") && markup["name"].is_string())
+    // Slicer names each markups node ("aorta"): the name is the vessel's.
+    const std::string name =
+      markup.contains("name") && markup["name"].is_string() ? markup["name"].get<std::string>() : std::string();
+    if (!name.empty())
     {
-      where += " (\"" + markup["name"].get<std::string>() + "\")";
+      where += " (\"" + name + "\")";
     }
     const CoordinateSpace fileSpace = MarkupSpace(markup, where);
     const CoordinateSpace used = space == CoordinateSpace::Auto ? fileSpace : space;
@@ -317,6 +320,7 @@ ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineRea
     }
     itk::CenterlineBranch branch;
     branch.Id = static_cast<int>(tree.GetNumberOfBranches()) + 1;
+    branch.Name = name;
     InterpolateSlicerCurve(controls, controlRadii, branch);
     tree.AddBranch(std::move(branch));
   }
@@ -359,7 +363,7 @@ WriteMarkupsCurves(const itk::CenterlineTree & tree,
   Json       markups = Json::array();
   for (const auto & branch : tree.GetBranches())
   {
-    const std::string name = "Branch " + std::to_string(branch.Id);
+    const std::string name = branch.Name.empty() ? "Branch " + std::to_string(branch.Id) : branch.Name;
     Json              controlPoints = Json::array();
     for (std::size_t k = 0; k < branch.Points.size(); ++k)
     {

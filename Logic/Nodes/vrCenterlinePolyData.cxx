@@ -180,6 +180,32 @@ ExtractPolylines(vtkPolyData * polyData, bool rasPoints, vtkDataArray * radii, c
   return polylines;
 }
 
+/** The cell array of branch names: "BranchNames" (what PolyDataFromCenterlineTree writes) or a string cell array
+ * other tools name a vessel with ("BranchName", "Name", "Names", "GroupNames"); null when there is none or its
+ * length is not the cell count. */
+vtkStringArray *
+CellNameArray(vtkPolyData * polyData)
+{
+  for (const char * name : { BranchNamesArrayName, "BranchName", "Name", "Names", "GroupNames" })
+  {
+    auto * array = vtkStringArray::SafeDownCast(polyData->GetCellData()->GetAbstractArray(name));
+    if (array != nullptr && array->GetNumberOfComponents() == 1 &&
+        array->GetNumberOfValues() == polyData->GetNumberOfCells())
+    {
+      return array;
+    }
+  }
+  return nullptr;
+}
+
+/** The name a cell carries, or empty. */
+std::string
+CellName(vtkStringArray * names, vtkIdType cellId)
+{
+  return names != nullptr && cellId >= 0 && cellId < names->GetNumberOfValues() ? names->GetValue(cellId)
+                                                                                : std::string();
+}
+
 /** A polyline under construction: indices into the table of all input vertices. */
 struct Piece
 {
@@ -343,6 +369,8 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
     }
   }
 
+  // Each piece keeps the name of the polyline it came from: a trunk cut where a child leaves stays that vessel.
+  vtkStringArray *    names = CellNameArray(polyData);
   itk::CenterlineTree tree;
   int                 nextId = 1;
   std::size_t         kept = 0;
@@ -350,6 +378,7 @@ MergeOverlappingPolylines(const std::vector<Polyline> & polylines,
   {
     itk::CenterlineBranch branch;
     branch.Id = useStoredIds ? ids[kept] : nextId++;
+    branch.Name = CellName(names, cut[p].CellId);
     ++kept;
     for (std::size_t k = 0; k < cut[p].Vertices.size(); ++k)
     {
@@ -595,6 +624,8 @@ MergeBranchGroups(const std::vector<Polyline> & polylines,
     group.second.Radii = std::move(joint.Radii);
   }
 
+  // A group is named after its first tract's cell (vmtkbranchextractor copies a path's cell data to its tracts).
+  vtkStringArray *    names = CellNameArray(polyData);
   itk::CenterlineTree tree;
   int                 nextId = 1;
   std::size_t         outputPoints = 0;
@@ -602,6 +633,7 @@ MergeBranchGroups(const std::vector<Polyline> & polylines,
   {
     itk::CenterlineBranch branch;
     branch.Id = nextId++;
+    branch.Name = CellName(names, polylines[groupTracts[group.first].front()].CellId);
     branch.Points = std::move(group.second.Points);
     branch.Radii = std::move(group.second.Radii);
     outputPoints += branch.Points.size();
@@ -684,6 +716,9 @@ PolyDataFromCenterlineTree(const itk::CenterlineTree & tree, CoordinateSpace spa
   radii->SetName(SlicerRadiusArrayName);
   auto ids = vtkSmartPointer<vtkIntArray>::New();
   ids->SetName(BranchIdsArrayName);
+  auto names = vtkSmartPointer<vtkStringArray>::New();
+  names->SetName(BranchNamesArrayName);
+  bool       named = false;
   const bool withRadii = tree.HasRadii();
   for (const auto & branch : tree.GetBranches())
   {
@@ -698,6 +733,8 @@ PolyDataFromCenterlineTree(const itk::CenterlineTree & tree, CoordinateSpace spa
       }
     }
     ids->InsertNextValue(branch.Id);
+    names->InsertNextValue(branch.Name);
+    named = named || !branch.Name.empty();
   }
   auto polyData = vtkSmartPointer<vtkPolyData>::New();
   polyData->SetPoints(points);
@@ -707,6 +744,10 @@ PolyDataFromCenterlineTree(const itk::CenterlineTree & tree, CoordinateSpace spa
     polyData->GetPointData()->AddArray(radii);
   }
   polyData->GetCellData()->AddArray(ids);
+  if (named)
+  {
+    polyData->GetCellData()->AddArray(names);
+  }
   auto spaceArray = vtkSmartPointer<vtkStringArray>::New();
   spaceArray->SetName("SPACE");
   spaceArray->InsertNextValue(ras ? "RAS" : "LPS");

@@ -19,6 +19,8 @@ constexpr const char * VMTKRadiusArrayName = "MaximumInscribedSphereRadius";
 constexpr const char * SlicerRadiusArrayName = "Radius";
 /** The cell array that carries branch ids through the .vtp/.vtk writer and back. */
 constexpr const char * BranchIdsArrayName = "BranchIds";
+/** The string cell array that carries branch names (itk::CenterlineBranch::Name) through nodes and files. */
+constexpr const char * BranchNamesArrayName = "BranchNames";
 
 /** How CenterlineTreeFromPolyData treats points that several polylines share.
  * \ingroup VesselReformation
@@ -54,7 +56,10 @@ struct CenterlinePolyDataOptions
  * the bifurcation instead of leaving a gap; a blanked tract that ends its path is dropped.
  *
  * Branch ids are 1, 2, ... in order of appearance, or the cell array "BranchIds" when each polyline became
- * exactly one branch (what WriteCenterlines writes).
+ * exactly one branch (what WriteCenterlines writes). Branch names come from a string cell array ("BranchNames", as
+ * written by PolyDataFromCenterlineTree, or "BranchName", "Name", "Names", "GroupNames"): each branch takes the
+ * name of the polyline it came from (a trunk cut where a child leaves keeps its name in each part; a merged group
+ * takes its first tract's).
  *
  * Throws vr::InputError naming \a sourceName and the point, cell or array on: no polyline, a non-finite
  * coordinate, a radius array with the wrong number of values or components, a radius that is negative or not
@@ -68,7 +73,8 @@ CenterlineTreeFromPolyData(vtkPolyData *                     polyData,
                            const CenterlinePolyDataOptions & options = CenterlinePolyDataOptions());
 
 /** One polyline per branch, in \a space (RAS for a 3D Slicer node; Auto means RAS), with the point array
- * "Radius" when the tree has radii, the cell array "BranchIds" and the 3D Slicer "SPACE" field-data entry. */
+ * "Radius" when the tree has radii, the cell array "BranchIds", the string cell array "BranchNames" when any branch
+ * has a name, and the 3D Slicer "SPACE" field-data entry. */
 vtkSmartPointer<vtkPolyData>
 PolyDataFromCenterlineTree(const itk::CenterlineTree & tree, CoordinateSpace space = CoordinateSpace::RAS);
 } // namespace vr

@@ -410,6 +410,11 @@ RunoffPhantomImageSource::GetCenterlineTree() const
     tree.AddBranch(SampleBranch(definition.rightId, definition.controls, -1.0, m_Scale));
     tree.AddBranch(SampleBranch(definition.leftId, definition.controls, 1.0, m_Scale));
   }
+  // The names travel with the branches, so that any later renumbering of ids keeps each vessel's name.
+  for (auto & branch : tree.GetBranches())
+  {
+    branch.Name = GetBranchName(branch.Id);
+  }
   return tree;
 }
 

@@ -60,7 +60,8 @@ public:
   itkSetMacro(Seed, unsigned int);
   itkGetConstMacro(Seed, unsigned int);
 
-  /** The exact centerlines (LPS mm) with lumen radii (mm); ids label the vessels (see GetBranchName). */
+  /** The exact centerlines (LPS mm) with lumen radii (mm); ids label the vessels, each branch carries its name
+   * (GetBranchName). */
   CenterlineTree
   GetCenterlineTree() const;
   /** The anatomical name of a branch id, e.g. "left superficial femoral/popliteal". */

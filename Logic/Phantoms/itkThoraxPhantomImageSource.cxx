@@ -397,6 +397,11 @@ ThoraxPhantomImageSource::GetCenterlineTree() const
   {
     tree.AddBranch(SampleArtery(artery.id, artery.controls));
   }
+  // The names travel with the branches, so that any later renumbering of ids keeps each vessel's name.
+  for (auto & branch : tree.GetBranches())
+  {
+    branch.Name = GetBranchName(branch.Id);
+  }
   return tree;
 }
 

@@ -59,7 +59,8 @@ public:
   itkSetMacro(Seed, unsigned int);
   itkGetConstMacro(Seed, unsigned int);
 
-  /** The exact centerlines (LPS mm) with lumen radii (mm); ids label the arteries (see GetBranchName). */
+  /** The exact centerlines (LPS mm) with lumen radii (mm); ids label the arteries, each branch carries its name
+   * (GetBranchName). */
   CenterlineTree
   GetCenterlineTree() const;
   /** The anatomical name of a branch id, e.g. "left subclavian artery"; "unknown" for other ids. */

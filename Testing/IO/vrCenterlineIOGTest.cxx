@@ -352,6 +352,35 @@ INSTANTIATE_TEST_SUITE_P(EveryExactFormat,
                          ::testing::Values(".vtp", ".vtk", ".tre", ".csv"),
                          [](const auto & info) { return info.param.substr(1); });
 
+class CenterlineNameRoundTrip : public ::testing::TestWithParam<std::string>
+{
+};
+
+TEST_P(CenterlineNameRoundTrip, EveryFormatThatHasNamesKeepsEachBranchsName)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  itk::CenterlineTree             tree = MakeYTree();
+  const std::vector<std::string>  names = { "abdominal aorta", "left common iliac artery", "" };
+  for (std::size_t b = 0; b < names.size(); ++b)
+  {
+    tree.GetBranches()[b].Name = names[b];
+  }
+  const std::string path = folder.File("named" + GetParam());
+  vr::WriteCenterlines(tree, path);
+  const itk::CenterlineTree back = vr::ReadCenterlines(path, CoordinateSpace::Auto);
+  ASSERT_EQ(back.GetNumberOfBranches(), 3U);
+  EXPECT_EQ(back.GetBranches()[0].Name, "abdominal aorta");
+  EXPECT_EQ(back.GetBranches()[1].Name, "left common iliac artery");
+  // A branch without a name: none invented by the binary formats; the markups writer names every curve.
+  EXPECT_EQ(back.GetBranches()[2].Name, GetParam() == ".mrk.json" ? "Branch 9" : "");
+}
+
+INSTANTIATE_TEST_SUITE_P(FormatsWithNames,
+                         CenterlineNameRoundTrip,
+                         ::testing::Values(".vtp", ".vtk", ".tre", ".mrk.json"),
+                         [](const auto & info)
+                         { return info.param == ".mrk.json" ? std::string("mrk_json") : info.param.substr(1); });
+
 TEST(CenterlineRoundTrip, CSVInEachHeaderForm)
 {
   vr::test::ScopedTemporaryFolder folder;
@@ -616,6 +645,10 @@ TEST(HandWrittenCenterlines, MarkupsCurvesFollowSlicersSplineInTheirOwnFrames)
   const itk::CenterlineTree tree = vr::ReadCenterlines(folder.File("curves.mrk.json"), CoordinateSpace::Auto, &report);
   ASSERT_EQ(tree.GetNumberOfBranches(), 3U);
   EXPECT_EQ(report.SpaceSource, "each curve's coordinateSystem (LPS, LPS, RAS)");
+  // Each curve's name is its vessel's (the fiducial list between them is no branch).
+  EXPECT_EQ(tree.GetBranches()[0].Name, "A");
+  EXPECT_EQ(tree.GetBranches()[1].Name, "B");
+  EXPECT_EQ(tree.GetBranches()[2].Name, "C");
 
   const auto & a = tree.GetBranches()[0];
   // Curve A: 3D Slicer interpolates each coordinate with a cardinal spline over the control point index, ends
@@ -756,6 +789,48 @@ TEST(CenterlinePolyData, PathsFromOneRootSplitWhereTheyDiverge)
   // Path 2 repeats R..X (21 points), path 3 repeats R..P (11 points).
   EXPECT_EQ(report.MergedPoints, 21U + 11U);
   EXPECT_EQ(report.InputPolylines, 3U);
+}
+
+TEST(CenterlinePolyData, NamesFollowTheirVesselsWhenATrunkIsCutAndTheIdsRenumbered)
+{
+  // A named trunk R..E and a named child leaving it at its 5th point M: as a node, the trunk is cut at M, so the
+  // three branches that come back are numbered 1, 2, 3 and none has its old id (7, 12); each keeps its vessel's name.
+  const PointType       R = P(0, 0, 0), M = P(0, 0, -50), E = P(0, 0, -100), C = P(30, 0, -80);
+  itk::CenterlineTree   tree;
+  itk::CenterlineBranch trunk;
+  trunk.Id = 7;
+  trunk.Name = "aorta";
+  trunk.Points = Concatenate(Line(R, M, 5), Line(M, E, 5));
+  itk::CenterlineBranch child;
+  child.Id = 12;
+  child.Name = "left renal artery";
+  child.Points = Line(M, C, 6);
+  tree.AddBranch(trunk);
+  tree.AddBranch(child);
+
+  const auto                polyData = vr::PolyDataFromCenterlineTree(tree, CoordinateSpace::LPS);
+  const itk::CenterlineTree back = vr::CenterlineTreeFromPolyData(polyData, CoordinateSpace::LPS, "test");
+  ASSERT_EQ(back.GetNumberOfBranches(), 3U);
+  for (const auto & branch : back.GetBranches())
+  {
+    // Which vessel a branch is, from its geometry: the child's points all lie off the z axis but its first.
+    const bool isChild = branch.Points.back()[0] > 1.0;
+    EXPECT_EQ(branch.Name, isChild ? "left renal artery" : "aorta") << "branch " << branch.Id;
+    EXPECT_NE(branch.Id, isChild ? 12 : 7) << "the ids were renumbered, so only the names can tell";
+  }
+
+  // A string cell array of another name, as other tools write it, names the branches too.
+  auto other = vr::PolyDataFromCenterlineTree(tree, CoordinateSpace::LPS);
+  auto renamed = vtkSmartPointer<vtkStringArray>::New();
+  renamed->SetName("Name");
+  renamed->InsertNextValue("trunk");
+  renamed->InsertNextValue("side branch");
+  other->GetCellData()->RemoveArray(vr::BranchNamesArrayName);
+  other->GetCellData()->AddArray(renamed);
+  const itk::CenterlineTree fromOther = vr::CenterlineTreeFromPolyData(other, CoordinateSpace::LPS, "test");
+  ASSERT_EQ(fromOther.GetNumberOfBranches(), 3U);
+  EXPECT_EQ(fromOther.GetBranches()[0].Name, "trunk");
+  EXPECT_EQ(fromOther.GetBranches()[2].Name, "side branch");
 }
 
 TEST(CenterlinePolyData, ASlicerNodeIsRASUnlessItsSpaceFieldSaysLPS)
