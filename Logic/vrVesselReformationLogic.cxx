@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrVesselReformationLogic.h"
 
+#include "vrCenterlineVolumeFit.h"
+
 #include "vrImageGrid.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
@@ -346,32 +348,22 @@ void
 VesselReformationLogic::Internals::CheckTreeAgainstVolume()
 {
   InputWarning.clear();
-  const double outside = FractionOfPointsOutside(Tree, Volume);
-  if (outside > 0.5)
+  std::string centerlines = "centerlines";
+  if (TreeFromExtraction)
   {
-    std::ostringstream message;
-    if (TreeFromExtraction)
-    {
-      message << "the centerlines of " << SegmentationName();
-    }
-    else
-    {
-      message << "centerlines";
-      if (!CenterlineNodeInput->GetName().empty())
-      {
-        message << " \"" << CenterlineNodeInput->GetName() << "\"";
-      }
-    }
-    message << ": " << std::lround(100.0 * outside) << "% of the " << Tree.GetNumberOfPoints()
-            << " points lie outside the volume";
-    if (!VolumeNodeInput->GetName().empty())
-    {
-      message << " \"" << VolumeNodeInput->GetName() << "\"";
-    }
-    message << (TreeFromExtraction ? "; the segmentation covers little of the volume. The reformation continues."
-                                   : "; they may be in the other coordinate system: check whether the centerlines "
-                                     "are in RAS or LPS. The reformation continues.");
-    InputWarning = message.str();
+    centerlines = "the centerlines of " + SegmentationName();
+  }
+  else if (!CenterlineNodeInput->GetName().empty())
+  {
+    centerlines += " \"" + CenterlineNodeInput->GetName() + "\"";
+  }
+  const std::string volume = VolumeNodeInput->GetName().empty() ? std::string("the volume")
+                                                                : "the volume \"" + VolumeNodeInput->GetName() + "\"";
+  // No point inside throws: an empty reformation would look like a result.
+  InputWarning =
+    CheckCenterlineVolumeFit(MeasureCenterlineVolumeFit(Tree, Volume), centerlines, volume, TreeFromExtraction);
+  if (!InputWarning.empty())
+  {
     Warning(InputWarning, TreeFromExtraction ? std::string() : std::string(ParameterName::CenterlineSpace));
   }
 }
@@ -1097,26 +1089,6 @@ VesselReformationLogic::AvailableMemoryInBytes()
 double
 VesselReformationLogic::FractionOfPointsOutside(const itk::CenterlineTree & tree, const VolumeImageType * volume)
 {
-  const auto & region = volume->GetLargestPossibleRegion();
-  std::size_t  outside = 0;
-  std::size_t  total = 0;
-  for (const auto & branch : tree.GetBranches())
-  {
-    for (const auto & point : branch.Points)
-    {
-      itk::ContinuousIndex<double, 3> index;
-      volume->TransformPhysicalPointToContinuousIndex(point, index);
-      bool inside = true;
-      for (unsigned int axis = 0; axis < 3; ++axis)
-      {
-        const double low = region.GetIndex(axis) - 0.5;
-        const double high = region.GetIndex(axis) + static_cast<double>(region.GetSize(axis)) - 0.5;
-        inside = inside && index[axis] >= low && index[axis] <= high;
-      }
-      outside += inside ? 0 : 1;
-      ++total;
-    }
-  }
-  return total == 0 ? 0.0 : static_cast<double>(outside) / total;
+  return MeasureCenterlineVolumeFit(tree, volume).OutsideFraction();
 }
 } // namespace vr

@@ -114,7 +114,8 @@ struct ReformationOutputs
  *
  * Failures are reported one way, by throwing vr::InputError with a message naming the node, or the parameter by its
  * meaning (also in InputError::Parameter(), see vr::ParameterName) and its value: parameter checks, node
- * conversion, a view that does not fit in memory, an unavailable backend, filter errors. AbortUpdate() stops a
+ * conversion, centerlines with no point inside the volume (vr::CheckCenterlineVolumeFit), a view that does not fit in
+ * memory, an unavailable backend, filter errors. AbortUpdate() stops a
  * running Update() through ITK's abort flag; that Update() throws vr::Cancelled. Warnings (most centerline points
  * outside the volume: wrong RAS/LPS; the backend auto falling back to the CPU) do not stop the run; they go to the
  * warning callback and GetWarnings().

@@ -7,6 +7,7 @@
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
 #include "vrVesselReformationLogic.h"
+#include "vrCenterlineVolumeFit.h"
 
 #include "PlainBilateralDepthRelax.h"
 #include "vrTestImages.h"
@@ -457,34 +458,85 @@ TEST_F(VesselReformationLogicTest, ProgressRisesToOne)
   EXPECT_GE(fractions.front(), 0.0);
 }
 
-TEST_F(VesselReformationLogicTest, WarnsWhenMostCenterlinePointsLieOutsideAndContinues)
+TEST_F(VesselReformationLogicTest, CenterlinesWithNoPointInTheVolumeAreRefusedNamingBothNodes)
 {
   EXPECT_TRUE(m_Logic.GetWarnings().empty());
   m_Logic.Update();
   EXPECT_TRUE(m_Logic.GetWarnings().empty()) << m_Logic.GetWarnings().front();
 
   std::vector<std::string> warned;
-  std::vector<std::string> parameters;
-  m_Logic.SetWarningCallback(
-    [&](const std::string & message, const std::string & parameter)
-    {
-      warned.push_back(message);
-      parameters.push_back(parameter);
-    });
+  m_Logic.SetWarningCallback([&](const std::string & message, const std::string &) { warned.push_back(message); });
+  // Centerlines taken as LPS although they are RAS: every point lands outside the volume (counted below).
   m_Logic.SetCenterlineNode(MakeCenterlineNode(m_Vessels, /*forgetRAS=*/true));
-  const auto & outputs = m_Logic.Update();
-  ASSERT_EQ(warned.size(), 1u);
-  EXPECT_NE(warned[0].find("RAS or LPS"), std::string::npos) << warned[0];
-  EXPECT_EQ(warned[0].find("--"), std::string::npos) << "the logic names no flag: " << warned[0];
-  EXPECT_EQ(parameters[0], vr::ParameterName::CenterlineSpace);
-  EXPECT_NE(warned[0].find("100%"), std::string::npos) << warned[0];
-  EXPECT_NE(warned[0].find("two-vessels-centerlines"), std::string::npos) << warned[0];
-  ASSERT_EQ(m_Logic.GetWarnings().size(), 1u);
-  EXPECT_NE(outputs.CPR, nullptr);
+  try
+  {
+    m_Logic.Update();
+    ADD_FAILURE() << "centerlines wholly outside the volume were reformatted";
+  }
+  catch (const vr::InputError & error)
+  {
+    const std::string message = error.what();
+    EXPECT_EQ(error.Parameter(), vr::ParameterName::CenterlineSpace);
+    EXPECT_NE(message.find("none of the"), std::string::npos) << message;
+    EXPECT_NE(message.find("two-vessels-centerlines"), std::string::npos) << message;
+    EXPECT_NE(message.find("the volume \"" + m_Volume->GetName() + "\""), std::string::npos) << message;
+    EXPECT_NE(message.find("other coordinate system"), std::string::npos) << message;
+    EXPECT_EQ(message.find("--"), std::string::npos) << "the logic names no flag: " << message;
+  }
+  EXPECT_TRUE(warned.empty()) << warned.front();
   EXPECT_EQ(
     vr::VesselReformationLogic::FractionOfPointsOutside(vr::ConvertCenterlineNodeToTree(MakeCenterlineNode(m_Vessels)),
                                                         vr::ConvertVolumeNodeToItkImage(m_Volume)),
     0.0);
+}
+
+TEST(CenterlineVolumeFit, CountsByTheVoxelGridAndDecidesBetweenNothingAWarningAndAnError)
+{
+  // A 10 x 10 x 10 grid of 2 mm voxels from LPS (0, 0, 0): voxel centres 0 .. 18 mm, the grid reaches 19 mm.
+  auto volume = vr::VolumeImageType::New();
+  volume->SetRegions(vr::VolumeImageType::RegionType({ { 0, 0, 0 } }, { { 10, 10, 10 } }));
+  vr::VolumeImageType::SpacingType spacing;
+  spacing.Fill(2.0);
+  volume->SetSpacing(spacing);
+  volume->Allocate(true);
+  itk::CenterlineTree   tree;
+  itk::CenterlineBranch branch;
+  // Along x at y = z = 5 mm: x = -1.5 (out), -0.5 (in), 10, 18.5 (in), 19.5, 30 (out): 3 of 6 outside.
+  for (const double x : { -1.5, -0.5, 10.0, 18.5, 19.5, 30.0 })
+  {
+    branch.Points.push_back(vr::test::P(x, 5.0, 5.0));
+  }
+  tree.AddBranch(branch);
+  const vr::CenterlineVolumeFit fit = vr::MeasureCenterlineVolumeFit(tree, volume);
+  EXPECT_EQ(fit.Points, 6u);
+  EXPECT_EQ(fit.Outside, 3u);
+  // The node's grid, through its IJK->RAS matrix, counts the same.
+  const auto                    node = vr::ConvertItkImageToVolumeNode(volume.GetPointer(), "grid");
+  const vr::CenterlineVolumeFit nodeFit = vr::MeasureCenterlineVolumeFit(tree, node.GetPointer());
+  EXPECT_EQ(nodeFit.Points, 6u);
+  EXPECT_EQ(nodeFit.Outside, 3u);
+
+  // Half outside: no warning; more: a warning in full; all: an error naming both.
+  EXPECT_EQ(vr::CheckCenterlineVolumeFit(fit, "centerlines \"c.vtp\"", "the volume \"v.nrrd\"", false), "");
+  const std::string warning =
+    vr::CheckCenterlineVolumeFit({ 6, 4 }, "centerlines \"c.vtp\"", "the volume \"v.nrrd\"", false);
+  EXPECT_EQ(warning,
+            "centerlines \"c.vtp\": 67% of the 6 points lie outside the volume \"v.nrrd\"; they may be in the other "
+            "coordinate system: check whether the centerlines are in RAS or LPS. The reformation continues.");
+  try
+  {
+    vr::CheckCenterlineVolumeFit({ 6, 6 }, "centerlines \"c.vtp\"", "the volume \"v.nrrd\"", false);
+    ADD_FAILURE() << "no error";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_EQ(error.Parameter(), vr::ParameterName::CenterlineSpace);
+    EXPECT_NE(std::string(error.what())
+                .find("centerlines \"c.vtp\": none of the 6 points lies inside the volume "
+                      "\"v.nrrd\""),
+              std::string::npos)
+      << error.what();
+  }
 }
 
 TEST_F(VesselReformationLogicTest, AutoBackendNoticeIsAWarning)

@@ -1252,24 +1252,85 @@ TEST_F(BadInputTest, AWriteThatFailsAfterTheOthersLeavesNoOutputAtAll)
                  { "surface.xyz" });
 }
 
-TEST_F(BadInputTest, CenterlinesOutsideTheVolumeWarnAndTheRunContinues)
+TEST_F(BadInputTest, CenterlinesWithNoPointInTheVolumeAreRefusedNamingBothFiles)
 {
-  // The .vtp is RAS; read as LPS, every point lands outside the volume.
+  // The .vtp is RAS; read as LPS, every point lands outside the volume (checked here from the volume's own bounds),
+  // so a reformation would be empty: refused, naming both files and the coordinate system as the likely cause.
+  const auto  volume = vr::ReadVolume(Volume());
+  const auto  tree = vr::ReadCenterlines(Centerlines(), vr::CoordinateSpace::LPS);
+  std::size_t inside = 0;
+  for (const auto & branch : tree.GetBranches())
+  {
+    for (const auto & point : branch.Points)
+    {
+      itk::ContinuousIndex<double, 3> index;
+      volume->TransformPhysicalPointToContinuousIndex(point, index);
+      inside += volume->GetLargestPossibleRegion().IsInside(index) ? 1 : 0;
+    }
+  }
+  ASSERT_EQ(inside, 0u) << "the case needs centerlines wholly outside the volume";
+  ExpectRejected(
+    { "--centerlineSpace", "LPS", "--iterations", "10", "--backend", "cpu", Volume(), Centerlines() },
+    { "aorta-centerline.vtp", "aorta.mha", "none of the", "other coordinate system", "--centerlineSpace" });
+}
+
+TEST_F(BadInputTest, CenterlinesMostlyOutsideTheVolumeWarnInFullAndTheRunContinues)
+{
+  // The aorta's centerlines moved up along the volume's z axis until between 60 and 90 % of their points (counted
+  // here) leave it.
+  const auto volume = vr::ReadVolume(Volume());
+  auto       tree = vr::ReadCenterlines(Centerlines());
+  double     outside = 0.0;
+  for (double shift = 0.0; shift < 1000.0 && !(outside > 0.6 && outside < 0.9); shift += 1.0)
+  {
+    std::size_t out = 0;
+    std::size_t all = 0;
+    for (const auto & branch : tree.GetBranches())
+    {
+      for (auto point : branch.Points)
+      {
+        point[2] += shift;
+        itk::ContinuousIndex<double, 3> index;
+        volume->TransformPhysicalPointToContinuousIndex(point, index);
+        out += volume->GetLargestPossibleRegion().IsInside(index) ? 0 : 1;
+        ++all;
+      }
+    }
+    outside = static_cast<double>(out) / static_cast<double>(all);
+    if (outside > 0.6 && outside < 0.9)
+    {
+      for (auto & branch : tree.GetBranches())
+      {
+        for (auto & point : branch.Points)
+        {
+          point[2] += shift;
+        }
+      }
+    }
+  }
+  ASSERT_GT(outside, 0.6);
+  ASSERT_LT(outside, 0.9);
+  const std::string moved = (m_Folder / "moved-centerlines.vtp").string();
+  vr::WriteCenterlines(tree, moved);
   const RunResult result = RunProgram({ ReformationExecutable,
-                                        "--centerlineSpace",
-                                        "LPS",
                                         "--iterations",
                                         "10",
                                         "--backend",
                                         "cpu",
                                         Volume(),
-                                        Centerlines(),
+                                        moved,
                                         (m_Folder / "cpr.nrrd").string() });
   EXPECT_EQ(result.ExitCode, 0) << result.Err;
-  EXPECT_TRUE(Contains(result.Err, "warning: ")) << result.Err;
-  EXPECT_TRUE(Contains(result.Err, "outside the volume")) << result.Err;
-  EXPECT_TRUE(Contains(result.Err, "--centerlineSpace")) << result.Err;
-  EXPECT_TRUE(Contains(result.Err, "aorta-centerline.vtp")) << result.Err;
+  // The whole warning, not a line cut short.
+  for (const char * part : { "warning: ",
+                             "moved-centerlines.vtp",
+                             "points lie outside the volume",
+                             "aorta.mha",
+                             "RAS or LPS",
+                             "The reformation continues." })
+  {
+    EXPECT_TRUE(Contains(result.Err, part)) << "lacks \"" << part << "\":\n" << result.Err;
+  }
   EXPECT_NE(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive") << "the run did not write";
 }
 
