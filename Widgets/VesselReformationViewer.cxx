@@ -136,6 +136,11 @@ RunViewer(int argc, char ** argv)
                                           });
                      });
   }
+  if (!scripted)
+  {
+    // A person's run remembers folders, recent files and the window; a scripted one leaves their settings alone.
+    window.UseSettings(std::make_shared<vr::ViewerSettings>());
+  }
   window.show();
   if (options.VolumePath.empty())
   {
@@ -156,7 +161,7 @@ RunViewer(int argc, char ** argv)
   }
   if (!options.Preset.empty() || options.HasWindowLevel)
   {
-    // Once, on the first image: after the inputs' own default (CTA for phantoms, full range for files).
+    // Once, on the first image: after the inputs' own default (CTA for a CT, 1-99 % for other data).
     auto connection = std::make_shared<QMetaObject::Connection>();
     *connection =
       QObject::connect(window.GetController(),

@@ -4,6 +4,7 @@
 #include "vrBranchColors.h"
 
 #include <QEvent>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
@@ -76,7 +77,13 @@ Format(double value, int decimals)
   text.setf(std::ios::fixed);
   text.precision(decimals);
   text << value;
-  return text.str();
+  // A component that rounds to zero is shown as 0, not "-0.00": a sign there reads as a direction.
+  std::string shown = text.str();
+  if (shown.front() == '-' && shown.find_first_not_of("-0.") == std::string::npos)
+  {
+    shown.erase(0, 1);
+  }
+  return shown;
 }
 
 std::string
@@ -395,12 +402,17 @@ CPRView::UpdatePanes()
                              ? "bilateral: " + kernel + "\nsteady solver"
                              : "bilateral: " + kernel + ", w " + TrimNumber(parameters.Relaxation) + "\n" +
                                  std::to_string(parameters.Iterations) + " iterations";
+    if (m_Comparison == CPRComparison::Split)
+    {
+      // One caption for both halves: two captions side by side under half-images overlap.
+      filtered = "left: unfiltered (w = 0); right: " + filtered;
+    }
     m_Filtered->Caption->SetInput(filtered.c_str());
     m_Unfiltered->Caption->SetInput("unfiltered (w = 0)");
+    m_Unfiltered->Caption->SetVisibility(showUnfiltered && m_Comparison != CPRComparison::Split);
     // Below the image, where no corner annotation sits.
     const double below = (m_ImageSize[1] + 0.5) * sy;
-    m_Filtered->Caption->GetPositionCoordinate()->SetValue(
-      (m_Comparison == CPRComparison::Split ? width / 2 : 0) * sx, below, 0.0);
+    m_Filtered->Caption->GetPositionCoordinate()->SetValue(0.0, below, 0.0);
     m_Unfiltered->Caption->GetPositionCoordinate()->SetValue(UnfilteredOffset(), below, 0.0);
   }
   UpdateAnnotation();
@@ -532,6 +544,7 @@ CPRView::FitImage()
   camera->SetViewUp(0.0, -1.0, 0.0);
   camera->SetParallelScale(halfHeight);
   camera->SetClippingRange(1.0, 2.0 * CameraDistance);
+  m_ZoomedByUser = false;
 }
 
 void
@@ -686,6 +699,7 @@ CPRView::eventFilter(QObject * watched, QEvent * event)
           const double y = m_DragFocal[1] - delta.y() * perPixel;
           camera->SetFocalPoint(x, y, 0.0);
           camera->SetPosition(x, y, -CameraDistance);
+          m_ZoomedByUser = true;
           Render();
           break;
         }
@@ -721,10 +735,20 @@ CPRView::eventFilter(QObject * watched, QEvent * event)
       FitImage();
       Render();
       return true;
+    case QEvent::KeyPress:
+      // VTK's own "r" would reset the camera to the actors' bounds, captions included: fit as a double-click does.
+      if (static_cast<QKeyEvent *>(event)->key() == Qt::Key_R)
+      {
+        FitImage();
+        Render();
+        return true;
+      }
+      return false;
     case QEvent::Wheel:
     {
       auto * wheel = static_cast<QWheelEvent *>(event);
       Zoom(std::pow(1.2, wheel->angleDelta().y() / 120.0), wheel->position());
+      m_ZoomedByUser = true;
       return true;
     }
     case QEvent::Leave:
@@ -735,7 +759,11 @@ CPRView::eventFilter(QObject * watched, QEvent * event)
       }
       return false;
     case QEvent::Resize:
-      // Keep the image fitted when the widget changes size before the user zoomed.
+      // Keep the image fitted when the widget changes size, unless the user zoomed or panned since the last fit.
+      if (!m_ZoomedByUser)
+      {
+        FitImage();
+      }
       return false;
     default:
       return false;

@@ -242,10 +242,12 @@ private:
 
   // The drag in progress.
   Qt::MouseButton m_DragButton{ Qt::NoButton };
-  QPointF         m_DragStart;
-  double          m_DragWindow{ 0.0 };
-  double          m_DragLevel{ 0.0 };
-  double          m_DragFocal[3]{ 0.0, 0.0, 0.0 };
+  /** Whether the wheel or a middle-drag moved the camera since the last FitImage() (then a resize keeps it). */
+  bool    m_ZoomedByUser{ false };
+  QPointF m_DragStart;
+  double  m_DragWindow{ 0.0 };
+  double  m_DragLevel{ 0.0 };
+  double  m_DragFocal[3]{ 0.0, 0.0, 0.0 };
 };
 } // namespace vr
 

@@ -364,8 +364,13 @@ ModulePanel::GetAngle() const
 }
 
 void
-ModulePanel::SetWindowLevel(double window, double level)
+ModulePanel::SetWindowLevel(double window, double level, bool byHand)
 {
+  if (byHand)
+  {
+    const QSignalBlocker block(m_Ui->presetCombo);
+    m_Ui->presetCombo->setCurrentIndex(0); // Custom
+  }
   {
     const QSignalBlocker blockWindow(m_Ui->windowSpin);
     const QSignalBlocker blockLevel(m_Ui->levelSpin);
@@ -373,6 +378,19 @@ ModulePanel::SetWindowLevel(double window, double level)
     m_Ui->levelSpin->setValue(level);
   }
   emit displayChanged();
+}
+
+void
+ModulePanel::SetPercentileWindow(double window, double level)
+{
+  m_PercentileWindow = window;
+  m_PercentileLevel = level;
+}
+
+QString
+ModulePanel::GetPresetName() const
+{
+  return m_Ui->presetCombo->currentText();
 }
 
 bool
@@ -384,6 +402,15 @@ ModulePanel::ApplyPreset(const QString & name, double fullRangeWindow, double fu
   {
     window = fullRangeWindow;
     level = fullRangeLevel;
+  }
+  else if (name == QString::fromUtf8(PercentilePresetName))
+  {
+    if (!(m_PercentileWindow > 0.0))
+    {
+      return false;
+    }
+    window = m_PercentileWindow;
+    level = m_PercentileLevel;
   }
   else
   {

@@ -35,6 +35,9 @@ struct WindowLevelPreset
 constexpr WindowLevelPreset CTAPreset{ "CTA", 900.0, 200.0 };
 constexpr WindowLevelPreset BonePreset{ "Bone", 2000.0, 500.0 };
 constexpr WindowLevelPreset SoftTissuePreset{ "Soft tissue", 400.0, 40.0 };
+/** The preset whose window spans the volume's 1st to 99th intensity percentile (SetPercentileWindow): the default
+ * for volumes without HU, whose intensities have no fixed scale (MR angiography). */
+constexpr const char * PercentilePresetName = "1–99 %";
 
 /** Which outputs "Save outputs" writes.
  * \ingroup VesselReformation
@@ -83,9 +86,16 @@ public:
   double
   GetAngle() const;
 
-  /** Sets the window and level controls; emits displayChanged(). */
+  /** Sets the window and level controls; emits displayChanged(). \a byHand (a right-drag in the CPR view) shows the
+   * preset as "Custom". */
   void
-  SetWindowLevel(double window, double level);
+  SetWindowLevel(double window, double level, bool byHand = false);
+  /** The window and level of the "1–99 %" preset, from the volume's intensity percentiles (ReformationInputs). */
+  void
+  SetPercentileWindow(double window, double level);
+  /** \return the preset the panel shows ("CTA", "Custom", ...). */
+  QString
+  GetPresetName() const;
   /** Chooses a preset by name ("CTA", "Bone", "Soft tissue", "Full range"); \a fullRange gives the window and level of
    * "Full range". Emits displayChanged(). \return false for an unknown name. */
   bool
@@ -182,6 +192,9 @@ private:
 
   std::unique_ptr<Ui::ModulePanel> m_Ui;
   bool                             m_Updating{ false };
+  /** The "1-99 %" preset's window and level (0: none known yet). */
+  double m_PercentileWindow{ 0.0 };
+  double m_PercentileLevel{ 0.0 };
 };
 
 /** \return \a degrees wrapped into [-180, 180). */

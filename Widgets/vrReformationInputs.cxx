@@ -4,14 +4,18 @@
 #include "itkCTAPhantom.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
+#include "vrCenterlineVolumeFit.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
 #include "vrVolumeIO.h"
 
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
 #include <vtkPointData.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,8 +24,14 @@ namespace vr
 std::string
 ReformationInputs::BranchName(int id) const
 {
-  const auto found = BranchNames.find(id);
-  return found != BranchNames.end() ? found->second : "branch " + std::to_string(id);
+  for (const auto & branch : Tree.GetBranches())
+  {
+    if (branch.Id == id && !branch.Name.empty())
+    {
+      return branch.Name;
+    }
+  }
+  return "branch " + std::to_string(id);
 }
 
 std::string
@@ -37,6 +47,47 @@ IntensityUnitOf(VolumeNode * volume)
   double range[2];
   image->GetScalarRange(range);
   return range[0] <= AirBound ? "HU" : std::string();
+}
+
+void
+PercentileWindowOf(VolumeNode * volume, double & window, double & level)
+{
+  window = 0.0;
+  level = 0.0;
+  vtkImageData * image = volume != nullptr ? volume->GetImageData() : nullptr;
+  vtkDataArray * scalars = image != nullptr ? image->GetPointData()->GetScalars() : nullptr;
+  if (scalars == nullptr || scalars->GetNumberOfTuples() == 0)
+  {
+    return;
+  }
+  constexpr vtkIdType MaximumSamples = vtkIdType{ 1 } << 22;
+  const vtkIdType     count = scalars->GetNumberOfTuples();
+  const vtkIdType     stride = std::max<vtkIdType>(1, (count + MaximumSamples - 1) / MaximumSamples);
+  std::vector<double> samples;
+  samples.reserve(static_cast<std::size_t>(count / stride + 1));
+  for (vtkIdType k = 0; k < count; k += stride)
+  {
+    const double value = scalars->GetComponent(k, 0);
+    if (std::isfinite(value))
+    {
+      samples.push_back(value);
+    }
+  }
+  if (samples.empty())
+  {
+    return;
+  }
+  // The value at rank q (n - 1), rounded to the nearest rank.
+  auto percentile = [&samples](double q)
+  {
+    const auto rank = static_cast<std::size_t>(std::lround(q * static_cast<double>(samples.size() - 1)));
+    std::nth_element(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(rank), samples.end());
+    return samples[rank];
+  };
+  const double low = percentile(0.01);
+  const double high = percentile(0.99);
+  window = std::max(high - low, 1.0);
+  level = 0.5 * (low + high);
 }
 
 std::vector<std::string>
@@ -80,10 +131,6 @@ MakePhantomInputs(const std::string & name, double spacing)
   ReformationInputs inputs =
     MakeInputs(ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), phantom.Description),
                ConvertTreeToCenterlineNode(phantom.Tree, phantom.Description + " centerlines"));
-  for (const auto & branch : inputs.Tree.GetBranches())
-  {
-    inputs.BranchNames[branch.Id] = phantom.BranchName(branch.Id);
-  }
   std::ostringstream source;
   source << phantom.Name << " phantom, " << phantom.Description << " (" << spacing << " mm voxels)";
   inputs.VolumeSource = source.str();
@@ -127,6 +174,7 @@ MakeSegmentationInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<Volum
   inputs.VolumeSource = inputs.Volume->GetName();
   inputs.CenterlineSource = "centerlines extracted from " + inputs.Segmentation->GetName();
   inputs.IntensityUnit = IntensityUnitOf(inputs.Volume);
+  PercentileWindowOf(inputs.Volume, inputs.PercentileWindow, inputs.PercentileLevel);
   return inputs;
 }
 
@@ -146,9 +194,19 @@ MakeInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<CenterlineNode> c
   inputs.Volume = std::move(volume);
   inputs.Centerlines = std::move(centerlines);
   inputs.Tree = ConvertCenterlineNodeToTree(inputs.Centerlines);
+  // Refused here, before anything is replaced, as the logic would refuse it on its first run.
+  const std::string warning = CheckCenterlineVolumeFit(MeasureCenterlineVolumeFit(inputs.Tree, inputs.Volume),
+                                                       "centerlines \"" + inputs.Centerlines->GetName() + "\"",
+                                                       "the volume \"" + inputs.Volume->GetName() + "\"",
+                                                       false);
+  if (!warning.empty())
+  {
+    inputs.Warnings.push_back(warning);
+  }
   inputs.VolumeSource = inputs.Volume->GetName();
   inputs.CenterlineSource = inputs.Centerlines->GetName();
   inputs.IntensityUnit = IntensityUnitOf(inputs.Volume);
+  PercentileWindowOf(inputs.Volume, inputs.PercentileWindow, inputs.PercentileLevel);
   return inputs;
 }
 } // namespace vr

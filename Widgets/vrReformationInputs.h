@@ -8,7 +8,6 @@
 
 #include <vtkSmartPointer.h>
 
-#include <map>
 #include <string>
 #include <vector>
 
@@ -34,13 +33,12 @@ struct ReformationInputs
   /** A vessel segmentation (mask, label map or level set, several files combined; vr::ReadSegmentation) whose
    * centerlines the logic extracts (VesselReformationLogic::SetSegmentationNode); null with a centerline node. */
   vtkSmartPointer<VolumeNode> Segmentation;
-  /** What reading the inputs warned about (a segmentation on another grid, resampled). */
+  /** What reading the inputs warned about (a segmentation on another grid, resampled; most centerline points outside
+   * the volume), each in full. */
   std::vector<std::string> Warnings;
   /** The centerline node as the logic converts it (vr::ConvertCenterlineNodeToTree), LPS mm: the ids are the
-   * owner labels' values. */
+   * owner labels' values, and each branch carries its name when the source gave one (the one source of names). */
   itk::CenterlineTree Tree;
-  /** Anatomical names of branch ids when known (the phantoms'); empty otherwise. */
-  std::map<int, std::string> BranchNames;
   /** Where the volume and the centerlines came from: file paths, or the phantom's name. */
   std::string VolumeSource;
   std::string CenterlineSource;
@@ -50,8 +48,12 @@ struct ReformationInputs
   /** The unit the views give the volume's intensities: "HU" for a CT (IntensityUnitOf), empty for other data (an MR
    * angiography's intensities have no unit). */
   std::string IntensityUnit;
+  /** The window and level spanning the volume's 1st to 99th intensity percentile (PercentileWindowOf): the first
+   * view of a volume without HU. */
+  double PercentileWindow{ 0.0 };
+  double PercentileLevel{ 0.0 };
 
-  /** \return "name" of a branch id, or "branch <id>". */
+  /** \return the name of the branch of Tree with id \a id, or "branch <id>" when it has none. */
   std::string
   BranchName(int id) const;
 };
@@ -61,6 +63,14 @@ struct ReformationInputs
  * modality (NRRD, NIfTI and MetaImage do not), so the data decides. */
 std::string
 IntensityUnitOf(VolumeNode * volume);
+
+/** The window (p99 - p1, at least 1) and level ((p1 + p99) / 2) of \a volume's 1st and 99th intensity percentiles:
+ * a window that suits data without a fixed intensity scale, which a few bright voxels do not wash out as the full
+ * range does. Percentiles of every voxel up to 4 million, of an even sample of them beyond.
+ * \param volume a node with scalar image data.
+ * \param window receives the window; \param level the level (both 0 for a node without voxels). */
+void
+PercentileWindowOf(VolumeNode * volume, double & window, double & level);
 
 /** The names of the built-in phantoms the viewer offers (itk::GetCTAPhantomNames(): "runoff", "thorax"). */
 std::vector<std::string>
@@ -114,7 +124,9 @@ WithExtractedCenterlines(const ReformationInputs & inputs, vtkSmartPointer<Cente
 /** Puts a volume node and a centerline node together, converting the centerlines once for the overlays.
  * \param volume the volume node.
  * \param centerlines the centerline node.
- * \return the inputs. Throws vr::InputError when the centerline node does not convert. */
+ * \return the inputs; when most centerline points lie outside the volume, Warnings says so in full.
+ * Throws vr::InputError when the centerline node does not convert, or when none of its points lies in the volume
+ * (vr::CheckCenterlineVolumeFit: the message names both). */
 ReformationInputs
 MakeInputs(vtkSmartPointer<VolumeNode> volume, vtkSmartPointer<CenterlineNode> centerlines);
 } // namespace vr

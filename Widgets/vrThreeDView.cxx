@@ -137,6 +137,9 @@ void
 ThreeDView::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
 {
   m_Inputs = std::move(inputs);
+  // The result on screen belongs to the old data: the camera is fitted to the new data now and again to the new
+  // data's first result (its view direction), not to the old one's.
+  m_Result.reset();
   m_CameraSet = false;
   if (!m_Inputs)
   {
@@ -372,6 +375,14 @@ ThreeDView::ResetCamera()
   camera->OrthogonalizeViewUp();
   m_Renderer->ResetCamera(bounds);
   camera->Zoom(1.1);
+}
+
+std::array<double, 3>
+ThreeDView::GetCameraFocalPoint() const
+{
+  std::array<double, 3> focal{};
+  m_Renderer->GetActiveCamera()->GetFocalPoint(focal.data());
+  return focal;
 }
 
 void

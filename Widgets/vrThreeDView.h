@@ -8,6 +8,7 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <memory>
 
 class QVTKOpenGLNativeWidget;
@@ -92,6 +93,9 @@ public:
   /** \return the centerline tubes drawn (cell data "BranchIds"), or null before any inputs. */
   vtkPolyData *
   GetTubes() const;
+  /** The camera's focal point (RAS mm), for tests of how it is fitted. */
+  std::array<double, 3>
+  GetCameraFocalPoint() const;
 
 signals:
   /** A render finished: its time in seconds and whether it drew the full surface. */

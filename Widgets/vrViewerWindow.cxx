@@ -15,6 +15,15 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QLabel>
+#include <QDir>
+#include <QCloseEvent>
+#include <QKeySequence>
+#include <QTextBrowser>
+#include <QDialog>
+#include <QVBoxLayout>
+#include <QPushButton>
+#include <QHBoxLayout>
+#include <QFrame>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -61,13 +70,33 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   m_Panel->setMinimumWidth(m_Panel->minimumSizeHint().width());
   scroll->setMinimumWidth(m_Panel->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() + 40);
   auto * splitter = new QSplitter(Qt::Horizontal);
+  m_Splitter = splitter;
   splitter->addWidget(scroll);
   splitter->addWidget(m_CPRView);
   splitter->addWidget(m_ThreeDView);
   splitter->setStretchFactor(0, 0);
   splitter->setStretchFactor(1, 3);
   splitter->setStretchFactor(2, 2);
-  setCentralWidget(splitter);
+
+  // Warnings in full above the views, until dismissed or new data is opened.
+  m_WarningBanner = new QFrame;
+  m_WarningBanner->setObjectName(QStringLiteral("warningBanner"));
+  m_WarningBanner->setStyleSheet(QStringLiteral("#warningBanner { background: #fff3c4; border: 1px solid #d9a400; }"));
+  m_WarningText = new QLabel;
+  m_WarningText->setWordWrap(true);
+  m_WarningText->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  auto * dismiss = new QPushButton(tr("Dismiss"));
+  connect(dismiss, &QPushButton::clicked, this, [this] { ClearWarnings(); });
+  auto * bannerLayout = new QHBoxLayout(m_WarningBanner);
+  bannerLayout->addWidget(m_WarningText, 1);
+  bannerLayout->addWidget(dismiss, 0, Qt::AlignTop);
+  m_WarningBanner->setVisible(false);
+  auto * central = new QWidget;
+  auto * centralLayout = new QVBoxLayout(central);
+  centralLayout->setContentsMargins(0, 0, 0, 0);
+  centralLayout->addWidget(m_WarningBanner);
+  centralLayout->addWidget(splitter, 1);
+  setCentralWidget(central);
 
   m_Readout = new QLabel;
   m_Readout->setToolTip(tr("The pixel under the mouse: column and row, its RAS position in mm, the intensity (HU), the "
@@ -110,6 +139,8 @@ ViewerWindow::BuildMenus()
     tr("Open &volume…"), this, [this] { ChooseAndOpenVolume(false); }, QKeySequence::Open);
   file->addAction(tr("Open &DICOM folder…"), this, [this] { ChooseAndOpenVolume(true); });
   file->addAction(tr("Open &centerlines…"), this, [this] { ChooseAndOpenCenterlines(); });
+  file->addAction(tr("Open volume &and centerlines…"), this, [this] { ChooseAndOpenVolumeAndCenterlines(); })
+    ->setObjectName(QStringLiteral("openVolumeAndCenterlines"));
   file->addAction(tr("Open a vessel se&gmentation…"), this, [this] { ChooseAndOpenSegmentation(); })
     ->setObjectName(QStringLiteral("openSegmentation"));
   QMenu * phantoms = file->addMenu(tr("Open &phantom"));
@@ -122,12 +153,22 @@ ViewerWindow::BuildMenus()
       phantoms->addAction(tr("%1: %2").arg(text, description), this, [this, text] { LoadPhantom(text); });
     action->setObjectName(QStringLiteral("openPhantom_%1").arg(text));
   }
+  m_RecentMenu = file->addMenu(tr("Open &recent"));
+  m_RecentMenu->setObjectName(QStringLiteral("recentMenu"));
+  connect(m_RecentMenu, &QMenu::aboutToShow, this, [this] { FillRecentMenu(); });
   file->addSeparator();
   file->addAction(
     tr("&Save outputs…"), this, [this] { ChooseAndSaveOutputs(); }, QKeySequence::Save);
   file->addAction(tr("Save screens&hot…"), this, [this] { ChooseAndSaveScreenshot(); });
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
+
+  QMenu * edit = menuBar()->addMenu(tr("&Edit"));
+  m_UndoOpen = edit->addAction(
+    tr("&Undo open"), this, [this] { UndoOpen(); }, QKeySequence::Undo);
+  m_UndoOpen->setObjectName(QStringLiteral("undoOpen"));
+  m_UndoOpen->setToolTip(tr("Go back to the volume and centerlines shown before the latest open"));
+  m_UndoOpen->setEnabled(false);
 
   QMenu * view = menuBar()->addMenu(tr("&View"));
   view->addAction(tr("&Fit the CPR image"),
@@ -145,7 +186,57 @@ ViewerWindow::BuildMenus()
                     m_ThreeDView->ScheduleRender();
                   });
 
+  // Keys that turn the view and choose a window, as a reader works with the other hand on the mouse.
+  view->addSeparator();
+  const struct
+  {
+    const char * Name;
+    QString      Text;
+    double       Degrees;
+    QKeySequence Key;
+  } turns[] = { { "turnLeft1", tr("Turn left 1°"), -1.0, QKeySequence(Qt::Key_Left) },
+                { "turnRight1", tr("Turn right 1°"), 1.0, QKeySequence(Qt::Key_Right) },
+                { "turnLeft10", tr("Turn left 10°"), -10.0, QKeySequence(Qt::SHIFT | Qt::Key_Left) },
+                { "turnRight10", tr("Turn right 10°"), 10.0, QKeySequence(Qt::SHIFT | Qt::Key_Right) } };
+  for (const auto & turn : turns)
+  {
+    QAction * action = view->addAction(
+      turn.Text, this, [this, degrees = turn.Degrees] { TurnBy(degrees); }, turn.Key);
+    action->setObjectName(QString::fromLatin1(turn.Name));
+    action->setShortcutContext(Qt::WindowShortcut);
+  }
+  QAction * home = view->addAction(
+    tr("Reset the view"),
+    this,
+    [this]
+    {
+      m_Panel->SetAngle(0.0, RequestKind::Final);
+      m_CPRView->FitImage();
+      m_CPRView->Render();
+      m_ThreeDView->ResetCamera();
+      m_ThreeDView->ScheduleRender();
+    },
+    QKeySequence(Qt::Key_Home));
+  home->setObjectName(QStringLiteral("resetView"));
+  QMenu *       presets = view->addMenu(tr("Window &preset"));
+  const QString presetNames[] = { QString::fromLatin1(CTAPreset.Name),
+                                  QString::fromLatin1(BonePreset.Name),
+                                  QString::fromLatin1(SoftTissuePreset.Name),
+                                  QString::fromUtf8(PercentilePresetName) };
+  for (int k = 0; k < 4; ++k)
+  {
+    const QString name = presetNames[k];
+    presets
+      ->addAction(
+        name, this, [this, name] { m_Panel->ApplyPreset(name, 0.0, 0.0); }, QKeySequence(Qt::CTRL | (Qt::Key_1 + k)))
+      ->setObjectName(QStringLiteral("preset%1").arg(k + 1));
+  }
+
   QMenu * help = menuBar()->addMenu(tr("&Help"));
+  help
+    ->addAction(
+      tr("Vessel Reformation &help"), this, [this] { ShowHelp(); }, QKeySequence::HelpContents)
+    ->setObjectName(QStringLiteral("showHelp"));
   help->addAction(tr("&About Vessel Reformation"), this, [this] { ShowAbout(); });
 }
 
@@ -205,7 +296,7 @@ ViewerWindow::ConnectParts()
   connect(m_CPRView,
           &CPRView::windowLevelChanged,
           this,
-          [this](double window, double level) { m_Panel->SetWindowLevel(window, level); });
+          [this](double window, double level) { m_Panel->SetWindowLevel(window, level, /*byHand=*/true); });
   connect(m_CPRView,
           &CPRView::readoutChanged,
           this,
@@ -227,20 +318,43 @@ ViewerWindow::ConnectParts()
           this,
           [this](std::shared_ptr<const ReformationInputs> inputs)
           {
+            // What was on screen can be had back (Edit > Undo open), unless this load was that undo.
+            if (m_CurrentInputs && !m_Undoing)
+            {
+              m_UndoInputs.push_back(m_CurrentInputs);
+              if (m_UndoInputs.size() > MaximumUndoSteps)
+              {
+                m_UndoInputs.erase(m_UndoInputs.begin());
+              }
+            }
+            m_Undoing = false;
+            if (m_PendingRecent && m_Settings)
+            {
+              m_Settings->AddRecent(*m_PendingRecent);
+            }
+            m_PendingRecent.reset();
+            // A new volume opens on the window that suits it; new centerlines or a segmentation keep the user's.
+            const bool newVolume = !m_CurrentInputs || m_CurrentInputs->Volume != inputs->Volume;
+            m_CurrentInputs = inputs;
+            m_UndoOpen->setEnabled(!m_UndoInputs.empty());
             m_Panel->SetInputDescription(QString::fromStdString(inputs->VolumeSource),
                                          QString::fromStdString(inputs->CenterlineSource),
                                          inputs->Segmentation ? QString::fromStdString(inputs->Segmentation->GetName())
                                                               : QString());
             m_ThreeDView->SetInputs(inputs);
             m_Panel->SetIntensityUnit(QString::fromStdString(inputs->IntensityUnit));
+            m_Panel->SetPercentileWindow(inputs->PercentileWindow, inputs->PercentileLevel);
             if (inputs->IsPhantom)
             {
               m_Panel->ShowPhantom(QString::fromStdString(inputs->PhantomName));
-              m_Panel->ApplyPreset(QString::fromLatin1(CTAPreset.Name), 0.0, 0.0);
             }
-            else
+            if (newVolume)
             {
-              m_FullRangeOnNextResult = true;
+              // A CT in the CTA preset; data without HU (MR) on its own 1-99 % percentiles.
+              m_Panel->ApplyPreset(inputs->IntensityUnit == "HU" ? QString::fromLatin1(CTAPreset.Name)
+                                                                 : QString::fromUtf8(PercentilePresetName),
+                                   0.0,
+                                   0.0);
             }
             const QString loaded = inputs->IsPhantom && inputs->CenterlineSource.find('/') == std::string::npos
                                      ? tr("Loaded %1").arg(QString::fromStdString(inputs->VolumeSource))
@@ -248,9 +362,10 @@ ViewerWindow::ConnectParts()
                                          .arg(QFileInfo(QString::fromStdString(inputs->VolumeSource)).fileName(),
                                               QFileInfo(QString::fromStdString(inputs->CenterlineSource)).fileName());
             statusBar()->showMessage(loaded, 5000);
+            ClearWarnings();
             for (const auto & warning : inputs->Warnings)
             {
-              statusBar()->showMessage(tr("Warning: %1").arg(QString::fromStdString(warning)), 15000);
+              ShowWarning(QString::fromStdString(warning));
             }
             RequestReformation(RequestKind::Final);
           });
@@ -258,7 +373,11 @@ ViewerWindow::ConnectParts()
           &ReformationController::inputsFailed,
           this,
           [this](const QString & what, const QString & message)
-          { ShowError(tr("Cannot open %1").arg(what), message); });
+          {
+            m_Undoing = false;
+            m_PendingRecent.reset();
+            ShowError(tr("Cannot open %1").arg(what), message);
+          });
   connect(m_Controller,
           &ReformationController::resultReady,
           this,
@@ -281,7 +400,7 @@ ViewerWindow::ConnectParts()
   connect(m_Controller,
           &ReformationController::warningIssued,
           this,
-          [this](const QString & message) { statusBar()->showMessage(tr("Warning: %1").arg(message), 15000); });
+          [this](const QString & message) { ShowWarning(message); });
   connect(m_Controller,
           &ReformationController::progressChanged,
           this,
@@ -322,6 +441,7 @@ ViewerWindow::OpenFiles(const QString & volume, const QString & centerlines)
 {
   const std::string volumePath = volume.toStdString();
   const std::string centerlinePath = centerlines.toStdString();
+  RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), { QFileInfo(centerlines).absoluteFilePath() }, false });
   m_Controller->LoadInputs([volumePath, centerlinePath]
                            { return MakeInputs(ReadVolumeNode(volumePath), ReadCenterlineNode(centerlinePath)); },
                            tr("%1 and %2").arg(QFileInfo(volume).fileName(), QFileInfo(centerlines).fileName()));
@@ -348,7 +468,6 @@ ViewerWindow::OpenVolume(const QString & path)
         return inputs;
       }
       ReformationInputs inputs = MakeInputs(ReadVolumeNode(volumePath), current->Centerlines);
-      inputs.BranchNames = current->BranchNames;
       inputs.CenterlineSource = current->CenterlineSource;
       return inputs;
     },
@@ -435,6 +554,12 @@ ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringLis
     files.push_back(path.toStdString());
     names << QFileInfo(path).fileName();
   }
+  QStringList absolute;
+  for (const QString & path : segmentation)
+  {
+    absolute << QFileInfo(path).absoluteFilePath();
+  }
+  RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), absolute, true });
   m_Controller->LoadInputs(
     [volumePath, files]
     {
@@ -536,7 +661,7 @@ ViewerWindow::ShowResult(const std::shared_ptr<const ReformationResult> & result
   }
   for (const auto & warning : result->Warnings)
   {
-    statusBar()->showMessage(tr("Warning: %1").arg(QString::fromStdString(warning)), 15000);
+    ShowWarning(QString::fromStdString(warning));
   }
   ShowTimes();
 }
@@ -623,6 +748,178 @@ ViewerWindow::SetErrorHandler(ErrorHandler handler)
 }
 
 void
+ViewerWindow::UseSettings(std::shared_ptr<ViewerSettings> settings)
+{
+  m_Settings = std::move(settings);
+  if (!m_Settings)
+  {
+    return;
+  }
+  const QByteArray geometry = m_Settings->Value(QStringLiteral("window/geometry"));
+  if (!geometry.isEmpty())
+  {
+    restoreGeometry(geometry);
+  }
+  const QByteArray split = m_Settings->Value(QStringLiteral("window/splitter"));
+  if (!split.isEmpty())
+  {
+    m_Splitter->restoreState(split);
+  }
+  const QByteArray overlays = m_Settings->Value(QStringLiteral("display/overlays"));
+  if (overlays.size() == 4)
+  {
+    m_Panel->SetOverlays(CPROverlays{ overlays[0] == '1', overlays[1] == '1', overlays[2] == '1', overlays[3] == '1' });
+  }
+}
+
+void
+ViewerWindow::closeEvent(QCloseEvent * event)
+{
+  if (m_Settings)
+  {
+    m_Settings->SetValue(QStringLiteral("window/geometry"), saveGeometry());
+    m_Settings->SetValue(QStringLiteral("window/splitter"), m_Splitter->saveState());
+    const CPROverlays overlays = m_Panel->GetOverlays();
+    QByteArray        shown;
+    for (const bool on : { overlays.Centerlines, overlays.FixedMask, overlays.OwnerLabels, overlays.DepthMap })
+    {
+      shown.append(on ? '1' : '0');
+    }
+    m_Settings->SetValue(QStringLiteral("display/overlays"), shown);
+    m_Settings->Sync();
+  }
+  QMainWindow::closeEvent(event);
+}
+
+QString
+ViewerWindow::StartFolder() const
+{
+  return m_Settings ? m_Settings->LastFolder() : QString();
+}
+
+void
+ViewerWindow::RememberWhenLoaded(const ViewerSettings::RecentEntry & entry)
+{
+  m_PendingRecent = entry;
+}
+
+void
+ViewerWindow::FillRecentMenu()
+{
+  m_RecentMenu->clear();
+  const auto entries = m_Settings ? m_Settings->Recent() : std::vector<ViewerSettings::RecentEntry>();
+  for (int k = 0; k < static_cast<int>(entries.size()); ++k)
+  {
+    QStringList names;
+    for (const QString & path : entries[k].Centerlines)
+    {
+      names << QFileInfo(path).fileName();
+    }
+    QAction * action =
+      m_RecentMenu->addAction(QStringLiteral("&%1 %2 + %3")
+                                .arg(k + 1)
+                                .arg(QFileInfo(entries[k].Volume).fileName(), names.join(QStringLiteral(", "))),
+                              this,
+                              [this, k] { OpenRecent(k); });
+    action->setToolTip(entries[k].Volume + QStringLiteral(" + ") + entries[k].Centerlines.join(QStringLiteral(", ")));
+  }
+  if (entries.empty())
+  {
+    m_RecentMenu->addAction(tr("(nothing opened yet)"))->setEnabled(false);
+  }
+}
+
+void
+ViewerWindow::OpenRecent(int index)
+{
+  const auto entries = m_Settings ? m_Settings->Recent() : std::vector<ViewerSettings::RecentEntry>();
+  if (index < 0 || index >= static_cast<int>(entries.size()))
+  {
+    return;
+  }
+  const auto & entry = entries[static_cast<std::size_t>(index)];
+  if (entry.Segmentation)
+  {
+    OpenFilesWithSegmentation(entry.Volume, entry.Centerlines);
+  }
+  else
+  {
+    OpenFiles(entry.Volume, entry.Centerlines.front());
+  }
+}
+
+void
+ViewerWindow::ChooseAndOpenVolumeAndCenterlines()
+{
+  const QString volume =
+    QFileDialog::getOpenFileName(this,
+                                 tr("Open a volume (then its centerlines)"),
+                                 StartFolder(),
+                                 tr("Volumes (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd);;All files (*)"));
+  if (volume.isEmpty())
+  {
+    return;
+  }
+  const QString centerlines =
+    QFileDialog::getOpenFileName(this,
+                                 tr("Open the centerlines of %1").arg(QFileInfo(volume).fileName()),
+                                 QFileInfo(volume).absolutePath(),
+                                 tr("Centerlines (*.vtp *.vtk *.mrk.json *.json *.tre *.csv);;All files (*)"));
+  if (centerlines.isEmpty())
+  {
+    return;
+  }
+  if (m_Settings)
+  {
+    m_Settings->RememberFolderOf(centerlines);
+  }
+  OpenFiles(volume, centerlines);
+}
+
+void
+ViewerWindow::UndoOpen()
+{
+  if (m_UndoInputs.empty())
+  {
+    return;
+  }
+  const std::shared_ptr<const ReformationInputs> previous = m_UndoInputs.back();
+  m_UndoInputs.pop_back();
+  m_UndoOpen->setEnabled(!m_UndoInputs.empty());
+  m_Undoing = true;
+  m_Controller->LoadInputs(
+    [previous] { return *previous; },
+    tr("the previous inputs (%1)").arg(QFileInfo(QString::fromStdString(previous->VolumeSource)).fileName()),
+    PanelParameters());
+}
+
+QStringList
+ViewerWindow::GetShownWarnings() const
+{
+  return m_WarningBanner->isHidden() ? QStringList() : m_Warnings;
+}
+
+void
+ViewerWindow::ShowWarning(const QString & message)
+{
+  if (!m_Warnings.contains(message))
+  {
+    m_Warnings.append(message);
+    m_WarningText->setText(m_Warnings.join(QStringLiteral("\n")));
+  }
+  m_WarningBanner->setVisible(true);
+  statusBar()->showMessage(tr("Warning (in full above the views)"), 15000);
+}
+
+void
+ViewerWindow::ClearWarnings()
+{
+  m_Warnings.clear();
+  m_WarningText->clear();
+  m_WarningBanner->setVisible(false);
+}
+
+void
 ViewerWindow::ShowError(const QString & title, const QString & message)
 {
   m_LastError = title + QStringLiteral(": ") + message;
@@ -656,6 +953,66 @@ ViewerWindow::AboutText()
                          "sets window and level, the wheel zooms, middle-drag pans, double-click fits.</p>")
             .arg(-CPRView::DegreesPerPixel);
   return text;
+}
+
+void
+ViewerWindow::TurnBy(double degrees)
+{
+  m_Panel->SetAngle(WrapAngle(m_Panel->GetAngle() + degrees), RequestKind::Final);
+}
+
+QString
+ViewerWindow::HelpText()
+{
+  return tr("<h3>Vessel Reformation: how to use it</h3>"
+            "<p>The CPR view (middle) shows the whole vessel tree cut along a curved surface through every centerline "
+            "and flattened, as seen from the view direction; the 3D view (right) shows that surface in place. The "
+            "depth of the surface is relaxed by a bilateral filter so that small seams between vessels vanish while "
+            "large depth jumps stay.</p>"
+            "<h4>Mouse in the CPR view</h4><ul>"
+            "<li>Left-drag: turn the view about the up axis (%1° per pixel).</li>"
+            "<li>Right-drag: window (horizontal) and level (vertical); the preset then reads Custom.</li>"
+            "<li>Wheel: zoom. Middle-drag: pan. Double-click: fit the image.</li>"
+            "<li>Hover: the status bar reads the pixel, its RAS position, intensity, depth and the vessel's name.</li>"
+            "</ul><h4>Keys</h4><ul>"
+            "<li>Left / Right: turn by 1°; with Shift by 10°.</li>"
+            "<li>Home: angle 0, image fitted, 3D camera reset.</li>"
+            "<li>Ctrl+1 … Ctrl+4: CTA, bone, soft tissue, 1–99 % window.</li>"
+            "<li>Ctrl+O: open a volume. Ctrl+Z: undo the latest open. Ctrl+S: save the outputs. F1: this page.</li>"
+            "</ul><h4>The panel</h4><ul>"
+            "<li>Inputs: the volume, the centerlines or a vessel segmentation (centerlines are extracted from it).</li>"
+            "<li>View: angle, up axis, image size and pixel spacing.</li>"
+            "<li>Filter: relaxation w, jump threshold J (mm) or anisotropy a, iterations or the steady solver, "
+            "backend (CPU or OpenCL), lumen fixing.</li>"
+            "<li>Sampling: interpolation and slab (MIP, MinIP, mean).</li>"
+            "<li>Display: window presets, overlays (centerlines, fixed mask, owner labels, depth) and comparison "
+            "with the unfiltered image.</li></ul>"
+            "<p>Warnings about the inputs appear in full in a banner above the views.</p>"
+            "<p><b>Method:</b> C. Kretschmer, B. Preim, M. Stamminger, <i>Bilateral Depth Filtering for Enhanced "
+            "Vessel Reformation</i>, EuroVis 2014 short paper.</p>")
+    .arg(-CPRView::DegreesPerPixel);
+}
+
+void
+ViewerWindow::ShowHelp()
+{
+  auto * dialog = findChild<QDialog *>(QStringLiteral("helpDialog"));
+  if (dialog == nullptr)
+  {
+    dialog = new QDialog(this);
+    dialog->setObjectName(QStringLiteral("helpDialog"));
+    dialog->setWindowTitle(tr("Vessel Reformation help"));
+    auto * browser = new QTextBrowser;
+    browser->setHtml(HelpText());
+    auto * close = new QPushButton(tr("Close"));
+    connect(close, &QPushButton::clicked, dialog, &QDialog::close);
+    auto * layout = new QVBoxLayout(dialog);
+    layout->addWidget(browser);
+    layout->addWidget(close, 0, Qt::AlignRight);
+    dialog->resize(640, 620);
+  }
+  dialog->show();
+  dialog->raise();
 }
 
 void
@@ -725,13 +1082,17 @@ void
 ViewerWindow::ChooseAndOpenVolume(bool dicomFolder)
 {
   const QString path =
-    dicomFolder ? QFileDialog::getExistingDirectory(this, tr("Open a DICOM series folder"))
+    dicomFolder ? QFileDialog::getExistingDirectory(this, tr("Open a DICOM series folder"), StartFolder())
                 : QFileDialog::getOpenFileName(this,
                                                tr("Open a volume"),
-                                               QString(),
+                                               StartFolder(),
                                                tr("Volumes (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd);;All files (*)"));
   if (!path.isEmpty())
   {
+    if (m_Settings)
+    {
+      m_Settings->RememberFolderOf(path);
+    }
     OpenVolume(path);
   }
 }
@@ -742,10 +1103,14 @@ ViewerWindow::ChooseAndOpenCenterlines()
   const QString path =
     QFileDialog::getOpenFileName(this,
                                  tr("Open centerlines"),
-                                 QString(),
+                                 StartFolder(),
                                  tr("Centerlines (*.vtp *.vtk *.mrk.json *.json *.tre *.csv);;All files (*)"));
   if (!path.isEmpty())
   {
+    if (m_Settings)
+    {
+      m_Settings->RememberFolderOf(path);
+    }
     OpenCenterlines(path);
   }
 }
@@ -756,10 +1121,14 @@ ViewerWindow::ChooseAndOpenSegmentation()
   const QStringList paths = QFileDialog::getOpenFileNames(
     this,
     tr("Open a vessel segmentation (several files are combined)"),
-    QString(),
+    StartFolder(),
     tr("Segmentations: label maps, masks, level sets (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;All files (*)"));
   if (!paths.isEmpty())
   {
+    if (m_Settings)
+    {
+      m_Settings->RememberFolderOf(paths.front());
+    }
     OpenSegmentation(paths);
   }
 }
@@ -767,7 +1136,7 @@ ViewerWindow::ChooseAndOpenSegmentation()
 void
 ViewerWindow::ChooseAndSaveOutputs()
 {
-  const QString folder = QFileDialog::getExistingDirectory(this, tr("Save the outputs into a folder"));
+  const QString folder = QFileDialog::getExistingDirectory(this, tr("Save the outputs into a folder"), StartFolder());
   if (!folder.isEmpty())
   {
     SaveOutputs(folder);
@@ -777,8 +1146,8 @@ ViewerWindow::ChooseAndSaveOutputs()
 void
 ViewerWindow::ChooseAndSaveScreenshot()
 {
-  const QString path =
-    QFileDialog::getSaveFileName(this, tr("Save a screenshot"), QStringLiteral("viewer.png"), tr("PNG (*.png)"));
+  const QString path = QFileDialog::getSaveFileName(
+    this, tr("Save a screenshot"), QDir(StartFolder()).filePath(QStringLiteral("viewer.png")), tr("PNG (*.png)"));
   if (path.isEmpty())
   {
     return;

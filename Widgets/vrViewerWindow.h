@@ -7,15 +7,22 @@
 #include "vrReformationController.h"
 #include "vrThreeDView.h"
 
+#include "vrViewerSettings.h"
+
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <optional>
 #include <memory>
+#include <vector>
 
+class QCloseEvent;
 class QLabel;
+class QMenu;
+class QSplitter;
 class QProgressBar;
 class QTimer;
 
@@ -64,6 +71,28 @@ public:
   void
   OpenFilesWithSegmentation(const QString & volume, const QStringList & segmentation);
 
+  /** Remembers and restores what ViewerSettings keeps (window geometry, panel split, overlays, the latest folder,
+   * File > Open recent) in \a settings; without it (the default, and in scripted runs) nothing is remembered. Call
+   * once, before show(). */
+  void
+  UseSettings(std::shared_ptr<ViewerSettings> settings);
+  /** File > Open recent's entry \a index (0: the latest). */
+  void
+  OpenRecent(int index);
+
+  /** Edit > Undo open: loads again the inputs that were on screen before the latest successful open (several steps
+   * back, up to MaximumUndoSteps), as they were: a volume and centerlines that looked wrong together are undone in
+   * one step. Does nothing when there is nothing to undo. */
+  void
+  UndoOpen();
+  /** \return whether UndoOpen() has inputs to go back to. */
+  bool
+  CanUndoOpen() const
+  {
+    return !m_UndoInputs.empty();
+  }
+  static constexpr std::size_t MaximumUndoSteps = 10;
+
   /** Sends the panel's parameters to the logic. */
   void
   RequestReformation(RequestKind kind);
@@ -88,6 +117,13 @@ public:
   {
     return m_LastError;
   }
+
+  /** \return the help page F1 opens (HTML): mouse and keys, what each panel section does, the paper's citation. */
+  static QString
+  HelpText();
+  /** Turns the view by \a degrees from the panel's angle (the arrow keys: 1°, with Shift 10°). */
+  void
+  TurnBy(double degrees);
 
   /** \return the module description with the paper's citation, as the About box shows it (HTML). */
   static QString
@@ -116,6 +152,9 @@ public:
   /** \return whether the status bar shows the progress bar now. */
   bool
   IsProgressShown() const;
+  /** \return the warnings the banner above the views shows now, each in full (empty when it is hidden). */
+  QStringList
+  GetShownWarnings() const;
 
   /** How long an update runs before the status bar shows its progress, in seconds. Showing the bar repaints the
    * window, which Qt composes again with its two OpenGL views: for the angle changes of a drag, which take about a
@@ -127,15 +166,36 @@ signals:
   void
   errorShown(const QString & title, const QString & message);
 
+protected:
+  void
+  closeEvent(QCloseEvent * event) override;
+
 private:
   void
   BuildMenus();
+  /** File > Open recent, from the settings. */
+  void
+  FillRecentMenu();
+  /** Adds an opened pair to the settings' recent list once it has loaded. */
+  void
+  RememberWhenLoaded(const ViewerSettings::RecentEntry & entry);
+  /** The folder file dialogs start in. */
+  QString
+  StartFolder() const;
+  void
+  ChooseAndOpenVolumeAndCenterlines();
   void
   ConnectParts();
   void
   ApplyDisplay();
   void
   ShowError(const QString & title, const QString & message);
+  /** Adds \a message to the warning banner (whole, word-wrapped: the status bar cuts long text off) unless it shows
+   * it already, and says so briefly in the status bar. */
+  void
+  ShowWarning(const QString & message);
+  void
+  ClearWarnings();
   void
   ShowResult(const std::shared_ptr<const ReformationResult> & result);
   void
@@ -148,6 +208,8 @@ private:
   ShowBackendMessage();
   void
   ShowAbout();
+  void
+  ShowHelp();
   void
   ChooseAndOpenVolume(bool dicomFolder);
   void
@@ -162,17 +224,29 @@ private:
   void
   ChooseAndSaveScreenshot();
 
-  ReformationController * m_Controller{ nullptr };
-  ModulePanel *           m_Panel{ nullptr };
-  CPRView *               m_CPRView{ nullptr };
-  ThreeDView *            m_ThreeDView{ nullptr };
-  QLabel *                m_Readout{ nullptr };
-  QLabel *                m_Times{ nullptr };
-  QProgressBar *          m_Progress{ nullptr };
-  QTimer *                m_ProgressDelay{ nullptr };
-  ErrorHandler            m_ErrorHandler;
-  QString                 m_LastError;
-  double                  m_DragStartAngle{ 0.0 };
+  ReformationController *                    m_Controller{ nullptr };
+  ModulePanel *                              m_Panel{ nullptr };
+  CPRView *                                  m_CPRView{ nullptr };
+  ThreeDView *                               m_ThreeDView{ nullptr };
+  QLabel *                                   m_Readout{ nullptr };
+  QWidget *                                  m_WarningBanner{ nullptr };
+  QSplitter *                                m_Splitter{ nullptr };
+  QMenu *                                    m_RecentMenu{ nullptr };
+  std::shared_ptr<ViewerSettings>            m_Settings;
+  std::optional<ViewerSettings::RecentEntry> m_PendingRecent;
+  QAction *                                  m_UndoOpen{ nullptr };
+  /** The inputs shown before each successful open, the latest last; and those shown now. */
+  std::vector<std::shared_ptr<const ReformationInputs>> m_UndoInputs;
+  std::shared_ptr<const ReformationInputs>              m_CurrentInputs;
+  bool                                                  m_Undoing{ false };
+  QLabel *                                              m_WarningText{ nullptr };
+  QStringList                                           m_Warnings;
+  QLabel *                                              m_Times{ nullptr };
+  QProgressBar *                                        m_Progress{ nullptr };
+  QTimer *                                              m_ProgressDelay{ nullptr };
+  ErrorHandler                                          m_ErrorHandler;
+  QString                                               m_LastError;
+  double                                                m_DragStartAngle{ 0.0 };
   /** While a left-drag in the CPR view turns the view, its steps go to the controller directly and the panel shows
    * the angle of each image as it is shown: a change of the panel repaints the window, which Qt composes with its
    * OpenGL views, and at the mouse's 60 Hz those repaints took the processor the logic needs. */

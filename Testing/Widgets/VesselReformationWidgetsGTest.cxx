@@ -7,6 +7,7 @@
 
 #include "itkCPRViewGeometry.h"
 #include "itkImageFileWriter.h"
+#include "vrCenterlineIO.h"
 #include "vrCoordinateFrames.h"
 #include "vrCenterlineExtraction.h"
 #include "vrImageIO.h"
@@ -22,6 +23,7 @@
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
+#include <QDialog>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMessageBox>
@@ -207,6 +209,175 @@ TEST_F(WidgetsTest, ChangingTheWindowRerunsNothingAndRedrawsThroughTheNewWindow)
   EXPECT_DOUBLE_EQ(Window().GetPanel()->GetWindowSpinBox()->value(), 600.0);
   const Runs after = Difference(Controller().GetStageExecutionCounts(), before);
   EXPECT_EQ(after.Conversion + after.Depth + after.Relax + after.Resample + after.Surface, 0u);
+}
+
+TEST_F(WidgetsTest, ARightDragTurnsThePresetIntoCustom)
+{
+  ASSERT_TRUE(Window().GetPanel()->ApplyPreset(QStringLiteral("Bone"), 0.0, 0.0));
+  EXPECT_EQ(Window().GetPanel()->GetPresetName(), QStringLiteral("Bone"));
+  QWidget *     target = Window().GetCPRView()->GetRenderWidget();
+  const QPointF start(200.0, 300.0);
+  SendMouse(target, QEvent::MouseButtonPress, start, Qt::RightButton, Qt::RightButton);
+  SendMouse(target, QEvent::MouseMove, start + QPointF(128.0, -64.0), Qt::NoButton, Qt::RightButton);
+  SendMouse(target, QEvent::MouseButtonRelease, start + QPointF(128.0, -64.0), Qt::RightButton, Qt::NoButton);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  // Bone's W 2000, L 500 dragged: 2000 x (1 + 128 / 256), 500 - 2000 x (-64) / 512.
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetWindowSpinBox()->value(), 3000.0);
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetLevel(), 750.0);
+  EXPECT_EQ(Window().GetPanel()->GetPresetName(), QStringLiteral("Custom"));
+}
+
+/** The value at rank round(q (n - 1)) of every voxel of \a volume: the percentile rule written out plainly. */
+double
+PlainPercentile(const VolumeImageType * volume, double q)
+{
+  std::vector<float> values(volume->GetBufferPointer(),
+                            volume->GetBufferPointer() + volume->GetLargestPossibleRegion().GetNumberOfPixels());
+  std::sort(values.begin(), values.end());
+  return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
+}
+
+TEST_F(WidgetsTest, ACTOpensInTheCTAPresetAnMRAOnItsPercentilesAndAPresetSurvivesASegmentation)
+{
+  const std::string data = AortaDataFolder();
+  ASSERT_FALSE(data.empty()) << "the VMTK aorta data beside the checkout";
+  vr::test::ScopedTemporaryFolder folder;
+  // A CT from files (not a phantom): the small phantom written as NRRD with its centerlines.
+  const std::string ct = folder.File("ct.nrrd");
+  const std::string ctCenterlines = folder.File("ct-centerlines.vtp");
+  WriteVolume(ConvertVolumeNodeToItkImage(SmallPhantomInputs().Volume), ct);
+  WriteCenterlines(SmallPhantomInputs().Tree, ctCenterlines);
+  ASSERT_TRUE(Window().GetPanel()->ApplyPreset(QStringLiteral("Bone"), 0.0, 0.0));
+  auto before = Controller().GetInputs();
+  Window().OpenFiles(QString::fromStdString(ct), QString::fromStdString(ctCenterlines));
+  ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != before; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_EQ(Window().GetPanel()->GetPresetName(), QStringLiteral("CTA"));
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetWindow(), CTAPreset.Window);
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetLevel(), CTAPreset.Level);
+
+  // The MR angiography: no HU, so its 1st to 99th percentile, counted here over every voxel.
+  const std::string mra = data + "/aorta.mha";
+  before = Controller().GetInputs();
+  Window().OpenFiles(QString::fromStdString(mra), QString::fromStdString(data + "/aorta-centerline-branches.vtp"));
+  ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != before; }, 120.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const auto   volume = ReadVolume(mra);
+  const double low = PlainPercentile(volume, 0.01);
+  const double high = PlainPercentile(volume, 0.99);
+  ASSERT_GT(high - low, 100.0);
+  EXPECT_EQ(Window().GetPanel()->GetPresetName(), QString::fromUtf8(PercentilePresetName));
+  EXPECT_NEAR(Window().GetCPRView()->GetWindow(), high - low, 1e-3 * (high - low));
+  EXPECT_NEAR(Window().GetCPRView()->GetLevel(), 0.5 * (low + high), 1e-3 * (high - low));
+
+  // A preset chosen by the user stays when a segmentation replaces the centerlines.
+  ASSERT_TRUE(Window().GetPanel()->ApplyPreset(QStringLiteral("Soft tissue"), 0.0, 0.0));
+  before = Controller().GetInputs();
+  Window().OpenSegmentation({ QString::fromStdString(data + "/aorta-final-levelset.mha") });
+  ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != before; }, 120.0));
+  ASSERT_TRUE(WaitUntilSettled(Window(), 300.0));
+  EXPECT_EQ(Window().GetPanel()->GetPresetName(), QStringLiteral("Soft tissue"));
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetWindow(), SoftTissuePreset.Window);
+}
+
+TEST_F(WidgetsTest, ArrowKeysTurnByOneAndTenDegreesAndF1OpensTheHelpPage)
+{
+  QWidget * target = Window().GetCPRView()->GetRenderWidget();
+  target->setFocus();
+  QApplication::setActiveWindow(&Window());
+  const double start = Window().GetPanel()->GetAngle();
+  QTest::keyClick(target, Qt::Key_Right);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngle(), start + 1.0);
+  QTest::keyClick(target, Qt::Key_Left, Qt::ShiftModifier);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_DOUBLE_EQ(Window().GetPanel()->GetAngle(), start + 1.0 - 10.0);
+  // The image follows: the logic's CPR at that angle.
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetResult()->Outputs.View.GetAngleInDegrees(), start - 9.0);
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(start - 9.0)).CPR);
+  // Ctrl+2: the bone window.
+  QTest::keyClick(target, Qt::Key_2, Qt::ControlModifier);
+  EXPECT_EQ(Window().GetPanel()->GetPresetName(), QStringLiteral("Bone"));
+  EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetWindow(), BonePreset.Window);
+
+  QTest::keyClick(target, Qt::Key_F1);
+  auto * help = Window().findChild<QDialog *>(QStringLiteral("helpDialog"));
+  ASSERT_NE(help, nullptr);
+  EXPECT_TRUE(help->isVisible());
+  const QString text = ViewerWindow::HelpText();
+  for (const char * part : { "Left / Right", "Right-drag", "Kretschmer", "Filter", "Display" })
+  {
+    EXPECT_TRUE(text.contains(QString::fromUtf8(part))) << part;
+  }
+  help->close();
+}
+
+TEST(ViewerSettingsTest, FoldersRecentFilesGeometryAndOverlaysSurviveARestart)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const std::string               volume = folder.File("ct.nrrd");
+  const std::string               centerlines = folder.File("ct-centerlines.vtp");
+  WriteVolume(ConvertVolumeNodeToItkImage(SmallPhantomInputs().Volume), volume);
+  WriteCenterlines(SmallPhantomInputs().Tree, centerlines);
+  const QString ini = QString::fromStdString(folder.File("viewer.ini"));
+  {
+    auto window = MakeWindowOnSmallPhantom(0.0);
+    window->UseSettings(std::make_shared<ViewerSettings>(ini));
+    const auto before = window->GetController()->GetInputs();
+    window->OpenFiles(QString::fromStdString(volume), QString::fromStdString(centerlines));
+    ASSERT_TRUE(WaitUntil([&] { return window->GetController()->GetInputs() != before; }, 60.0));
+    ASSERT_TRUE(WaitUntilSettled(*window));
+    window->resize(1234, 777);
+    window->GetPanel()->SetOverlays(CPROverlays{ false, true, false, true });
+    window->close();
+  }
+  ASSERT_TRUE(std::filesystem::exists(ini.toStdString())) << "nothing was written";
+
+  // A new window on the same settings: what a restart sees.
+  ViewerSettings settings(ini);
+  const auto     recent = settings.Recent();
+  ASSERT_EQ(recent.size(), 1u);
+  EXPECT_EQ(recent[0].Volume.toStdString(), volume);
+  ASSERT_EQ(recent[0].Centerlines.size(), 1);
+  EXPECT_EQ(recent[0].Centerlines[0].toStdString(), centerlines);
+  EXPECT_FALSE(recent[0].Segmentation);
+
+  auto window = std::make_unique<ViewerWindow>();
+  window->UseSettings(std::make_shared<ViewerSettings>(ini));
+  window->show();
+  EXPECT_EQ(window->size(), QSize(1234, 777));
+  const CPROverlays overlays = window->GetPanel()->GetOverlays();
+  EXPECT_FALSE(overlays.Centerlines);
+  EXPECT_TRUE(overlays.FixedMask);
+  EXPECT_FALSE(overlays.OwnerLabels);
+  EXPECT_TRUE(overlays.DepthMap);
+  // File > Open recent's first entry opens the pair again.
+  window->OpenRecent(0);
+  ASSERT_TRUE(WaitUntil([&] { return window->GetCPRView()->GetResult() != nullptr; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(*window));
+  EXPECT_EQ(window->GetController()->GetInputs()->VolumeSource, volume);
+  EXPECT_EQ(window->GetController()->GetInputs()->CenterlineSource, centerlines);
+}
+
+TEST(ViewerSettingsTest, RecentKeepsEightLatestFirstWithoutRepeatsAndTheFolderOfTheLatestFile)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  ViewerSettings                  settings(QString::fromStdString(folder.File("viewer.ini")));
+  for (int k = 0; k < 10; ++k)
+  {
+    settings.AddRecent({ QStringLiteral("/data/v%1.nrrd").arg(k), { QStringLiteral("/data/c%1.vtp").arg(k) }, false });
+  }
+  settings.AddRecent({ QStringLiteral("/data/v5.nrrd"), { QStringLiteral("/data/c5.vtp") }, false });
+  const auto recent = settings.Recent();
+  ASSERT_EQ(recent.size(), 8u);
+  EXPECT_EQ(recent[0].Volume, QStringLiteral("/data/v5.nrrd"));
+  EXPECT_EQ(recent[1].Volume, QStringLiteral("/data/v9.nrrd"));
+  // v9 .. v2 were the eight latest; v5 moved to the front: v5 v9 v8 v7 v6 v4 v3 v2, no second v5.
+  EXPECT_EQ(recent[5].Volume, QStringLiteral("/data/v4.nrrd"));
+  EXPECT_EQ(recent[7].Volume, QStringLiteral("/data/v2.nrrd"));
+  settings.RememberFolderOf(QString::fromStdString(folder.File("viewer.ini")));
+  EXPECT_EQ(settings.LastFolder().toStdString(),
+            std::filesystem::path(folder.File("viewer.ini")).parent_path().string());
 }
 
 TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
@@ -587,6 +758,107 @@ TEST_F(WidgetsTest, OpeningACorruptFileShowsTheLogicsMessageAndThePreviousDataSt
   ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), TestParameters(-30.0)).CPR);
 }
 
+/** The small phantom's exact centerlines moved \a shift mm along LPS z, written as a .vtp into \a folder; \a outside
+ * receives the fraction of their points outside the phantom's volume, counted here from the volume's grid. */
+std::string
+WriteShiftedPhantomCenterlines(const vr::test::ScopedTemporaryFolder & folder, double shift, double & outside)
+{
+  itk::CenterlineTree tree = SmallPhantomInputs().Tree;
+  const auto          volume = ConvertVolumeNodeToItkImage(SmallPhantomInputs().Volume);
+  std::size_t         out = 0;
+  std::size_t         all = 0;
+  for (auto & branch : tree.GetBranches())
+  {
+    for (auto & point : branch.Points)
+    {
+      point[2] += shift;
+      itk::ContinuousIndex<double, 3> index;
+      volume->TransformPhysicalPointToContinuousIndex(point, index);
+      out += volume->GetLargestPossibleRegion().IsInside(index) ? 0 : 1;
+      ++all;
+    }
+  }
+  outside = static_cast<double>(out) / static_cast<double>(all);
+  const std::string path = folder.File("shifted-" + std::to_string(static_cast<int>(shift)) + ".vtp");
+  WriteCenterlines(tree, path);
+  return path;
+}
+
+TEST_F(WidgetsTest, CenterlinesWithNoPointInTheVolumeAreRefusedWithADialogAndTheDataStays)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  double                          outside = 0.0;
+  const std::string               far = WriteShiftedPhantomCenterlines(folder, 5000.0, outside);
+  ASSERT_EQ(outside, 1.0);
+  const auto inputsBefore = Controller().GetInputs();
+  const auto shownBefore = Window().GetCPRView()->GetResult();
+  int        errors = 0;
+  QObject::connect(&Window(), &ViewerWindow::errorShown, &Window(), [&] { ++errors; });
+  Window().OpenCenterlines(QString::fromStdString(far));
+  ASSERT_TRUE(WaitUntil([&] { return errors == 1; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  QMessageBox * dialog = ErrorDialog(Window());
+  ASSERT_NE(dialog, nullptr);
+  const std::string text = dialog->text().toStdString();
+  EXPECT_NE(text.find("shifted-5000.vtp"), std::string::npos) << text;
+  EXPECT_NE(text.find("none of the"), std::string::npos) << text;
+  EXPECT_NE(text.find("other coordinate system"), std::string::npos) << text;
+  dialog->close();
+  EXPECT_EQ(Controller().GetInputs(), inputsBefore);
+  EXPECT_EQ(Window().GetCPRView()->GetResult(), shownBefore);
+  EXPECT_FALSE(Window().CanUndoOpen()) << "nothing was replaced, so there is nothing to undo";
+}
+
+TEST_F(WidgetsTest, CenterlinesMostlyOutsideShowTheirWholeWarningAndUndoBringsThePreviousPairBack)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  // Moved up until between 60 and 90 % of the points leave the volume (counted by the helper).
+  double      outside = 0.0;
+  std::string moved;
+  for (double shift = 50.0; shift < 1500.0 && !(outside > 0.6 && outside < 0.9); shift += 50.0)
+  {
+    moved = WriteShiftedPhantomCenterlines(folder, shift, outside);
+  }
+  ASSERT_GT(outside, 0.6);
+  ASSERT_LT(outside, 0.9);
+  const auto inputsBefore = Controller().GetInputs();
+  EXPECT_TRUE(Window().GetShownWarnings().isEmpty());
+  Window().OpenCenterlines(QString::fromStdString(moved));
+  ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != inputsBefore; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const QStringList warnings = Window().GetShownWarnings();
+  ASSERT_FALSE(warnings.isEmpty());
+  const std::string warning = warnings.join(QStringLiteral("\n")).toStdString();
+  EXPECT_NE(warning.find(std::filesystem::path(moved).filename().string()), std::string::npos) << warning;
+  EXPECT_NE(warning.find("points lie outside"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("The reformation continues."), std::string::npos) << "cut short: " << warning;
+  // The banner shows the text whole on screen, not only in a list.
+  const QLabel * label = nullptr;
+  for (const QLabel * candidate : Window().findChildren<QLabel *>())
+  {
+    if (candidate->isVisible() && candidate->wordWrap() && candidate->text().contains(QStringLiteral("continues")))
+    {
+      label = candidate;
+    }
+  }
+  ASSERT_NE(label, nullptr) << "no visible banner holds the warning";
+
+  // Edit > Undo open: the phantom's own centerlines again, and their image.
+  ASSERT_TRUE(Window().CanUndoOpen());
+  QAction * undo = Window().findChild<QAction *>(QStringLiteral("undoOpen"));
+  ASSERT_NE(undo, nullptr);
+  const auto movedInputs = Controller().GetInputs();
+  undo->trigger();
+  ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != movedInputs; }, 60.0));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_EQ(Controller().GetInputs()->Tree, inputsBefore->Tree);
+  EXPECT_EQ(Controller().GetInputs()->Centerlines, inputsBefore->Centerlines);
+  EXPECT_EQ(Controller().GetInputs()->Volume, inputsBefore->Volume);
+  EXPECT_TRUE(Window().GetShownWarnings().isEmpty());
+  EXPECT_FALSE(Window().CanUndoOpen());
+  ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), Window().GetCPRView()->GetResult()->Parameters).CPR);
+}
+
 /** The distinct values of a polydata's cell array. */
 std::set<int>
 DistinctCellValues(vtkPolyData * data, const char * name)
@@ -836,9 +1108,9 @@ TEST_F(WidgetsTest, TheFileMenuOpensTheThoracicPhantomAndShowsTheLogicsCPR)
   EXPECT_NE(inputs->VolumeSource.find("thorax"), std::string::npos) << inputs->VolumeSource;
   EXPECT_EQ(Window().GetPanel()->GetUi().phantomCombo->currentText(), QStringLiteral("thorax"));
   bool arch = false;
-  for (const auto & [id, name] : inputs->BranchNames)
+  for (const auto & branch : inputs->Tree.GetBranches())
   {
-    arch = arch || name.find("subclavian") != std::string::npos;
+    arch = arch || inputs->BranchName(branch.Id).find("subclavian") != std::string::npos;
   }
   EXPECT_TRUE(arch) << "the thoracic phantom's arteries by name";
   const auto shown = Window().GetCPRView()->GetResult();

@@ -1,0 +1,165 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The hover readout names the vessel under the mouse: on both built-in phantoms, every fixed pixel of the CPR reads
+// the name the phantom gives the vessel that runs there, on the right side of the patient. The reference is the
+// phantom's own tree (its ids and its id -> name table), which never went through a centerline node, and the
+// readout's RAS position: an id renumbered on the way to the owner labels would name a different vessel.
+#include "vrWidgetsTestSupport.h"
+
+#include "itkCTAPhantom.h"
+#include "vrCoordinateFrames.h"
+#include "vrPixelReadout.h"
+
+#include <QEvent>
+#include <QVTKOpenGLNativeWidget.h>
+
+#include <vtkImageData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace
+{
+using namespace vr;
+using namespace vr::test;
+
+/** Distance (mm) from \a point to the polyline of \a branch. */
+double
+DistanceToBranch(const itk::CenterlineBranch::PointType & point, const itk::CenterlineBranch & branch)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < branch.Points.size(); ++k)
+  {
+    const auto   a = branch.Points[k];
+    const auto   segment = branch.Points[k + 1] - a;
+    const double length2 = segment * segment;
+    const double t = length2 > 0.0 ? std::clamp(((point - a) * segment) / length2, 0.0, 1.0) : 0.0;
+    best = std::min(best, point.EuclideanDistanceTo(a + segment * t));
+  }
+  return best;
+}
+
+/** The checks for one phantom shown in \a window: returns the original ids whose name was read at least once. */
+std::set<int>
+ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom & phantom)
+{
+  const auto result = window.GetCPRView()->GetResult();
+  EXPECT_TRUE(result);
+  if (!result)
+  {
+    return {};
+  }
+  vtkImageData * mask = result->Outputs.FixedMask->GetImageData();
+  int            dimensions[3];
+  mask->GetDimensions(dimensions);
+  std::set<int> named;
+  int           checked = 0;
+  int           hovered = 0;
+  for (int j = 0; j < dimensions[1]; ++j)
+  {
+    for (int i = 0; i < dimensions[0]; ++i)
+    {
+      if (mask->GetScalarComponentAsDouble(i, j, 0, 0) == 0.0)
+      {
+        continue;
+      }
+      const PixelReadout readout = ReadPixel(*result, false, i, j);
+      EXPECT_TRUE(readout.Inside);
+      EXPECT_GT(readout.Branch, 0) << "a fixed pixel belongs to a branch";
+      // The vessel there, from the phantom's own tree: the nearest one, unless another is nearly as near (near a
+      // junction, or where two vessels overlap in depth, either name is right).
+      const itk::CenterlineBranch::PointType lps = RASToLPS(
+        itk::CenterlineBranch::PointType(std::array<double, 3>{ readout.RAS[0], readout.RAS[1], readout.RAS[2] }));
+      std::multimap<double, int> byDistance;
+      for (const auto & branch : phantom.Tree.GetBranches())
+      {
+        byDistance.emplace(DistanceToBranch(lps, branch), branch.Id);
+      }
+      const auto nearest = byDistance.begin();
+      auto       other = std::next(nearest);
+      while (other != byDistance.end() && phantom.BranchName(other->second) == phantom.BranchName(nearest->second))
+      {
+        ++other;
+      }
+      if (other != byDistance.end() && other->first < nearest->first + 3.0)
+      {
+        continue;
+      }
+      const std::string expected = phantom.BranchName(nearest->second);
+      EXPECT_EQ(readout.BranchName, expected) << "pixel (" << i << ", " << j << ") at RAS (" << readout.RAS[0] << ", "
+                                              << readout.RAS[1] << ", " << readout.RAS[2] << ")";
+      // The patient's left is RAS -x: a vessel named left must lie there.
+      if (expected.rfind("left ", 0) == 0)
+      {
+        EXPECT_LT(readout.RAS[0], 0.0) << expected << " at pixel (" << i << ", " << j << ")";
+      }
+      if (expected.rfind("right ", 0) == 0)
+      {
+        EXPECT_GT(readout.RAS[0], 0.0) << expected << " at pixel (" << i << ", " << j << ")";
+      }
+      ++checked;
+      // Once per vessel, the same through the mouse: the hover readout is this readout.
+      if (named.insert(nearest->second).second)
+      {
+        const QPointF position = window.GetCPRView()->WidgetPositionOfPixel(i, j, false);
+        SendMouse(window.GetCPRView()->GetRenderWidget(),
+                  QEvent::MouseMove,
+                  QPointF(std::floor(position.x()), std::floor(position.y())),
+                  Qt::NoButton,
+                  Qt::NoButton);
+        const PixelReadout & shown = window.GetCPRView()->GetReadout();
+        EXPECT_EQ(shown.Column, i);
+        EXPECT_EQ(shown.Row, j);
+        EXPECT_EQ(shown.BranchName, expected);
+        EXPECT_TRUE(shown.ToText().contains(QString::fromStdString(expected))) << shown.ToText().toStdString();
+        ++hovered;
+      }
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_EQ(hovered, static_cast<int>(named.size()));
+  return named;
+}
+
+TEST(BranchNameReadout, EveryFixedPixelOfTheRunoffPhantomNamesItsVesselOnTheRightSide)
+{
+  const auto window = MakeWindowOnSmallPhantom(30.0);
+  ASSERT_TRUE(window->GetCPRView()->GetResult()) << window->GetLastError().toStdString();
+  const itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Runoff, 3.0);
+  const std::set<int>   named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom);
+  // Every vessel of the tree is seen and named at 30 degrees, both legs.
+  std::set<std::string> names;
+  for (const int id : named)
+  {
+    names.insert(phantom.BranchName(id));
+  }
+  for (const auto & branch : phantom.Tree.GetBranches())
+  {
+    EXPECT_EQ(names.count(phantom.BranchName(branch.Id)), 1u) << phantom.BranchName(branch.Id) << " never read";
+  }
+}
+
+TEST(BranchNameReadout, EveryFixedPixelOfTheThoracicPhantomNamesItsArteryOnTheRightSide)
+{
+  const auto window = MakeWindowOnSmallPhantom(0.0);
+  ASSERT_TRUE(window->GetCPRView()->GetResult()) << window->GetLastError().toStdString();
+  const auto runoff = window->GetController()->GetInputs();
+  window->GetController()->LoadInputs([] { return MakePhantomInputs("thorax", 1.5); }, QStringLiteral("thorax"));
+  ASSERT_TRUE(WaitUntil([&] { return window->GetController()->GetInputs() != runoff; }, 300.0));
+  ASSERT_TRUE(WaitUntilSettled(*window, 300.0));
+  const itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax, 1.5);
+  const std::set<int>   named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom);
+  std::set<std::string> names;
+  for (const int id : named)
+  {
+    names.insert(phantom.BranchName(id));
+  }
+  for (const auto & branch : phantom.Tree.GetBranches())
+  {
+    EXPECT_EQ(names.count(phantom.BranchName(branch.Id)), 1u) << phantom.BranchName(branch.Id) << " never read";
+  }
+}
+} // namespace
