@@ -395,11 +395,13 @@ TEST(OpenCLBilateralDepthRelax, BadParametersAndInputsAreRejectedLikeOnTheCPU)
 
 // --- Failures: program build and device choice ---------------------------------------------------------------
 
-// The line number of the first "name:line:column:" location in a compiler's log line, 0 if it has none.
+// The line number of the first "name:line:column:" location in a compiler's log line (the name may be empty, as
+// at the start of a line), 0 if it has none.
 int
-LineOfLocation(const std::string & line)
+LineOfLocation(const std::string & logLine)
 {
-  const auto digitsFrom = [&line](std::size_t from)
+  const std::string line = ":" + logLine;
+  const auto        digitsFrom = [&line](std::size_t from)
   {
     std::size_t end = from;
     while (end < line.size() && std::isdigit(static_cast<unsigned char>(line[end])))
