@@ -11,7 +11,7 @@
 // high plane and, `plane` floats further, the low plane. Differences are (high_q - high_p) + (low_q - low_p); the
 // new depth is D + step as a new pair (Fast2Sum).
 //
-// The host prepends these definitions:
+// The host passes these definitions as build options (-D NAME=VALUE), so this file reaches the compiler unchanged:
 //   VECTOR_WIDTH               lanes per vector: 1, 2, 4, 8 or 16 (the device's preferred float width)
 //   VECTORS_PER_ITEM           vectors a work-item relaxes side by side in a row
 //   ROWS_PER_ITEM              rows a work-item relaxes one below the other

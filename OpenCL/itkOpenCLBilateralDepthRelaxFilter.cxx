@@ -8,13 +8,15 @@
 
 #include <algorithm>
 #include <array>
-#include <vector>
+#include <charconv>
 #include <climits>
 #include <cmath>
-#include <iomanip>
 #include <locale>
 #include <mutex>
 #include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <vector>
 
 namespace itk
 {
@@ -103,20 +105,42 @@ static_assert(OpenCLBilateralDepthRelaxFilter::WeightUnderflowExponent > 126.0 *
                 OpenCLBilateralDepthRelaxFilter::WeightUnderflowExponent < 126.0 * 0.6931471805599454,
               "the underflow exponent is -ln(FLT_MIN) = 126 ln 2");
 
-// The #define lines the kernel expects, then #line so that compiler messages count lines of the .cl file.
+// A float as an OpenCL C literal that denotes exactly \a value: the shortest decimal that reads back as the same
+// float (std::to_chars ignores the locale), with a point or exponent so that it is not an integer, and the f suffix.
 std::string
-DefinitionsFor(const KernelShape & shape)
+FloatLiteral(float value)
 {
-  std::ostringstream text;
-  text.imbue(std::locale::classic());
-  text << "#define VECTOR_WIDTH " << shape.VectorWidth << '\n'
-       << "#define VECTORS_PER_ITEM " << shape.VectorsPerItem << '\n'
-       << "#define ROWS_PER_ITEM " << shape.RowsPerItem << '\n'
-       << "#define LOCAL_WIDTH " << shape.LocalWidth << '\n'
-       << "#define LOCAL_HEIGHT " << shape.LocalHeight << '\n'
-       << "#define WEIGHT_UNDERFLOW_POWER " << std::fixed << std::setprecision(1) << WeightUnderflowPower << "f\n"
-       << "#line 1\n";
-  return text.str();
+  if (!std::isfinite(value))
+  {
+    throw std::invalid_argument("an OpenCL float literal must be finite");
+  }
+  std::array<char, 32> digits{};
+  const auto [end, error] = std::to_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error != std::errc())
+  {
+    throw std::invalid_argument("an OpenCL float literal could not be formatted");
+  }
+  std::string literal(digits.data(), end);
+  if (literal.find_first_of(".e") == std::string::npos)
+  {
+    literal += ".0";
+  }
+  return literal + 'f';
+}
+
+// The definitions the kernel expects, as -D options of clBuildProgram: the source stays exactly the .cl file, so
+// every vendor's compiler counts its lines (NVIDIA's ignores #line, so definitions put before the source shifted
+// its messages). Integers and the float literal are written without the locale's help.
+std::string
+BuildOptionsFor(const KernelShape & shape)
+{
+  std::ostringstream options;
+  options.imbue(std::locale::classic());
+  options << "-D VECTOR_WIDTH=" << shape.VectorWidth << " -D VECTORS_PER_ITEM=" << shape.VectorsPerItem
+          << " -D ROWS_PER_ITEM=" << shape.RowsPerItem << " -D LOCAL_WIDTH=" << shape.LocalWidth
+          << " -D LOCAL_HEIGHT=" << shape.LocalHeight
+          << " -D WEIGHT_UNDERFLOW_POWER=" << FloatLiteral(static_cast<float>(WeightUnderflowPower));
+  return options.str();
 }
 
 std::size_t
@@ -132,9 +156,11 @@ struct OpenCLBilateralDepthRelaxFilter::DeviceState
   /** The source the program was built from (the test hook may change it). */
   std::string Source;
   /** The layout the test hook forced when the program was built (0: none). */
-  unsigned int     ForcedVectorWidth{ 0 };
-  bool             ForcedGPULayout{ false };
-  KernelShape      Shape;
+  unsigned int ForcedVectorWidth{ 0 };
+  bool         ForcedGPULayout{ false };
+  KernelShape  Shape;
+  /** The -D options the program was built with (BuildOptionsFor(Shape)). */
+  std::string      BuildOptions;
   cl::Device       Device;
   cl::Context      Context;
   cl::CommandQueue Queue;
@@ -181,6 +207,29 @@ OpenCLBilateralDepthRelaxFilter::GetKernelSource()
 }
 
 std::string
+OpenCLBilateralDepthRelaxFilter::GetBuildOptions() const
+{
+  return m_DeviceState ? m_DeviceState->BuildOptions : std::string();
+}
+
+std::string
+OpenCLBilateralDepthRelaxFilter::GetProgramSource() const
+{
+  if (!m_DeviceState)
+  {
+    return std::string();
+  }
+  try
+  {
+    return m_DeviceState->Program.getInfo<CL_PROGRAM_SOURCE>();
+  }
+  catch (const cl::Error & error)
+  {
+    itkExceptionMacro(<< "reading the program source back: " << vr::DescribeOpenCLError(error));
+  }
+}
+
+std::string
 OpenCLBilateralDepthRelaxFilter::GetDeviceLabel() const
 {
   return m_DeviceState ? m_DeviceState->Info.Label() : std::string();
@@ -219,10 +268,11 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
     state->Context = cl::Context(state->Device);
     state->Queue = cl::CommandQueue(state->Context, state->Device);
     state->Shape = ChooseKernelShape(state->Device, m_ForcedVectorWidth, m_ForcedGPULayout);
-    state->Program = cl::Program(state->Context, DefinitionsFor(state->Shape) + source);
+    state->BuildOptions = BuildOptionsFor(state->Shape);
+    state->Program = cl::Program(state->Context, source);
     try
     {
-      state->Program.build(std::vector<cl::Device>{ state->Device });
+      state->Program.build(std::vector<cl::Device>{ state->Device }, state->BuildOptions.c_str());
     }
     catch (const cl::Error & error)
     {
@@ -420,6 +470,7 @@ OpenCLBilateralDepthRelaxFilter::PrintSelf(std::ostream & os, Indent indent) con
     os << indent << "Kernel shape: " << shape.VectorWidth << "-lane vectors, " << shape.VectorsPerItem << " vectors x "
        << shape.RowsPerItem << " rows per work-item, work-groups of " << shape.LocalWidth << " x " << shape.LocalHeight
        << std::endl;
+    os << indent << "Build options: " << m_DeviceState->BuildOptions << std::endl;
   }
   else
   {

@@ -29,7 +29,8 @@ namespace itk
  * The device: SetDeviceRequest(), else the environment variable VR_OPENCL_DEVICE, else the first GPU, else the
  * first CPU device; see vr::ChooseOpenCLDevice() for the syntax ("P:D" or a name substring). The context, queue,
  * program and buffers belong to the filter and are kept between updates (rebuilt when the device changes); the
- * kernel is specialised for the device's preferred vector width through #define lines put before the source.
+ * kernel is specialised for the device's preferred vector width through -D definitions in the program's build
+ * options; the source handed to the compiler is the .cl file unchanged, so that its messages count the file's lines.
  *
  * Errors, as itk::ExceptionObject: a requested device that does not exist (the message lists those that do), no
  * usable device, a failed program build (the message carries the compiler's log), any failed OpenCL call (the
@@ -68,8 +69,18 @@ public:
   std::string
   GetDeviceLabel() const;
 
-  /** The OpenCL C source the filter builds (after its #define lines): OpenCL/BilateralDepthRelax.cl as embedded at
-   * build time, or what SetKernelSourceForTesting() put in its place. */
+  /** The build options (-D NAME=VALUE definitions of the kernel's layout) of the program the last PrepareDevice()
+   * or Update() built ("" until then). */
+  std::string
+  GetBuildOptions() const;
+
+  /** The source of that program as the OpenCL driver holds it (clGetProgramInfo, "" until then): what its compiler
+   * read, line for line. */
+  std::string
+  GetProgramSource() const;
+
+  /** The OpenCL C source the filter builds (unchanged; the definitions go in the build options):
+   * OpenCL/BilateralDepthRelax.cl as embedded at build time, or what SetKernelSourceForTesting() put in its place. */
   static std::string
   GetKernelSource();
 

@@ -1,12 +1,19 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // VesselReformationBenchmarks: the paper's Table 1 on this machine (see benchmark_table.py). The context of the
-// JSON output names the processor, the relax kernel's instruction set, the thread count and the build flags.
+// JSON output names the processor, the relax kernel's instruction set, the thread count, the build flags and the
+// OpenCL devices. --opencl_devices prints those devices, one a line, and exits (scripts/device-report.sh).
 #include "itkBilateralDepthRelaxKernel.h"
 #include "itkMultiThreaderBase.h"
 
 #include <benchmark/benchmark.h>
 
+#ifdef VESSELREFORMATION_HAS_OPENCL
+#include "vrOpenCLDevices.h"
+#endif
+
+#include <cstring>
 #include <fstream>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -28,11 +35,34 @@ ProcessorModel()
   }
   return "unknown";
 }
+
+/** The machine's OpenCL devices as the relax filter names them ("P:D name (platform, type)"), unusable ones with
+ * the reason, one a line; or why there is none. */
+std::string
+OpenCLDevices()
+{
+#ifdef VESSELREFORMATION_HAS_OPENCL
+  std::string problem;
+  std::string lines;
+  for (const auto & device : vr::ListOpenCLDevices(&problem))
+  {
+    lines += device.Label() + (device.Unusable.empty() ? "" : " [not usable: " + device.Unusable + "]") + "\n";
+  }
+  return lines.empty() ? "none: " + problem + "\n" : lines;
+#else
+  return "none: this build has no OpenCL support\n";
+#endif
+}
 } // namespace
 
 int
 main(int argc, char ** argv)
 {
+  if (argc == 2 && std::strcmp(argv[1], "--opencl_devices") == 0)
+  {
+    std::cout << OpenCLDevices();
+    return 0;
+  }
   // Repetitions of all benchmarks run in random order by default, so that a slow spell of a shared machine
   // spreads over all figures instead of spoiling one (and the ratios between them). A later
   // --benchmark_enable_random_interleaving=false on the command line wins.
@@ -52,6 +82,13 @@ main(int argc, char ** argv)
   benchmark::AddCustomContext("itk_threads", std::to_string(itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads()));
   benchmark::AddCustomContext("build_type", VR_BENCHMARK_BUILD_TYPE);
   benchmark::AddCustomContext("cxx_flags", VR_BENCHMARK_CXX_FLAGS);
+  std::string devices = OpenCLDevices();
+  devices.pop_back(); // the last line's end
+  for (auto at = devices.find('\n'); at != std::string::npos; at = devices.find('\n', at))
+  {
+    devices.replace(at, 1, "; ");
+  }
+  benchmark::AddCustomContext("opencl_devices", devices);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;
