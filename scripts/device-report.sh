@@ -57,7 +57,9 @@ pack() {
   fi
   rm -rf "$bundle"
   EXTRA=$extra bash "$tool" "$build" "$bundle" "${programs[@]}" || fail "device-bundle.sh failed"
-  printf 'build=%q\ndata=%q\n' "$build" "$data" >"$bundle/device-report.paths"
+  # The commit the programs were built from: the device's copy of the tree may carry another git state.
+  commit=$(git -C "$(dirname "$0")/.." describe --always --dirty 2>/dev/null || echo unknown)
+  printf 'build=%q\ndata=%q\ncommit=%q\n' "$build" "$data" "$commit" >"$bundle/device-report.paths"
   echo "device-report: bundle $bundle: $(du -sh "$bundle" | cut -f1) in all (the device run's working tree may hold 64 MiB)"
 }
 
@@ -88,7 +90,7 @@ if [[ -f $from/unpack.sh ]]; then
   [[ -f $from/device-report.paths ]] || fail "$from has no device-report.paths: pack it with $0 --pack"
   # shellcheck source=/dev/null
   source "$from/unpack.sh" >>"$log" 2>&1 || fail "unpacking the bundle $from failed (see $log)"
-  build="" data=""
+  build="" data="" commit=""
   # shellcheck source=/dev/null
   source "$from/device-report.paths"
   origin="bundle $from (built in $build)"
@@ -167,7 +169,7 @@ fi
 : >"$md"
 say "# Device report: $(hostname), $(date -u '+%Y-%m-%d %H:%M UTC')"
 say ""
-say "Programs: $origin, commit $(git -C "$repository" rev-parse --short HEAD 2>/dev/null || echo unknown)."
+say "Programs: $origin, commit ${commit:-$(git -C "$repository" rev-parse --short HEAD 2>/dev/null || echo unknown)}."
 say ""
 say "| | |"
 say "| --- | --- |"
