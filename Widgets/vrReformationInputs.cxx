@@ -9,11 +9,6 @@
 #include "vrNodeConversion.h"
 #include "vrVolumeIO.h"
 
-#include <vtkDataArray.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
-
-#include <algorithm>
 #include <cmath>
 #include <vector>
 #include <sstream>
@@ -32,62 +27,6 @@ ReformationInputs::BranchName(int id) const
     }
   }
   return "branch " + std::to_string(id);
-}
-
-std::string
-IntensityUnitOf(VolumeNode * volume)
-{
-  // Air in CT is about -1000 HU; no other modality stores intensities this far below 0.
-  constexpr double AirBound = -500.0;
-  vtkImageData *   image = volume != nullptr ? volume->GetImageData() : nullptr;
-  if (image == nullptr || image->GetPointData()->GetScalars() == nullptr)
-  {
-    return std::string();
-  }
-  double range[2];
-  image->GetScalarRange(range);
-  return range[0] <= AirBound ? "HU" : std::string();
-}
-
-void
-PercentileWindowOf(VolumeNode * volume, double & window, double & level)
-{
-  window = 0.0;
-  level = 0.0;
-  vtkImageData * image = volume != nullptr ? volume->GetImageData() : nullptr;
-  vtkDataArray * scalars = image != nullptr ? image->GetPointData()->GetScalars() : nullptr;
-  if (scalars == nullptr || scalars->GetNumberOfTuples() == 0)
-  {
-    return;
-  }
-  constexpr vtkIdType MaximumSamples = vtkIdType{ 1 } << 22;
-  const vtkIdType     count = scalars->GetNumberOfTuples();
-  const vtkIdType     stride = std::max<vtkIdType>(1, (count + MaximumSamples - 1) / MaximumSamples);
-  std::vector<double> samples;
-  samples.reserve(static_cast<std::size_t>(count / stride + 1));
-  for (vtkIdType k = 0; k < count; k += stride)
-  {
-    const double value = scalars->GetComponent(k, 0);
-    if (std::isfinite(value))
-    {
-      samples.push_back(value);
-    }
-  }
-  if (samples.empty())
-  {
-    return;
-  }
-  // The value at rank q (n - 1), rounded to the nearest rank.
-  auto percentile = [&samples](double q)
-  {
-    const auto rank = static_cast<std::size_t>(std::lround(q * static_cast<double>(samples.size() - 1)));
-    std::nth_element(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(rank), samples.end());
-    return samples[rank];
-  };
-  const double low = percentile(0.01);
-  const double high = percentile(0.99);
-  window = std::max(high - low, 1.0);
-  level = 0.5 * (low + high);
 }
 
 std::vector<std::string>

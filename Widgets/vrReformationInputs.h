@@ -4,6 +4,7 @@
 
 #include "itkCenterlineTree.h"
 #include "vrCenterlineNode.h"
+#include "vrIntensityWindow.h"
 #include "vrVolumeNode.h"
 
 #include <vtkSmartPointer.h>
@@ -48,8 +49,8 @@ struct ReformationInputs
   /** The unit the views give the volume's intensities: "HU" for a CT (IntensityUnitOf), empty for other data (an MR
    * angiography's intensities have no unit). */
   std::string IntensityUnit;
-  /** The window and level spanning the volume's 1st to 99th intensity percentile (PercentileWindowOf): the first
-   * view of a volume without HU. */
+  /** The window and level spanning the volume's 1st to 99th intensity percentile (vr::PercentileWindowOf,
+   * vrIntensityWindow.h): the first view of a volume without HU. */
   double PercentileWindow{ 0.0 };
   double PercentileLevel{ 0.0 };
 
@@ -57,20 +58,6 @@ struct ReformationInputs
   std::string
   BranchName(int id) const;
 };
-
-/** \return "HU" when \a volume holds a CT, else empty: a volume whose intensities reach -500 or below holds air
- * in Hounsfield units (about -1000 HU); MR and the other modalities store no such values. Files rarely say their
- * modality (NRRD, NIfTI and MetaImage do not), so the data decides. */
-std::string
-IntensityUnitOf(VolumeNode * volume);
-
-/** The window (p99 - p1, at least 1) and level ((p1 + p99) / 2) of \a volume's 1st and 99th intensity percentiles:
- * a window that suits data without a fixed intensity scale, which a few bright voxels do not wash out as the full
- * range does. Percentiles of every voxel up to 4 million, of an even sample of them beyond.
- * \param volume a node with scalar image data.
- * \param window receives the window; \param level the level (both 0 for a node without voxels). */
-void
-PercentileWindowOf(VolumeNode * volume, double & window, double & level);
 
 /** The names of the built-in phantoms the viewer offers (itk::GetCTAPhantomNames(): "runoff", "thorax"). */
 std::vector<std::string>

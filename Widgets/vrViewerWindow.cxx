@@ -14,6 +14,10 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QImage>
+#include <QInputDialog>
+#include <QLineEdit>
+#include <QEventLoop>
+#include <QProgressDialog>
 #include <QLabel>
 #include <QDir>
 #include <QCloseEvent>
@@ -40,6 +44,8 @@
 #include <vtkPointData.h>
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 #include <cmath>
 
 namespace vr
@@ -160,6 +166,7 @@ ViewerWindow::BuildMenus()
   file->addAction(
     tr("&Save outputs…"), this, [this] { ChooseAndSaveOutputs(); }, QKeySequence::Save);
   file->addAction(tr("Save screens&hot…"), this, [this] { ChooseAndSaveScreenshot(); });
+  file->addAction(tr("Export &rotation series…"), this, [this] { ChooseAndExportRotationSeries(); });
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
 
@@ -1140,6 +1147,164 @@ ViewerWindow::ChooseAndSaveOutputs()
   if (!folder.isEmpty())
   {
     SaveOutputs(folder);
+  }
+}
+
+int
+ViewerWindow::ExportRotationSeries(const QString & folder, const RotationAngles & angles)
+{
+  const auto shown = m_CPRView->GetResult();
+  if (!shown || !shown->Inputs)
+  {
+    ShowError(tr("Cannot export a rotation series"), tr("There is no reformation on screen yet."));
+    return 0;
+  }
+  RotationSeriesSettings settings;
+  settings.Folder = folder.toStdString();
+  settings.Angles = angles;
+  settings.Window = m_Panel->GetWindowSpinBox()->value();
+  settings.Level = m_Panel->GetLevelSpinBox()->value();
+  std::unique_ptr<RotationSeriesExport> series;
+  try
+  {
+    series = std::make_unique<RotationSeriesExport>(settings, "the rotation series folder");
+  }
+  catch (const std::exception & error)
+  {
+    ShowError(tr("Cannot export a rotation series"), QString::fromUtf8(error.what()));
+    return 0;
+  }
+
+  // A logic of its own, on the inputs and parameters of the image on screen, so the controller's work goes on.
+  const auto               inputs = shown->Inputs;
+  ReformationParameters    parameters = shown->Parameters;
+  std::atomic<double>      fraction{ 0.0 };
+  std::atomic<std::size_t> view{ 0 };
+  std::atomic<bool>        cancel{ false };
+  std::atomic<bool>        done{ false };
+  std::string              failure;
+  bool                     cancelled = false;
+  RotationSeriesResult     result;
+  std::thread              worker(
+    [&]
+    {
+      try
+      {
+        VesselReformationLogic logic;
+        logic.SetVolumeNode(inputs->Volume);
+        if (inputs->Centerlines)
+        {
+          logic.SetCenterlineNode(inputs->Centerlines);
+        }
+        else
+        {
+          logic.SetSegmentationNode(inputs->Segmentation);
+        }
+        logic.SetParameters(parameters);
+        result = series->Write(logic,
+                               [&](std::size_t current, std::size_t, double overall)
+                               {
+                                 view = current;
+                                 fraction = overall;
+                                 return !cancel.load();
+                               });
+      }
+      catch (const Cancelled &)
+      {
+        cancelled = true;
+      }
+      catch (const std::exception & error)
+      {
+        failure = error.what();
+      }
+      done = true;
+    });
+
+  QProgressDialog progress(tr("Exporting the rotation series…"), tr("Cancel"), 0, 1000, this);
+  progress.setWindowTitle(tr("Rotation series"));
+  progress.setWindowModality(Qt::WindowModal);
+  progress.setMinimumDuration(0);
+  progress.setValue(0);
+  QEventLoop loop;
+  QTimer     poll;
+  connect(&poll,
+          &QTimer::timeout,
+          &loop,
+          [&]
+          {
+            if (progress.wasCanceled())
+            {
+              cancel = true;
+            }
+            progress.setValue(std::min(999, static_cast<int>(1000.0 * fraction.load())));
+            progress.setLabelText(tr("Exporting the rotation series: view %1 of %2…")
+                                    .arg(std::min<std::size_t>(view.load() + 1, angles.Count))
+                                    .arg(angles.Count));
+            if (done)
+            {
+              loop.quit();
+            }
+          });
+  poll.start(50);
+  loop.exec();
+  worker.join();
+  progress.reset();
+
+  if (cancelled)
+  {
+    statusBar()->showMessage(tr("Rotation series cancelled: nothing was written"), 10000);
+    return 0;
+  }
+  try
+  {
+    if (!failure.empty())
+    {
+      throw InputError(failure);
+    }
+    series->Commit();
+  }
+  catch (const std::exception & error)
+  {
+    ShowError(tr("Cannot export a rotation series"), QString::fromUtf8(error.what()));
+    return 0;
+  }
+  statusBar()->showMessage(
+    tr("Exported a rotation series of %1 views (PNG and DICOM) to %2").arg(result.PNGFiles.size()).arg(folder), 10000);
+  return static_cast<int>(result.PNGFiles.size());
+}
+
+void
+ViewerWindow::ChooseAndExportRotationSeries()
+{
+  if (!m_CPRView->GetResult())
+  {
+    ShowError(tr("Cannot export a rotation series"), tr("There is no reformation on screen yet."));
+    return;
+  }
+  const QString folder = QFileDialog::getExistingDirectory(
+    this, tr("Export the rotation series into a folder (an empty one, or one without a series)"), StartFolder());
+  if (folder.isEmpty())
+  {
+    return;
+  }
+  bool          accepted = false;
+  const QString text = QInputDialog::getText(this,
+                                             tr("Rotation series"),
+                                             tr("Angles as start,step,count in degrees (36 views 10° apart: 0,10,36):"),
+                                             QLineEdit::Normal,
+                                             QStringLiteral("0,10,36"),
+                                             &accepted);
+  if (!accepted)
+  {
+    return;
+  }
+  try
+  {
+    ExportRotationSeries(folder, ParseRotationAngles(text.toStdString(), "the angles"));
+  }
+  catch (const std::exception & error)
+  {
+    ShowError(tr("Cannot export a rotation series"), QString::fromUtf8(error.what()));
   }
 }
 

@@ -5,6 +5,7 @@
 #include "vrCPRView.h"
 #include "vrModulePanel.h"
 #include "vrReformationController.h"
+#include "vrRotationSeries.h"
 #include "vrThreeDView.h"
 
 #include "vrViewerSettings.h"
@@ -107,6 +108,12 @@ public:
   /** Renders the window into a PNG at \a path, atomically. \return an empty string, or what went wrong. */
   QString
   WriteScreenshot(const QString & path);
+  /** Exports a rotation series of the reformation on screen (vr::RotationSeriesExport: its inputs and parameters, the
+   * panel's window and level) into \a folder at \a angles, on a thread of its own behind a modal progress dialog
+   * whose Cancel stops it (nothing is then written). Errors go to the error handler or a dialog.
+   * \return the number of views written, 0 when nothing was. */
+  int
+  ExportRotationSeries(const QString & folder, const RotationAngles & angles);
 
   /** Errors go to \a handler instead of a dialog (scripted mode); an empty handler restores dialogs. */
   void
@@ -223,6 +230,9 @@ private:
   ChooseAndSaveOutputs();
   void
   ChooseAndSaveScreenshot();
+  /** File > Export rotation series: a folder, then start,step,count. */
+  void
+  ChooseAndExportRotationSeries();
 
   ReformationController *                    m_Controller{ nullptr };
   ModulePanel *                              m_Panel{ nullptr };

@@ -13,6 +13,7 @@
 #include "vrModuleExport.h"
 #include "vrNodeConversion.h"
 #include "vrParameterName.h"
+#include "vrRotationSeries.h"
 #include "vrStagedOutputs.h"
 #include "vrVesselReformationLogic.h"
 #include "vrVolumeIO.h"
@@ -21,6 +22,7 @@
 #include <functional>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -120,6 +122,25 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     }
   }
 
+  // The rotation series: its angles and folder checked, and its files reserved, before the work as well.
+  // With a series, the run's own reformation is one view of count + 1 in the progress.
+  std::unique_ptr<vr::RotationSeriesExport> series;
+  double                                    views = 1.0;
+  if (arguments.Given("rotationSeries"))
+  {
+    vr::RotationSeriesSettings settings;
+    settings.Folder = arguments.String("rotationSeries");
+    settings.Angles = vr::ParseRotationAngles(arguments.String("rotationAngles"), arguments.Spelling("rotationAngles"));
+    settings.Window = parameters.Window;
+    settings.Level = parameters.Level;
+    series = std::make_unique<vr::RotationSeriesExport>(settings, arguments.Spelling("rotationSeries"));
+    views += static_cast<double>(settings.Angles.Count);
+  }
+  else if (arguments.Given("rotationAngles"))
+  {
+    throw vr::InputError(arguments.Spelling("rotationAngles") + " is given without " +
+                         arguments.Spelling("rotationSeries") + ", the folder of the rotation series");
+  }
   // The centerlines come from a file, or are extracted from a segmentation: one of the two.
   const bool fromSegmentation = arguments.Given("segmentation");
   if (fromSegmentation && arguments.Given("inputCenterlines"))
@@ -172,15 +193,16 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
       progress.Print(std::cerr, "warning: " + message + hint);
     });
   logic.SetProgressCallback(
-    [&progress, &logic](double fraction, const std::string & stageName)
+    [&progress, &logic, views](double fraction, const std::string & stageName)
     {
       if (progress.AbortRequested())
       {
         logic.AbortUpdate();
       }
-      progress.Update(fraction, stageName);
+      progress.Update(fraction / views, stageName);
     });
-  const vr::ReformationOutputs & results = logic.Update();
+  // A copy: the rotation series updates the logic again.
+  const vr::ReformationOutputs results = logic.Update();
 
   const auto write = [&](const char * name, const std::function<void(const std::string &)> & writer)
   {
@@ -218,7 +240,31 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
           logic.GetDisplayWindowLevel(window, level);
           vr::WriteWindowedPNG(vr::ConvertVolumeNodeToDepthImage(results.CPR), window, level, path);
         });
+  vr::RotationSeriesResult rotation;
+  if (series)
+  {
+    // The run's outputs are staged and kept (the series restores the logic's parameters, not its outputs).
+    rotation = series->Write(logic,
+                             [&progress, views](std::size_t view, std::size_t count, double fraction)
+                             {
+                               progress.Update((1.0 + fraction * (views - 1.0)) / views,
+                                               "rotation series view " + std::to_string(std::min(view + 1, count)) +
+                                                 " of " + std::to_string(count));
+                               return !progress.AbortRequested();
+                             });
+  }
   staged.CommitAll();
+  if (series)
+  {
+    series->Commit();
+    std::ostringstream line;
+    line << "VesselReformation: rotation series of " << rotation.PNGFiles.size() << " views (\""
+         << rotation.SeriesDescription << "\", window " << rotation.Window << ", level " << rotation.Level
+         << ") written to " << arguments.String("rotationSeries") << " as PNGs and DICOM Secondary Capture, "
+         << (rotation.IdentityMadeUp ? "patient and study made up (the input was not DICOM)"
+                                     : "patient " + rotation.PatientID + ", study " + rotation.StudyInstanceUID);
+    progress.Print(std::cout, line.str());
+  }
 
   const auto &      size = results.View.GetSize();
   const auto &      times = results.Times;

@@ -503,7 +503,9 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
                                  "outputSurface",
                                  "outputPNG",
                                  "window",
-                                 "level" });
+                                 "level",
+                                 "rotationSeries",
+                                 "rotationAngles" });
 }
 
 TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)

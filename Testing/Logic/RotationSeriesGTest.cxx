@@ -1,0 +1,439 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The rotation series (issue 24): the run-off phantom written to NRRD and read back, reformed at N angles, written as
+// PNGs and a DICOM Secondary Capture series; the files are read back with ITK (PNG, GDCM) and compared with the
+// logic's CPR at each angle through a window/level computed here.
+
+#include "itkCTAPhantom.h"
+#include "vrCenterlineIO.h"
+#include "vrInputError.h"
+#include "vrNodeConversion.h"
+#include "vrRotationSeries.h"
+#include "vrSecondaryCaptureIO.h"
+#include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
+
+#include "itkGDCMImageIO.h"
+#include "itkGDCMSeriesFileNames.h"
+#include "itkImageFileReader.h"
+#include "itkMetaDataObject.h"
+#include "itkPNGImageIO.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+namespace fs = std::filesystem;
+
+fs::path
+TestFolder()
+{
+  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path folder =
+    fs::path(VR_TEST_OUTPUT_DIR) / "RotationSeries" / (std::string(info->test_suite_name()) + "." + info->name());
+  fs::remove_all(folder);
+  fs::create_directories(folder);
+  return folder;
+}
+
+std::string
+ReadText(const fs::path & path)
+{
+  std::ifstream      file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+/** DICOM pads odd-length values with a space (or a NUL for UIDs). */
+std::string
+Trimmed(std::string value)
+{
+  while (!value.empty() && (value.back() == ' ' || value.back() == '\0'))
+  {
+    value.pop_back();
+  }
+  return value;
+}
+
+struct DICOMFile
+{
+  itk::Image<unsigned char, 2>::Pointer Image;
+  itk::MetaDataDictionary               Dictionary;
+
+  bool
+  Has(const std::string & tag) const
+  {
+    return Dictionary.HasKey(tag);
+  }
+  std::string
+  Get(const std::string & tag) const
+  {
+    std::string value;
+    itk::ExposeMetaData<std::string>(Dictionary, tag, value);
+    return Trimmed(value);
+  }
+};
+
+DICOMFile
+ReadDICOM(const std::string & path)
+{
+  auto io = itk::GDCMImageIO::New();
+  auto reader = itk::ImageFileReader<itk::Image<unsigned char, 2>>::New();
+  reader->SetImageIO(io);
+  reader->SetFileName(path);
+  reader->Update();
+  return { reader->GetOutput(), io->GetMetaDataDictionary() };
+}
+
+itk::Image<unsigned char, 2>::Pointer
+ReadPNG(const std::string & path)
+{
+  auto reader = itk::ImageFileReader<itk::Image<unsigned char, 2>>::New();
+  reader->SetImageIO(itk::PNGImageIO::New());
+  reader->SetFileName(path);
+  reader->Update();
+  return reader->GetOutput();
+}
+
+/** Grey value of \a value through window/level, computed here: level - window/2 -> 0, + window/2 -> 255. */
+unsigned int
+Grey(float value, double window, double level)
+{
+  if (std::isnan(value))
+  {
+    return 0;
+  }
+  const double scaled = std::floor(255.0 * (value - level + window / 2.0) / window + 0.5);
+  return static_cast<unsigned int>(std::min(255.0, std::max(0.0, scaled)));
+}
+
+/** The run-off phantom at 4 mm, written to NRRD and .vtp in \a folder and read back as a platform would. */
+class RotationSeriesTest : public ::testing::Test
+{
+protected:
+  void
+  SetUp() override
+  {
+    m_Folder = TestFolder();
+    itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Runoff, 4.0);
+    phantom.Source->Update();
+    vr::WriteVolume(phantom.Source->GetOutput(), (m_Folder / "runoff.nrrd").string());
+    vr::WriteCenterlines(phantom.Tree, (m_Folder / "runoff.vtp").string());
+  }
+
+  /** A logic on the NRRD and .vtp files, at a coarse view so that each angle takes little time. */
+  void
+  Configure(vr::VesselReformationLogic & logic, vr::VolumeNode ** volumeNode = nullptr)
+  {
+    auto volume = vr::ConvertItkImageToVolumeNode(vr::ReadVolume((m_Folder / "runoff.nrrd").string()), "runoff.nrrd");
+    logic.SetVolumeNode(volume);
+    logic.SetCenterlineNode(
+      vr::ConvertTreeToCenterlineNode(vr::ReadCenterlines((m_Folder / "runoff.vtp").string()), "runoff.vtp"));
+    vr::ReformationParameters parameters;
+    parameters.PixelSpacing.Fill(4.0);
+    parameters.Iterations = 40;
+    logic.SetParameters(parameters);
+    if (volumeNode != nullptr)
+    {
+      *volumeNode = volume;
+    }
+  }
+
+  fs::path m_Folder;
+};
+
+TEST_F(RotationSeriesTest, FromNRRDWritesPNGsAndASecondaryCaptureSeriesWithAMadeUpIdentity)
+{
+  vr::VesselReformationLogic logic;
+  Configure(logic);
+  vr::RotationSeriesSettings settings;
+  settings.Folder = (m_Folder / "series").string(); // missing: created
+  settings.Angles = { 15.0, 90.0, 4 };
+  std::vector<std::size_t>       viewsReported;
+  const vr::RotationSeriesResult result =
+    vr::ExportRotationSeries(logic,
+                             settings,
+                             [&](std::size_t view, std::size_t count, double)
+                             {
+                               EXPECT_EQ(count, 4u);
+                               if (viewsReported.empty() || viewsReported.back() != view)
+                               {
+                                 viewsReported.push_back(view);
+                               }
+                               return true;
+                             });
+  EXPECT_EQ(viewsReported, (std::vector<std::size_t>{ 0, 1, 2, 3, 4 })) << "each view, then the end";
+  EXPECT_EQ(logic.GetParameters().AngleInDegrees, 0.0) << "the logic's angle is restored";
+  // The phantom is a CT (air at -1000 HU): the CTA window.
+  EXPECT_EQ(result.Window, 900.0);
+  EXPECT_EQ(result.Level, 200.0);
+  EXPECT_TRUE(result.IdentityMadeUp);
+  EXPECT_EQ(result.SeriesDescription, "mpCPR rotation 15..285 deg step 90, bilateral J 3 mm");
+
+  std::set<std::string> names;
+  for (const auto & entry : fs::directory_iterator(m_Folder / "series"))
+  {
+    names.insert(entry.path().filename().string());
+  }
+  EXPECT_EQ(names,
+            (std::set<std::string>{ "rotation-000.png",
+                                    "rotation-001.png",
+                                    "rotation-002.png",
+                                    "rotation-003.png",
+                                    "rotation-000.dcm",
+                                    "rotation-001.dcm",
+                                    "rotation-002.dcm",
+                                    "rotation-003.dcm",
+                                    "rotation-angles.csv" }))
+    << "nothing else: no staging folder left";
+  EXPECT_EQ(
+    ReadText(m_Folder / "series" / "rotation-angles.csv"),
+    "view,angle_deg,png,dicom\n0,15,rotation-000.png,rotation-000.dcm\n1,105,rotation-001.png,rotation-001.dcm\n"
+    "2,195,rotation-002.png,rotation-002.dcm\n3,285,rotation-003.png,rotation-003.dcm\n");
+
+  // An independent logic at each angle, through the window computed here.
+  vr::VesselReformationLogic reference;
+  Configure(reference);
+  std::set<std::string> sopInstances;
+  std::string           seriesUID;
+  std::string           studyUID;
+  for (std::size_t k = 0; k < 4; ++k)
+  {
+    SCOPED_TRACE("view " + std::to_string(k));
+    vr::ReformationParameters parameters = reference.GetParameters();
+    parameters.AngleInDegrees = 15.0 + 90.0 * static_cast<double>(k);
+    reference.SetParameters(parameters);
+    const auto cpr = vr::ConvertVolumeNodeToDepthImage(reference.Update().CPR);
+    const auto png = ReadPNG(result.PNGFiles[k]);
+    const auto dicom = ReadDICOM(result.DICOMFiles[k]);
+    ASSERT_EQ(png->GetLargestPossibleRegion().GetSize(), cpr->GetLargestPossibleRegion().GetSize());
+    ASSERT_EQ(dicom.Image->GetLargestPossibleRegion().GetSize(), cpr->GetLargestPossibleRegion().GetSize());
+    const std::size_t      count = cpr->GetLargestPossibleRegion().GetNumberOfPixels();
+    std::size_t            pngMismatches = 0;
+    std::size_t            dicomMismatches = 0;
+    std::set<unsigned int> greys;
+    for (std::size_t p = 0; p < count; ++p)
+    {
+      const unsigned int expected = Grey(cpr->GetBufferPointer()[p], 900.0, 200.0);
+      greys.insert(expected);
+      pngMismatches += png->GetBufferPointer()[p] != expected;
+      dicomMismatches += dicom.Image->GetBufferPointer()[p] != expected;
+    }
+    EXPECT_EQ(pngMismatches, 0u);
+    EXPECT_EQ(dicomMismatches, 0u);
+    EXPECT_GT(greys.size(), 20u) << "a picture, not a flat image";
+
+    EXPECT_EQ(dicom.Get("0008|0016"), vr::SecondaryCaptureSOPClassUID);
+    EXPECT_EQ(dicom.Get("0008|0060"), "OT");
+    EXPECT_EQ(dicom.Get("0008|0064"), "WSD");
+    EXPECT_EQ(dicom.Get("0028|0004"), "MONOCHROME2");
+    EXPECT_EQ(dicom.Get("0028|0100"), "8");
+    EXPECT_EQ(dicom.Get("0020|0013"), std::to_string(k + 1)) << "Instance Number in angle order";
+    EXPECT_NE(dicom.Get("0020|4000").find("at angle " + std::to_string(15 + 90 * k) + " deg"), std::string::npos)
+      << dicom.Get("0020|4000");
+    EXPECT_EQ(dicom.Get("0008|103e"), result.SeriesDescription);
+    EXPECT_EQ(dicom.Get("0010|0010"), vr::MadeUpPatientName);
+    EXPECT_EQ(dicom.Get("0010|0020"), result.PatientID);
+    EXPECT_EQ(result.PatientID.rfind("VR-", 0), 0u);
+    EXPECT_NE(dicom.Get("0010|4000").find("was not DICOM"), std::string::npos) << dicom.Get("0010|4000");
+    EXPECT_NE(dicom.Get("0008|1030").find("made up"), std::string::npos) << dicom.Get("0008|1030");
+    // A picture, not a slice: no Image Position or Orientation (Patient), nor a Frame of Reference.
+    EXPECT_FALSE(dicom.Has("0020|0032"));
+    EXPECT_FALSE(dicom.Has("0020|0037"));
+    EXPECT_FALSE(dicom.Has("0020|0052"));
+    sopInstances.insert(dicom.Get("0008|0018"));
+    if (k == 0)
+    {
+      seriesUID = dicom.Get("0020|000e");
+      studyUID = dicom.Get("0020|000d");
+    }
+    EXPECT_EQ(dicom.Get("0020|000e"), seriesUID);
+    EXPECT_EQ(dicom.Get("0020|000d"), studyUID);
+  }
+  EXPECT_EQ(sopInstances.size(), 4u) << "a new SOP Instance UID per file";
+  EXPECT_EQ(seriesUID, result.SeriesInstanceUID);
+  EXPECT_EQ(studyUID, result.StudyInstanceUID);
+  EXPECT_NE(seriesUID, studyUID);
+  EXPECT_EQ(sopInstances.count(seriesUID), 0u);
+
+  // GDCM's series reader sees one series of four files, which it orders by Instance Number as a PACS would.
+  auto series = itk::GDCMSeriesFileNames::New();
+  series->SetDirectory((m_Folder / "series").string());
+  const auto uids = series->GetSeriesUIDs();
+  ASSERT_EQ(uids.size(), 1u);
+  const auto files = series->GetFileNames(uids.front());
+  ASSERT_EQ(files.size(), 4u);
+
+  // A second series gets a new series UID and, the input still not being DICOM, a new made-up patient.
+  vr::RotationSeriesSettings again = settings;
+  again.Folder = (m_Folder / "again").string();
+  again.Angles = { 0.0, 10.0, 1 };
+  const vr::RotationSeriesResult second = vr::ExportRotationSeries(logic, again);
+  EXPECT_NE(second.SeriesInstanceUID, result.SeriesInstanceUID);
+  EXPECT_NE(second.StudyInstanceUID, result.StudyInstanceUID);
+  EXPECT_EQ(second.SeriesDescription, "mpCPR rotation 0..0 deg step 10, bilateral J 3 mm");
+}
+
+TEST_F(RotationSeriesTest, ADICOMVolumeGivesItsPatientAndStudy)
+{
+  vr::VesselReformationLogic logic;
+  vr::VolumeNode *           volume = nullptr;
+  Configure(logic, &volume);
+  volume->SetAttribute(vr::DICOMAttribute::PatientName, "Doe^Jane");
+  volume->SetAttribute(vr::DICOMAttribute::PatientID, "PAT-0042");
+  volume->SetAttribute(vr::DICOMAttribute::PatientBirthDate, "19600101");
+  volume->SetAttribute(vr::DICOMAttribute::PatientSex, "F");
+  volume->SetAttribute(vr::DICOMAttribute::StudyInstanceUID, "1.2.826.0.1.3680043.9.7777.1.2.3");
+  volume->SetAttribute(vr::DICOMAttribute::StudyID, "S17");
+  volume->SetAttribute(vr::DICOMAttribute::StudyDate, "20260102");
+  volume->SetAttribute(vr::DICOMAttribute::StudyTime, "101500");
+  volume->SetAttribute(vr::DICOMAttribute::AccessionNumber, "ACC9");
+  volume->SetAttribute(vr::DICOMAttribute::StudyDescription, "CTA run-off");
+  vr::RotationSeriesSettings settings;
+  settings.Folder = (m_Folder / "series").string();
+  settings.Angles = { 0.0, 180.0, 2 };
+  settings.Window = 600.0;
+  settings.Level = 100.0;
+  const vr::RotationSeriesResult result = vr::ExportRotationSeries(logic, settings);
+  EXPECT_FALSE(result.IdentityMadeUp);
+  EXPECT_EQ(result.Window, 600.0) << "the window given";
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    const auto dicom = ReadDICOM(result.DICOMFiles[k]);
+    EXPECT_EQ(dicom.Get("0010|0010"), "Doe^Jane");
+    EXPECT_EQ(dicom.Get("0010|0020"), "PAT-0042");
+    EXPECT_EQ(dicom.Get("0010|0030"), "19600101");
+    EXPECT_EQ(dicom.Get("0010|0040"), "F");
+    EXPECT_EQ(dicom.Get("0020|000d"), "1.2.826.0.1.3680043.9.7777.1.2.3");
+    EXPECT_EQ(dicom.Get("0020|0010"), "S17");
+    EXPECT_EQ(dicom.Get("0008|0020"), "20260102");
+    EXPECT_EQ(dicom.Get("0008|0050"), "ACC9");
+    EXPECT_EQ(dicom.Get("0008|1030"), "CTA run-off");
+    EXPECT_FALSE(dicom.Has("0010|4000")) << "nothing made up to say";
+    EXPECT_NE(dicom.Get("0020|000e"), "1.2.826.0.1.3680043.9.7777.1.2.3") << "a new series in the input's study";
+    EXPECT_EQ(dicom.Get("0020|0013"), std::to_string(k + 1));
+  }
+}
+
+TEST_F(RotationSeriesTest, RefusedFoldersAndACancelWriteNothingAndKeepWhatWasThere)
+{
+  vr::VesselReformationLogic logic;
+  Configure(logic);
+  vr::RotationSeriesSettings settings;
+  settings.Angles = { 0.0, 30.0, 3 };
+
+  // A folder holding an earlier series: refused, the old file kept byte for byte.
+  const fs::path old = m_Folder / "old";
+  fs::create_directories(old);
+  {
+    std::ofstream(old / "rotation-000.png") << "an earlier series";
+  }
+  settings.Folder = old.string();
+  try
+  {
+    vr::ExportRotationSeries(logic, settings, {}, "--rotationSeries");
+    ADD_FAILURE() << "a folder holding a series was accepted";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_NE(std::string(error.what()).find("--rotationSeries " + old.string()), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("already holds a rotation series"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(ReadText(old / "rotation-000.png"), "an earlier series");
+  EXPECT_EQ(std::distance(fs::directory_iterator(old), fs::directory_iterator()), 1);
+
+  // A missing parent, and a file where the folder should be.
+  settings.Folder = (m_Folder / "missing" / "series").string();
+  EXPECT_THROW(
+    {
+      try
+      {
+        vr::ExportRotationSeries(logic, settings, {}, "--rotationSeries");
+      }
+      catch (const vr::InputError & error)
+      {
+        EXPECT_NE(std::string(error.what()).find("parent folder"), std::string::npos) << error.what();
+        throw;
+      }
+    },
+    vr::InputError);
+  EXPECT_FALSE(fs::exists(m_Folder / "missing"));
+  settings.Folder = (m_Folder / "runoff.vtp").string();
+  EXPECT_THROW(vr::ExportRotationSeries(logic, settings), vr::InputError);
+
+  // Cancelled at the second view: nothing published, a created folder removed, another file left alone.
+  const auto cancelAtSecondView = [](std::size_t view, std::size_t, double) { return view < 1; };
+  settings.Folder = (m_Folder / "created").string();
+  EXPECT_THROW(vr::ExportRotationSeries(logic, settings, cancelAtSecondView), vr::Cancelled);
+  EXPECT_FALSE(fs::exists(m_Folder / "created"));
+  const fs::path notes = m_Folder / "with-notes";
+  fs::create_directories(notes);
+  {
+    std::ofstream(notes / "notes.txt") << "keep me";
+  }
+  settings.Folder = notes.string();
+  EXPECT_THROW(vr::ExportRotationSeries(logic, settings, cancelAtSecondView), vr::Cancelled);
+  EXPECT_EQ(std::distance(fs::directory_iterator(notes), fs::directory_iterator()), 1) << "no staging left";
+  EXPECT_EQ(ReadText(notes / "notes.txt"), "keep me");
+
+  // A failure of the logic at the first view (centerlines replaced by none): nothing written either.
+  vr::VesselReformationLogic broken;
+  broken.SetVolumeNode(logic.GetVolumeNode());
+  settings.Folder = (m_Folder / "broken").string();
+  EXPECT_THROW(vr::ExportRotationSeries(broken, settings), vr::InputError);
+  EXPECT_FALSE(fs::exists(m_Folder / "broken"));
+
+  // And then the same folder takes a series.
+  settings.Folder = notes.string();
+  EXPECT_EQ(vr::ExportRotationSeries(logic, settings).PNGFiles.size(), 3u);
+  EXPECT_EQ(ReadText(notes / "notes.txt"), "keep me");
+}
+
+TEST(RotationAngles, DefaultsAndBadValuesNameTheFlag)
+{
+  const vr::RotationAngles defaults;
+  EXPECT_EQ(defaults.Start, 0.0);
+  EXPECT_EQ(defaults.Step, 10.0);
+  EXPECT_EQ(defaults.Count, 36);
+  EXPECT_EQ(defaults.At(35), 350.0);
+  const vr::RotationAngles parsed = vr::ParseRotationAngles("-30, 2.5,13", "--rotationAngles");
+  EXPECT_EQ(parsed.Start, -30.0);
+  EXPECT_EQ(parsed.Step, 2.5);
+  EXPECT_EQ(parsed.Count, 13);
+  EXPECT_EQ(vr::ParseRotationAngles("5,0,1", "--rotationAngles").Count, 1) << "one view needs no step";
+  for (const char * bad : { "0,10",
+                            "0,10,36,4",
+                            "0,10,",
+                            "",
+                            "0,10,0",
+                            "0,10,-3",
+                            "0,10,3601",
+                            "0,10,2.5",
+                            "0,0,5",
+                            "nan,10,3",
+                            "0,inf,3",
+                            "a,b,c",
+                            "0,10,36x",
+                            "1e308,1e308,3" })
+  {
+    try
+    {
+      vr::ParseRotationAngles(bad, "--rotationAngles");
+      ADD_FAILURE() << "accepted \"" << bad << "\"";
+    }
+    catch (const vr::InputError & error)
+    {
+      EXPECT_EQ(std::string(error.what()).rfind("--rotationAngles", 0), 0u) << bad << ": " << error.what();
+    }
+  }
+  EXPECT_EQ(vr::ParseRotationAngles("0,10,3600", "--rotationAngles").Count, 3600);
+}
+} // namespace
