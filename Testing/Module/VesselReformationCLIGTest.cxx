@@ -367,7 +367,8 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
       EXPECT_GE(rank.at(child), previous) << parameter.Name << ": <" << child << "> out of order";
       previous = rank.at(child);
     }
-    const bool isFile = parameter.Tag == "image" || parameter.Tag == "file" || parameter.Tag == "geometry";
+    const bool isFile = parameter.Tag == "image" || parameter.Tag == "file" || parameter.Tag == "geometry" ||
+                        parameter.Tag == "directory";
     // A value the module returns: an output with CTK's index 1000 (the flavour --xml prints).
     const bool isReturned = parameter.Index == "1000";
     EXPECT_EQ(isFile || isReturned, !parameter.Channel.empty())
