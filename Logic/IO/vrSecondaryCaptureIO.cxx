@@ -39,6 +39,9 @@ CheckUID(const std::string & uid, const std::string & field, const std::string &
 std::string
 NewDICOMUID()
 {
+  // ITK's GDCMImageIO sets the generator's (global) root to ITK's own when it writes: set GDCM's again, so that
+  // every UID of a series has one root.
+  gdcm::UIDGenerator::SetRoot(gdcm::UIDGenerator::GetGDCMUID());
   gdcm::UIDGenerator generator;
   return generator.Generate();
 }

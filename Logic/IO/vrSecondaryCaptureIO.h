@@ -46,7 +46,7 @@ struct SecondaryCaptureFields
   std::string ImageComments;
 };
 
-/** \return a new, globally unique DICOM UID (GDCM's generator, under its root). */
+/** \return a new, globally unique DICOM UID (GDCM's generator, under GDCM's root 1.2.826.0.1.3680043.2.1143). */
 std::string
 NewDICOMUID();
 

@@ -250,6 +250,9 @@ TEST_F(RotationSeriesTest, FromNRRDWritesPNGsAndASecondaryCaptureSeriesWithAMade
     EXPECT_FALSE(dicom.Has("0020|0037"));
     EXPECT_FALSE(dicom.Has("0020|0052"));
     sopInstances.insert(dicom.Get("0008|0018"));
+    // One root for every UID made here (ITK's writer would otherwise switch the generator to its own).
+    EXPECT_EQ(dicom.Get("0008|0018").rfind("1.2.826.0.1.3680043.2.1143.", 0), 0u) << dicom.Get("0008|0018");
+    EXPECT_EQ(dicom.Get("0020|000e").rfind("1.2.826.0.1.3680043.2.1143.", 0), 0u) << dicom.Get("0020|000e");
     if (k == 0)
     {
       seriesUID = dicom.Get("0020|000e");
