@@ -25,6 +25,7 @@
 #include <QComboBox>
 #include <QDialog>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QLabel>
 #include <QMessageBox>
 #include <QSlider>
@@ -1144,6 +1145,59 @@ TEST_F(WidgetsTest, SavesTheOutputsOnScreenAllOrNothing)
   ASSERT_NE(dialog, nullptr);
   EXPECT_NE(dialog->text().toStdString().find("no-such-folder"), std::string::npos) << dialog->text().toStdString();
   dialog->close();
+}
+
+TEST_F(WidgetsTest, ExportsARotationSeriesOfTheImageOnScreen)
+{
+  ScopedTemporaryFolder folder;
+  const std::string     series = folder.File("series");
+  const auto            shown = Window().GetCPRView()->GetResult();
+  ASSERT_TRUE(shown);
+  const double window = Window().GetPanel()->GetWindowSpinBox()->value();
+  const double level = Window().GetPanel()->GetLevelSpinBox()->value();
+  ASSERT_GT(window, 0.0);
+  const double angle = shown->Outputs.View.GetAngleInDegrees();
+  EXPECT_EQ(Window().ExportRotationSeries(QString::fromStdString(series), RotationAngles{ angle, 120.0, 3 }), 3);
+  const std::set<std::string> expected = { "rotation-000.png",   "rotation-001.png", "rotation-002.png",
+                                           "rotation-000.dcm",   "rotation-001.dcm", "rotation-002.dcm",
+                                           "rotation-angles.csv" };
+  std::set<std::string>       written;
+  for (const auto & entry : std::filesystem::directory_iterator(series))
+  {
+    written.insert(entry.path().filename().string());
+  }
+  EXPECT_EQ(written, expected);
+  // View 0 is at the angle on screen: the image on screen through the panel's window and level, computed here.
+  const QImage png(QString::fromStdString(series + "/rotation-000.png"));
+  const auto   pixels = NodePixels(shown->Outputs.CPR);
+  ASSERT_EQ(static_cast<std::size_t>(png.width()) * static_cast<std::size_t>(png.height()), pixels.size());
+  std::size_t mismatches = 0;
+  for (int y = 0; y < png.height(); ++y)
+  {
+    for (int x = 0; x < png.width(); ++x)
+    {
+      const float value =
+        pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(png.width()) + static_cast<std::size_t>(x)];
+      const double grey =
+        std::isnan(value)
+          ? 0.0
+          : std::min(255.0, std::max(0.0, std::floor(255.0 * (value - level + window / 2) / window + 0.5)));
+      mismatches += qGray(png.pixel(x, y)) != static_cast<int>(grey);
+    }
+  }
+  EXPECT_EQ(mismatches, 0u);
+
+  // The same folder again: refused with a dialog naming why, the series kept.
+  int errors = 0;
+  QObject::connect(&Window(), &ViewerWindow::errorShown, &Window(), [&] { ++errors; });
+  EXPECT_EQ(Window().ExportRotationSeries(QString::fromStdString(series), RotationAngles{}), 0);
+  EXPECT_EQ(errors, 1);
+  QMessageBox * dialog = ErrorDialog(Window());
+  ASSERT_NE(dialog, nullptr);
+  EXPECT_NE(dialog->text().toStdString().find("already holds a rotation series"), std::string::npos)
+    << dialog->text().toStdString();
+  dialog->close();
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(series), std::filesystem::directory_iterator()), 7);
 }
 
 TEST_F(WidgetsTest, EveryControlOfThePanelHasATooltip)
