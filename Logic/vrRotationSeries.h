@@ -2,6 +2,7 @@
 #ifndef vrRotationSeries_h
 #define vrRotationSeries_h
 
+#include "vrDICOMIdentity.h"
 #include "vrVesselReformationLogic.h"
 
 #include <cstddef>
@@ -12,22 +13,6 @@
 
 namespace vr
 {
-/** The attributes of a volume node read from DICOM (vr::VolumeNode::GetAttribute) that a rotation series copies
- * into its files: the input's patient and study. A node with a non-empty StudyInstanceUID counts as DICOM input. */
-namespace DICOMAttribute
-{
-constexpr const char * PatientName = "DICOM.PatientName";
-constexpr const char * PatientID = "DICOM.PatientID";
-constexpr const char * PatientBirthDate = "DICOM.PatientBirthDate";
-constexpr const char * PatientSex = "DICOM.PatientSex";
-constexpr const char * StudyInstanceUID = "DICOM.StudyInstanceUID";
-constexpr const char * StudyID = "DICOM.StudyID";
-constexpr const char * StudyDate = "DICOM.StudyDate";
-constexpr const char * StudyTime = "DICOM.StudyTime";
-constexpr const char * AccessionNumber = "DICOM.AccessionNumber";
-constexpr const char * StudyDescription = "DICOM.StudyDescription";
-} // namespace DICOMAttribute
-
 /** The Patient Name of a series whose input was not DICOM (the identity is made up and says so). */
 constexpr const char * MadeUpPatientName = "VesselReformation^Unknown";
 
@@ -109,7 +94,8 @@ using RotationSeriesProgress = std::function<bool(std::size_t view, std::size_t 
  * - rotation-000.dcm, ...: a DICOM Secondary Capture series (vr::WriteSecondaryCapture), one file per angle with
  *   Instance Number 1..N in angle order, one new Series Instance UID, a new SOP Instance UID per file, the angle in
  *   Image Comments and a Series Description such as "mpCPR rotation 0..350 deg step 10, bilateral J 3 mm". Patient
- *   and study come from the volume node's DICOM.* attributes (DICOMAttribute) when it has a Study Instance UID;
+ *   and study come from the volume node's DICOM.* attributes (vr::DICOMAttribute, vrDICOMIdentity.h; a DICOM
+ *   reader sets them with vr::DICOMAttributesOf) when it has a Study Instance UID;
  *   otherwise they are made up (MadeUpPatientName, a new patient ID and study UID) and the Patient Comments and
  *   Study Description say so;
  * - rotation-angles.csv: "view,angle_deg,png,dicom", one line per view.

@@ -2,6 +2,7 @@
 #ifndef vrSecondaryCaptureIO_h
 #define vrSecondaryCaptureIO_h
 
+#include "vrDICOMIdentity.h"
 #include "vrImageTypes.h"
 
 #include <string>
@@ -10,24 +11,6 @@ namespace vr
 {
 /** The DICOM SOP Class UID of Secondary Capture Image Storage. */
 constexpr const char * SecondaryCaptureSOPClassUID = "1.2.840.10008.5.1.4.1.1.7";
-
-/** The patient and study a DICOM file belongs to (DICOM's Patient and General Study modules). Empty fields are
- * written empty (the type 2 attributes) or left out. */
-struct DICOMIdentity
-{
-  std::string PatientName;
-  std::string PatientID;
-  std::string PatientBirthDate;
-  std::string PatientSex;
-  /** Patient Comments (0010,4000); says so when the identity was made up. */
-  std::string PatientComments;
-  std::string StudyInstanceUID;
-  std::string StudyID;
-  std::string StudyDate;
-  std::string StudyTime;
-  std::string AccessionNumber;
-  std::string StudyDescription;
-};
 
 /** One Secondary Capture picture of a series: what its file says besides the pixels. */
 struct SecondaryCaptureFields

@@ -14,7 +14,9 @@
 
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
+#include "itkCastImageFilter.h"
 #include "itkImageFileReader.h"
+#include "itkImageSeriesWriter.h"
 #include "itkMetaDataObject.h"
 #include "itkPNGImageIO.h"
 
@@ -23,6 +25,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -323,6 +326,119 @@ TEST_F(RotationSeriesTest, ADICOMVolumeGivesItsPatientAndStudy)
     EXPECT_FALSE(dicom.Has("0010|4000")) << "nothing made up to say";
     EXPECT_NE(dicom.Get("0020|000e"), "1.2.826.0.1.3680043.9.7777.1.2.3") << "a new series in the input's study";
     EXPECT_EQ(dicom.Get("0020|0013"), std::to_string(k + 1));
+  }
+}
+
+/** Writes the phantom as a CT DICOM series of one file per slice (as a scanner would, with its patient and study),
+ * the way ITK's DICOM series examples do. */
+void
+WriteDICOMSeries(const vr::VolumeImageType * volume, const fs::path & folder)
+{
+  using DICOMVolume = itk::Image<short, 3>;
+  using Slice = itk::Image<short, 2>;
+  auto cast = itk::CastImageFilter<vr::VolumeImageType, DICOMVolume>::New();
+  cast->SetInput(volume);
+  cast->Update();
+  const DICOMVolume * shorts = cast->GetOutput();
+  auto                io = itk::GDCMImageIO::New();
+  io->KeepOriginalUIDOn();
+  auto                                                  writer = itk::ImageSeriesWriter<DICOMVolume, Slice>::New();
+  std::vector<std::unique_ptr<itk::MetaDataDictionary>> owned;
+  std::vector<itk::MetaDataDictionary *>                dictionaries;
+  std::vector<std::string>                              names;
+  const unsigned int                                    slices = shorts->GetLargestPossibleRegion().GetSize()[2];
+  for (unsigned int z = 0; z < slices; ++z)
+  {
+    auto dictionary = std::make_unique<itk::MetaDataDictionary>();
+    auto put = [&](const char * tag, const std::string & value)
+    { itk::EncapsulateMetaData<std::string>(*dictionary, tag, value); };
+    itk::Point<double, 3> position;
+    shorts->TransformIndexToPhysicalPoint({ { 0, 0, static_cast<itk::IndexValueType>(z) } }, position);
+    std::ostringstream positionText;
+    positionText << position[0] << "\\" << position[1] << "\\" << position[2];
+    put("0008|0060", "CT");
+    put("0008|0016", "1.2.840.10008.5.1.4.1.1.2");
+    put("0010|0010", "Runoff^Phantom");
+    put("0010|0020", "PHANTOM-7");
+    put("0010|0040", "O");
+    put("0008|0020", "20260301");
+    put("0008|0030", "101500");
+    put("0008|0050", "A-77");
+    put("0008|1030", "CTA run-off phantom");
+    put("0020|0010", "77");
+    put("0020|000d", "1.2.826.0.1.3680043.9.7777.24.1");
+    put("0020|000e", "1.2.826.0.1.3680043.9.7777.24.2");
+    put("0020|0052", "1.2.826.0.1.3680043.9.7777.24.3");
+    put("0008|0018", "1.2.826.0.1.3680043.9.7777.24.2." + std::to_string(z + 1));
+    put("0020|0013", std::to_string(z + 1));
+    put("0020|0032", positionText.str());
+    put("0020|0037", "1\\0\\0\\0\\1\\0");
+    put("0018|0050", std::to_string(shorts->GetSpacing()[2]));
+    dictionaries.push_back(dictionary.get());
+    owned.push_back(std::move(dictionary));
+    names.push_back((folder / ("slice" + std::to_string(z + 1) + ".dcm")).string());
+  }
+  writer->SetInput(shorts);
+  writer->SetImageIO(io);
+  writer->SetFileNames(names);
+  writer->SetMetaDataDictionaryArray(&dictionaries);
+  writer->Update();
+}
+
+TEST_F(RotationSeriesTest, FromADICOMFolderTheSeriesJoinsTheInputsPatientAndStudy)
+{
+  // The phantom as a DICOM folder, read as the modules read it; the patient and study taken from its first file as
+  // a DICOM reader sets them on the node (vr::DICOMAttributesOf).
+  const fs::path dicomFolder = m_Folder / "dicom";
+  fs::create_directories(dicomFolder);
+  WriteDICOMSeries(vr::ReadVolume((m_Folder / "runoff.nrrd").string()), dicomFolder);
+  auto volume = vr::ConvertItkImageToVolumeNode(vr::ReadVolume(dicomFolder.string()), "dicom");
+  auto header = itk::GDCMImageIO::New();
+  header->SetFileName((dicomFolder / "slice1.dcm").string());
+  header->ReadImageInformation();
+  const auto attributes = vr::DICOMAttributesOf(header->GetMetaDataDictionary());
+  EXPECT_EQ(attributes.size(), 9u) << "name, ID, sex, study UID, date, time, accession, description, study ID";
+  EXPECT_EQ(attributes.at(vr::DICOMAttribute::PatientID), "PHANTOM-7") << "without DICOM's padding";
+  EXPECT_EQ(attributes.at(vr::DICOMAttribute::StudyTime), "101500");
+  EXPECT_EQ(attributes.count(vr::DICOMAttribute::PatientBirthDate), 0u) << "absent in the file: not set";
+  for (const auto & [key, value] : attributes)
+  {
+    volume->SetAttribute(key, value);
+  }
+  vr::VesselReformationLogic logic;
+  logic.SetVolumeNode(volume);
+  logic.SetCenterlineNode(
+    vr::ConvertTreeToCenterlineNode(vr::ReadCenterlines((m_Folder / "runoff.vtp").string()), "runoff.vtp"));
+  vr::ReformationParameters parameters;
+  parameters.PixelSpacing.Fill(4.0);
+  parameters.Iterations = 40;
+  logic.SetParameters(parameters);
+  vr::RotationSeriesSettings settings;
+  settings.Folder = (m_Folder / "series").string();
+  settings.Angles = { 0.0, 120.0, 3 };
+  const vr::RotationSeriesResult result = vr::ExportRotationSeries(logic, settings);
+  EXPECT_FALSE(result.IdentityMadeUp);
+  EXPECT_EQ(result.Window, 900.0) << "a CT: the CTA window";
+
+  auto series = itk::GDCMSeriesFileNames::New();
+  series->SetDirectory((m_Folder / "series").string());
+  ASSERT_EQ(series->GetSeriesUIDs().size(), 1u);
+  EXPECT_EQ(series->GetSeriesUIDs().front().find("1.2.826.0.1.3680043.9.7777.24.2"), std::string::npos)
+    << "a new series, not the input's";
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    const auto dicom = ReadDICOM(result.DICOMFiles[k]);
+    EXPECT_EQ(dicom.Get("0010|0020"), "PHANTOM-7");
+    EXPECT_EQ(dicom.Get("0010|0010"), "Runoff^Phantom");
+    EXPECT_EQ(dicom.Get("0020|000d"), "1.2.826.0.1.3680043.9.7777.24.1");
+    EXPECT_EQ(dicom.Get("0008|0050"), "A-77");
+    EXPECT_EQ(dicom.Get("0008|0030"), "101500");
+    EXPECT_NE(dicom.Get("0020|000e"), "1.2.826.0.1.3680043.9.7777.24.2");
+    EXPECT_EQ(dicom.Get("0020|0013"), std::to_string(k + 1));
+    EXPECT_EQ(dicom.Get("0008|0016"), vr::SecondaryCaptureSOPClassUID);
+    EXPECT_FALSE(dicom.Has("0020|0032")) << "the input's slices had positions; the pictures have none";
+    EXPECT_FALSE(dicom.Has("0020|0037"));
+    EXPECT_FALSE(dicom.Has("0020|0052"));
   }
 }
 
