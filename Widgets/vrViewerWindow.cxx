@@ -166,7 +166,8 @@ ViewerWindow::BuildMenus()
   file->addAction(
     tr("&Save outputs…"), this, [this] { ChooseAndSaveOutputs(); }, QKeySequence::Save);
   file->addAction(tr("Save screens&hot…"), this, [this] { ChooseAndSaveScreenshot(); });
-  file->addAction(tr("Export &rotation series…"), this, [this] { ChooseAndExportRotationSeries(); });
+  file->addAction(tr("Export &rotation series…"), this, [this] { ChooseAndExportRotationSeries(); })
+    ->setObjectName(QStringLiteral("exportRotationSeries"));
   file->addSeparator();
   file->addAction(tr("&Quit"), this, &QWidget::close, QKeySequence::Quit);
 
@@ -994,6 +995,8 @@ ViewerWindow::HelpText()
             "<li>Sampling: interpolation and slab (MIP, MinIP, mean).</li>"
             "<li>Display: window presets, overlays (centerlines, fixed mask, owner labels, depth) and comparison "
             "with the unfiltered image.</li></ul>"
+            "<p>File &gt; Export rotation series: the CPR at N angles (default 36 × 10°) at the current settings "
+            "and window, as numbered PNGs and a DICOM Secondary Capture series for the PACS.</p>"
             "<p>Warnings about the inputs appear in full in a banner above the views.</p>"
             "<p><b>Method:</b> C. Kretschmer, B. Preim, M. Stamminger, <i>Bilateral Depth Filtering for Enhanced "
             "Vessel Reformation</i>, EuroVis 2014 short paper.</p>")

@@ -1149,6 +1149,9 @@ TEST_F(WidgetsTest, SavesTheOutputsOnScreenAllOrNothing)
 
 TEST_F(WidgetsTest, ExportsARotationSeriesOfTheImageOnScreen)
 {
+  EXPECT_NE(Window().findChild<QAction *>(QStringLiteral("exportRotationSeries")), nullptr)
+    << "File > Export rotation series";
+  EXPECT_TRUE(ViewerWindow::HelpText().contains(QStringLiteral("Export rotation series")));
   ScopedTemporaryFolder folder;
   const std::string     series = folder.File("series");
   const auto            shown = Window().GetCPRView()->GetResult();
