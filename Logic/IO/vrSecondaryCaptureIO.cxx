@@ -4,15 +4,21 @@
 #include "vrAtomicOutput.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrURINames.h"
 
 #include "itkGDCMImageIO.h"
+#include "itkImageFileReader.h"
 #include "itkImageFileWriter.h"
 #include "itkMetaDataObject.h"
 
 #include <gdcmUIDGenerator.h>
 
+#include <algorithm>
 #include <ctime>
+#include <filesystem>
 #include <regex>
+
+#include <sys/statvfs.h>
 
 namespace vr
 {
@@ -116,10 +122,21 @@ WriteSecondaryCapture(const MaskImageType * grey, const SecondaryCaptureFields &
   Put(dictionary, "0020|4000", fields.ImageComments);
   Put(dictionary, "0028|0301", "NO"); // Burned In Annotation: the picture holds no text
 
+  AtomicOutput output(path);
+  // GDCM asserts (aborts the process) when its stream fails mid-write, as on a full disk: make sure the file fits
+  // first. The pixels and a header of a few kilobytes, with a margin.
+  struct statvfs disk
+  {
+  };
+  const double needed = static_cast<double>(picture->GetLargestPossibleRegion().GetNumberOfPixels()) + 64.0 * 1024.0;
+  if (!IsURIName(path) && ::statvfs(std::filesystem::path(output.TemporaryPath()).parent_path().c_str(), &disk) == 0 &&
+      static_cast<double>(disk.f_bavail) * static_cast<double>(disk.f_frsize) < needed)
+  {
+    throw InputError("DICOM output " + path + ": could not be written: the disk is full");
+  }
   auto io = itk::GDCMImageIO::New();
   io->KeepOriginalUIDOn(); // the series' UIDs, not new ones per file
-  AtomicOutput output(path);
-  auto         writer = itk::ImageFileWriter<MaskImageType>::New();
+  auto writer = itk::ImageFileWriter<MaskImageType>::New();
   writer->SetInput(picture);
   writer->SetImageIO(io);
   writer->SetFileName(output.TemporaryPath());
@@ -132,6 +149,29 @@ WriteSecondaryCapture(const MaskImageType * grey, const SecondaryCaptureFields &
   {
     throw InputError("DICOM output " + path +
                      ": could not be written: " + detail::CondenseITKMessage(exception, output.TemporaryPath(), path));
+  }
+  // As for PNGs: a full disk may go unnoticed by the writer, so read the file back and compare before it is published.
+  bool same = false;
+  try
+  {
+    const detail::ScopedConsoleCapture console; // GDCM's warnings about a truncated file
+    auto                               reader = itk::ImageFileReader<MaskImageType>::New();
+    reader->SetImageIO(itk::GDCMImageIO::New());
+    reader->SetFileName(output.TemporaryPath());
+    reader->Update();
+    const MaskImageType * back = reader->GetOutput();
+    same = back->GetLargestPossibleRegion().GetSize() == picture->GetLargestPossibleRegion().GetSize() &&
+           std::equal(picture->GetBufferPointer(),
+                      picture->GetBufferPointer() + picture->GetLargestPossibleRegion().GetNumberOfPixels(),
+                      back->GetBufferPointer());
+  }
+  catch (const itk::ExceptionObject &)
+  {
+    same = false;
+  }
+  if (!same)
+  {
+    throw InputError("DICOM output " + path + ": could not be written (the file reads back incomplete: disk full?)");
   }
   output.Commit();
 }

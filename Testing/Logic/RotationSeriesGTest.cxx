@@ -22,6 +22,9 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/mount.h>
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -41,6 +44,18 @@ TestFolder()
   const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
   const fs::path folder =
     fs::path(VR_TEST_OUTPUT_DIR) / "RotationSeries" / (std::string(info->test_suite_name()) + "." + info->name());
+  // File systems an interrupted earlier run left mounted inside it (the disk tests mount small ones) go first.
+  std::ifstream mounts("/proc/mounts");
+  std::string   device;
+  std::string   mountPoint;
+  std::string   rest;
+  while (mounts >> device >> mountPoint && std::getline(mounts, rest))
+  {
+    if (mountPoint.rfind(folder.string() + "/", 0) == 0)
+    {
+      ::umount2(mountPoint.c_str(), MNT_DETACH);
+    }
+  }
   fs::remove_all(folder);
   fs::create_directories(folder);
   return folder;
@@ -514,6 +529,90 @@ TEST_F(RotationSeriesTest, RefusedFoldersAndACancelWriteNothingAndKeepWhatWasThe
   settings.Folder = notes.string();
   EXPECT_EQ(vr::ExportRotationSeries(logic, settings).PNGFiles.size(), 3u);
   EXPECT_EQ(ReadText(notes / "notes.txt"), "keep me");
+}
+
+/** Mounts a tmpfs of \a bytes at \a folder (read-only when \a readOnly); false when this process may not mount. */
+bool
+MountSmallFileSystem(const fs::path & folder, std::size_t bytes, bool readOnly)
+{
+  fs::create_directories(folder);
+  const std::string options = "size=" + std::to_string(bytes);
+  if (::mount("tmpfs", folder.c_str(), "tmpfs", readOnly ? MS_RDONLY : 0, options.c_str()) != 0)
+  {
+    return false;
+  }
+  return true;
+}
+
+TEST_F(RotationSeriesTest, AReadOnlyOrFullDiskWritesNothingAndKeepsWhatWasThere)
+{
+  if (::geteuid() != 0)
+  {
+    GTEST_SKIP() << "needs root to mount a small and a read-only tmpfs (permissions alone do not stop root)";
+  }
+  const fs::path readOnly = m_Folder / "read-only";
+  const fs::path full = m_Folder / "full";
+  if (!MountSmallFileSystem(readOnly, 1 << 20, true))
+  {
+    GTEST_SKIP() << "running as root without the right to mount a tmpfs";
+  }
+  struct Unmount
+  {
+    std::vector<fs::path> Points;
+    ~Unmount()
+    {
+      for (const auto & point : Points)
+      {
+        ::umount2(point.c_str(), MNT_DETACH);
+      }
+    }
+  } unmount{ { readOnly } };
+  vr::VesselReformationLogic logic;
+  Configure(logic);
+  vr::RotationSeriesSettings settings;
+  settings.Angles = { 0.0, 120.0, 3 };
+
+  for (const fs::path & folder : { readOnly, readOnly / "series" })
+  {
+    settings.Folder = folder.string();
+    try
+    {
+      vr::ExportRotationSeries(logic, settings, {}, "--rotationSeries");
+      ADD_FAILURE() << folder << " was accepted";
+    }
+    catch (const vr::InputError & error)
+    {
+      EXPECT_NE(std::string(error.what()).find("--rotationSeries"), std::string::npos) << error.what();
+      EXPECT_TRUE(std::string(error.what()).find("cannot be written") != std::string::npos ||
+                  std::string(error.what()).find("cannot be created") != std::string::npos)
+        << error.what();
+    }
+  }
+  EXPECT_TRUE(fs::is_empty(readOnly));
+
+  // Room for the first views only: the series fails part way, and nothing of it stays.
+  ASSERT_TRUE(MountSmallFileSystem(full, 40 << 10, false));
+  unmount.Points.push_back(full);
+  {
+    std::ofstream(full / "keep.txt") << "an earlier file";
+  }
+  settings.Folder = full.string();
+  try
+  {
+    vr::ExportRotationSeries(logic, settings, {}, "--rotationSeries");
+    ADD_FAILURE() << "a series larger than the disk was written";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_NE(std::string(error.what()).find(full.string()), std::string::npos) << error.what();
+  }
+  std::set<std::string> left;
+  for (const auto & entry : fs::directory_iterator(full))
+  {
+    left.insert(entry.path().filename().string());
+  }
+  EXPECT_EQ(left, std::set<std::string>{ "keep.txt" });
+  EXPECT_EQ(ReadText(full / "keep.txt"), "an earlier file");
 }
 
 TEST(RotationAngles, DefaultsAndBadValuesNameTheFlag)
