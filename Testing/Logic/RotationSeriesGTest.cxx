@@ -6,6 +6,7 @@
 #include "itkCTAPhantom.h"
 #include "vrCenterlineIO.h"
 #include "vrInputError.h"
+#include "vrIntensityWindow.h"
 #include "vrNodeConversion.h"
 #include "vrRotationSeries.h"
 #include "vrSecondaryCaptureIO.h"
@@ -613,6 +614,30 @@ TEST_F(RotationSeriesTest, AReadOnlyOrFullDiskWritesNothingAndKeepsWhatWasThere)
   }
   EXPECT_EQ(left, std::set<std::string>{ "keep.txt" });
   EXPECT_EQ(ReadText(full / "keep.txt"), "an earlier file");
+}
+
+TEST(IntensityWindow, ACTGetsTheCTAWindowOtherDataItsPercentiles)
+{
+  // 10 x 10 x 10 voxels holding 0..999 once each (an MR's unitless intensities, shuffled by a stride): the 1st
+  // percentile is rank round(0.01 * 999) = 10, the 99th rank 989.
+  auto volume = vr::VolumeImageType::New();
+  volume->SetRegions(vr::VolumeImageType::SizeType{ { 10, 10, 10 } });
+  volume->Allocate();
+  for (std::size_t k = 0; k < 1000; ++k)
+  {
+    volume->GetBufferPointer()[k] = static_cast<float>((k * 37) % 1000);
+  }
+  double window = 0.0;
+  double level = 0.0;
+  vr::DefaultWindowOf(vr::ConvertItkImageToVolumeNode(volume, "mra"), window, level);
+  EXPECT_EQ(window, 979.0);
+  EXPECT_EQ(level, 499.5);
+  volume->GetBufferPointer()[0] = -1000.0f; // air in HU: a CT
+  vr::DefaultWindowOf(vr::ConvertItkImageToVolumeNode(volume, "ct"), window, level);
+  EXPECT_EQ(window, 900.0);
+  EXPECT_EQ(level, 200.0);
+  vr::DefaultWindowOf(nullptr, window, level);
+  EXPECT_EQ(window, 0.0);
 }
 
 TEST(RotationAngles, DefaultsAndBadValuesNameTheFlag)
