@@ -138,8 +138,16 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   }
   else if (arguments.Given("rotationAngles"))
   {
-    throw vr::InputError(arguments.Spelling("rotationAngles") + " is given without " +
-                         arguments.Spelling("rotationSeries") + ", the folder of the rotation series");
+    // Checked all the same, but only a warning: 3D Slicer passes every parameter's value, defaults included.
+    const vr::RotationAngles angles =
+      vr::ParseRotationAngles(arguments.String("rotationAngles"), arguments.Spelling("rotationAngles"));
+    const vr::RotationAngles defaults;
+    if (angles.Start != defaults.Start || angles.Step != defaults.Step || angles.Count != defaults.Count)
+    {
+      progress.Print(std::cerr,
+                     "warning: " + arguments.Spelling("rotationAngles") + " has no effect without " +
+                       arguments.Spelling("rotationSeries") + ", the folder of the rotation series");
+    }
   }
   // The centerlines come from a file, or are extracted from a segmentation: one of the two.
   const bool fromSegmentation = arguments.Given("segmentation");

@@ -171,7 +171,16 @@ TEST_F(RotationSeriesCLI, BadValuesExit1NamingTheFlagAndWriteNothing)
     SCOPED_TRACE(angles);
     ExpectRejected({ "--rotationSeries", series, "--rotationAngles", angles }, "--rotationAngles");
   }
-  ExpectRejected({ "--rotationAngles", "0,10,3" }, "--rotationAngles is given without --rotationSeries");
+  // Without a folder the angles are still checked; good ones only warn, as 3D Slicer passes the default every time.
+  ExpectRejected({ "--rotationAngles", "0,10,0" }, "--rotationAngles");
+  const auto withoutFolder = Run({ "--rotationAngles", "0,10,3" });
+  EXPECT_EQ(withoutFolder.ExitCode, 0) << withoutFolder.Err;
+  EXPECT_TRUE(Contains(withoutFolder.Err, "warning: --rotationAngles has no effect without --rotationSeries"))
+    << withoutFolder.Err;
+  const auto slicerDefault = Run({ "--rotationAngles", "0,10,36" });
+  EXPECT_EQ(slicerDefault.ExitCode, 0) << slicerDefault.Err;
+  EXPECT_FALSE(Contains(slicerDefault.Err, "rotationAngles")) << slicerDefault.Err;
+  vr::test::WriteTextFile((m_Folder / "cpr.nrrd").string(), "an earlier result that must survive");
   ExpectRejected({ "--rotationSeries", (m_Folder / "no-such-parent" / "series").string() }, "--rotationSeries");
 
   // A folder that holds a series already: refused, its files kept.
