@@ -34,7 +34,7 @@ namespace
  * thousands of points, so these only stop hostile counts before anything is allocated. */
 constexpr long long      MaximumCount = 1LL << 30;
 constexpr long long      MaximumComponents = 1024;
-constexpr std::uintmax_t MaximumFileBytes = 1ULL << 30;
+constexpr std::uintmax_t MaximumFileBytes = 1ULL << 28;
 constexpr std::size_t    MaximumWordLength = 255; // VTK reads keywords, names and types into 256 bytes
 
 /** A legacy data type: the VTK array it becomes and its size in a binary file. */
@@ -305,7 +305,7 @@ private:
   ReadBinary(vtkDataArray & array, const DataType & type, long long count)
   {
     const auto bytes = static_cast<std::size_t>(count) * type.FileBytes;
-    if (type.VTKType == VTK_ID_TYPE && sizeof(vtkIdType) != type.FileBytes)
+    if (type.VTKType == VTK_ID_TYPE && sizeof(vtkIdType) != type.FileBytes && count > 0)
     {
       std::vector<std::int32_t> values(static_cast<std::size_t>(count));
       std::memcpy(values.data(), m_Text.data() + m_At, bytes);
@@ -382,15 +382,14 @@ private:
     {
       // Each string takes at least its line's end.
       CheckRemaining(static_cast<double>(count) - 1.0, count, what);
-      array.SetNumberOfValues(count);
+      // Grown as strings are read: each takes at least a line end of the file.
       for (long long k = 0; k < count; ++k)
       {
-        array.SetValue(k, Decode(Line(), what));
+        array.InsertNextValue(Decode(Line(), what));
       }
       return;
     }
     CheckRemaining(static_cast<double>(count), count, what);
-    array.SetNumberOfValues(count);
     for (long long k = 0; k < count; ++k)
     {
       if (m_At >= m_Text.size())
@@ -414,7 +413,7 @@ private:
         Fail(what + ": string " + std::to_string(k) + " declares " + std::to_string(length) +
              " bytes, more than remain");
       }
-      array.SetValue(k, m_Text.substr(m_At, static_cast<std::size_t>(length)));
+      array.InsertNextValue(m_Text.substr(m_At, static_cast<std::size_t>(length)));
       m_At += static_cast<std::size_t>(length);
     }
     SkipNewline();
@@ -526,22 +525,23 @@ CellsFromLegacyLayout(const vtkIdType * values,
                       vtkIdType         points,
                       LegacyParser &    parser)
 {
+  if (cells > size)
+  {
+    parser.Fail("LINES: " + std::to_string(cells) + " cells cannot fit in " + std::to_string(size) +
+                " values (each takes its point count)");
+  }
   auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
   auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
   offsets->SetNumberOfValues(cells + 1);
-  connectivity->SetNumberOfValues(size - cells);
+  connectivity->SetNumberOfValues(size); // at most; trimmed to the ids found
   vtkIdType at = 0;
   vtkIdType used = 0;
   offsets->SetValue(0, 0);
   for (vtkIdType c = 0; c < cells; ++c)
   {
-    if (at >= size)
-    {
-      parser.Fail("LINES: " + std::to_string(cells) + " cells declared, the " + std::to_string(size) + " values hold " +
-                  std::to_string(c));
-    }
     const vtkIdType count = values[at++];
-    if (count < 0 || count > size - at)
+    // The ids must leave a value for the point count of each cell still to come.
+    if (count < 0 || count > size - at - (cells - c - 1))
     {
       parser.Fail("LINES: cell " + std::to_string(c) + " declares " + std::to_string(count) +
                   " points, more than the values left");
@@ -562,6 +562,7 @@ CellsFromLegacyLayout(const vtkIdType * values,
   {
     parser.Fail("LINES: the cells use " + std::to_string(at) + " of the " + std::to_string(size) + " values declared");
   }
+  connectivity->SetNumberOfValues(used);
   auto lines = vtkSmartPointer<vtkCellArray>::New();
   lines->SetData(offsets, connectivity);
   return lines;
