@@ -1450,6 +1450,39 @@ TEST_F(BadInputTest, VTPWithOffsetsOrConnectivityOutsideItsArrays)
   ExpectRejected({ Volume(), Write("connectivity.vtp", vtp("0 1 99", "3")) }, { "connectivity.vtp", "99" });
 }
 
+// Issue 25: the files fresh fuzzing found (kept in Testing/Fuzz/corpus, replayed there too), given as users would
+// give them: two legacy .vtk files that crashed VTK 9.1's reader (two LINES sections around a METADATA block) and a
+// .vtp whose offset of 8e18 ran VTK out of memory. Refused by name, with no VTK text of their own on stderr.
+TEST_F(BadInputTest, CenterlineFilesFromFuzzing)
+{
+  const fs::path corpus(VR_FUZZ_CORPUS_DIR);
+  const struct
+  {
+    fs::path    File;
+    std::string Mention;
+  } cases[] = {
+    { corpus / "vtk" / "crash-two-lines-sections.vtk", "METADATA: \"LINES 1 4\" is neither" },
+    { corpus / "vtk" / "crash-metadata-lines-segv-2.vtk", "METADATA: \"LINES 1 4\" is neither" },
+    { corpus / "vtp" / "crash-ascii-offsets-huge.vtp", "the offsets array of Lines: the last offset is" },
+  };
+  for (const auto & c : cases)
+  {
+    ExpectRejected({ Volume(), c.File.string() }, { "centerline file " + c.File.string() + ": ", c.Mention });
+    const RunResult result =
+      RunProgram({ ReformationExecutable, Volume(), c.File.string(), (m_Folder / "cpr.nrrd").string() });
+    for (const std::string raw : { "ERR|", "ERROR: In ", "Warning: In ", "out of memory" })
+    {
+      EXPECT_FALSE(Contains(result.Err, raw)) << result.Err;
+    }
+    // In the host's process, as 3D Slicer runs the module's library: an error, not the end of the host.
+    const RunResult library = RunInProcess(
+      ReformationLibrary, { "VesselReformation", Volume(), c.File.string(), (m_Folder / "cpr.nrrd").string() });
+    EXPECT_EQ(library.ExitCode, 1) << library.Err;
+    EXPECT_TRUE(Contains(library.Err, "centerline file " + c.File.string() + ": ")) << library.Err;
+    EXPECT_EQ(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
+  }
+}
+
 TEST_F(BadInputTest, VTPWhoseBinaryHeadersDeclareMoreThanTheFileHolds)
 {
   // VTK 9.1 allocates what a binary array's size header declares before reading it (fuzzing found a compressed
