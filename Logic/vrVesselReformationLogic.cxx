@@ -101,7 +101,7 @@ ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & par
 } // namespace
 
 /** Whether updating \a output will run its source (defined below). */
-bool
+static bool
 WillRun(itk::DataObject * output);
 
 /** One stage of the pipeline as the logic watches it: how often its filter ran, how long the latest run took, and
@@ -617,7 +617,7 @@ VesselReformationLogic::Internals::ConfigurePipeline()
 }
 
 /** Whether updating \a output will run its source: ITK's own test in DataObject::UpdateOutputData. */
-bool
+static bool
 WillRun(itk::DataObject * output)
 {
   output->UpdateOutputInformation();
