@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// Centerline readers and writers (issue 3, DESIGN 3.3): real VMTK data, round trips through every format,
+// Centerline readers and writers (issue 3, docs/design.md 3.3): real VMTK data, round trips through every format,
 // hand-written files in each coordinate convention, and the bad inputs.
 #include "vrCenterlineIO.h"
 #include "vrCenterlinePolyData.h"

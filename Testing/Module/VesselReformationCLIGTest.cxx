@@ -350,7 +350,7 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
 
   // Inside a parameter, CTK's schema (paramType and its extensions) fixes the order: name, longflag or index,
-  // description, label, default, channel, then the type's own elements or constraints. DESIGN 3.8 had label before
+  // description, label, default, channel, then the type's own elements or constraints. docs/design.md 3.8 had label before
   // description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the whole schema with xmllint.
   const std::map<std::string, int> rank = { { "name", 0 },        { "longflag", 1 }, { "index", 1 },
                                             { "description", 2 }, { "label", 3 },    { "default", 4 },
@@ -537,7 +537,7 @@ TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
   EXPECT_EQ(byName["inputCenterlines"].Index, "1");
   EXPECT_EQ(byName["outputCPR"].Index, "2");
   EXPECT_EQ(byName["outputCPR"].Channel, "output");
-  // DESIGN: w = 1, 500 Jacobi iterations, scanline, linear; issue 13: the range kernel unset in the XML (neither
+  // docs/design.md: w = 1, 500 Jacobi iterations, scanline, linear; issue 13: the range kernel unset in the XML (neither
   // --jumpThreshold nor --anisotropy is passed unless the user gives it) and J = 3 mm in the parameter object.
   const vr::ReformationParameters defaults;
   EXPECT_EQ(std::stod(byName["relaxation"].Default), 1.0);

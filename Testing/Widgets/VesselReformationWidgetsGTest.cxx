@@ -447,7 +447,7 @@ TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
   pixels.emplace_back(width - 1, height - 1);
   pixels.emplace_back(63, 128);
 
-  // The independent reference for the position: DESIGN 3.2's B(i, j) + d v from the view's C, u, v and up, in LPS,
+  // The independent reference for the position: docs/design.md 3.2's B(i, j) + d v from the view's C, u, v and up, in LPS,
   // then RAS by negating x and y.
   const itk::CPRViewGeometry & view = reference.View;
   QWidget *                    target = Window().GetCPRView()->GetRenderWidget();
