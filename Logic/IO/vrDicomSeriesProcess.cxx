@@ -258,7 +258,7 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
     {
       scanning = true;
     }
-    else if (lines[k] == "error")
+    else if (lines[k].rfind("error ", 0) == 0)
     {
       errorLine = k;
       break;
@@ -266,12 +266,28 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
   }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 1 && errorLine < lines.size())
   {
-    std::string text;
+    std::string description;
     for (std::size_t k = errorLine + 1; k < lines.size(); ++k)
     {
-      text += (k == errorLine + 1 ? "" : "\n") + lines[k];
+      description += (k == errorLine + 1 ? "" : "\n") + lines[k];
     }
-    throw InputError(where + ": " + CondenseITKMessage(itk::ExceptionObject(__FILE__, __LINE__, text)));
+    const std::string what = lines[errorLine].substr(6);
+    const std::string text = CondenseITKMessage(itk::ExceptionObject(__FILE__, __LINE__, description.c_str()));
+    if (what == "scan")
+    {
+      throw InputError(where + ": cannot scan for DICOM files: " + text);
+    }
+    if (what.rfind("read ", 0) == 0)
+    {
+      const std::string files = what.substr(5);
+      throw InputError(where + ": the DICOM file " + lastFile + " cannot be read: " + text + "; the series (" + files +
+                       (files == "1" ? " file" : " files") + ") is not read: remove or replace that file");
+    }
+    if (what == "write")
+    {
+      throw InputError(where + ": the DICOM series was read but could not be handed over: " + text);
+    }
+    throw InputError(where + ": " + text);
   }
   if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
   {

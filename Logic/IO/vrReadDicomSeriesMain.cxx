@@ -3,8 +3,9 @@
 // (ITK's GDCMSeriesFileNames and ImageSeriesReader, as float) and writes it to <output.mha>. It runs as a child
 // process of the volume reader (vrDicomSeriesProcess.cxx) because Debian's GDCM asserts, i.e. aborts the process, on
 // some corrupt files: here an abort ends this process only. Before GDCM opens a file, "file <path>" is appended to
-// the progress file, so the parent can name the file that a crash happened in. Its last line is "done" on success,
-// or "error" followed by the message on the lines after it. Exit status: 0 done, 1 error, 2 wrong arguments.
+// the progress file, so the parent can name the file that a crash or a failure happened in. Its last line is "done"
+// on success, or "error <scan|none|read N|message|write>" followed by ITK's description (or the message) on the
+// lines after it. Exit status: 0 done, 1 error, 2 wrong arguments.
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileWriter.h"
@@ -74,11 +75,12 @@ protected:
   ~TracingGDCMImageIO() override = default;
 };
 
+/** Ends with "error <what failed>" and ITK's description (or our message) on the lines after it. */
 int
-Fail(const std::string & message)
+Fail(const std::string & what, const std::string & description)
 {
-  Report("error");
-  Report(message);
+  Report("error " + what);
+  Report(description);
   return 1;
 }
 } // namespace
@@ -145,11 +147,11 @@ main(int argc, char * argv[])
   }
   catch (const itk::ExceptionObject & exception)
   {
-    return Fail("cannot scan for DICOM files: " + std::string(exception.GetDescription()));
+    return Fail("scan", exception.GetDescription());
   }
   if (files.empty())
   {
-    return Fail("holds no DICOM series");
+    return Fail("none", "holds no DICOM series");
   }
 
   using VolumeType = itk::Image<float, 3>;
@@ -163,13 +165,13 @@ main(int argc, char * argv[])
   }
   catch (const itk::ExceptionObject & exception)
   {
-    return Fail("the DICOM series (" + std::to_string(files.size()) +
-                " files) cannot be read: " + std::string(exception.GetDescription()));
+    return Fail("read " + std::to_string(files.size()), exception.GetDescription());
   }
   if (dicom->GetNumberOfComponents() != 1)
   {
-    return Fail("the DICOM series has " + std::to_string(dicom->GetNumberOfComponents()) +
-                " components per pixel (colour?); a volume must be scalar");
+    return Fail("message",
+                "the DICOM series has " + std::to_string(dicom->GetNumberOfComponents()) +
+                  " components per pixel (colour?); a volume must be scalar");
   }
   Report("write");
   auto writer = itk::ImageFileWriter<VolumeType>::New();
@@ -182,7 +184,7 @@ main(int argc, char * argv[])
   }
   catch (const itk::ExceptionObject & exception)
   {
-    return Fail("the series was read but could not be handed over (" + std::string(exception.GetDescription()) + ")");
+    return Fail("write", exception.GetDescription());
   }
   Report("done " + std::to_string(files.size()));
   return 0;

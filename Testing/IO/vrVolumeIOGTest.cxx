@@ -291,27 +291,32 @@ TEST(BadVolumeInput, MissingCorruptTwoDimensionalVectorAndEmptyFolder)
 
 TEST(BadVolumeInput, CorruptDICOMFilesEndTheReaderProcessNotThisOne)
 {
-  // Files that make Debian's GDCM assert (abort) (issue 25): the series is read in a child process, so this test's
-  // process survives each, and the message names the file.
+  // Files that make Debian's GDCM assert (abort) (issue 25), and one with 50448 bits allocated that ITK cannot read:
+  // the series is read in a child process, so this test's process survives each, and the message names the file.
   vr::test::ScopedTemporaryFolder folder;
   const auto                      volume = MakeDicomVolume(4);
   for (const char * finding : { "dicom-meta-explicit-assert/IM0018.dcm",
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
-                                "dicom-truncated-assert/IM0011.dcm" })
+                                "dicom-truncated-assert/IM0011.dcm",
+                                "dicom-bits-allocated-unhandled/IM0030.dcm" })
   {
     const std::filesystem::path file = std::filesystem::path(VR_FINDINGS_DIR) / finding;
     std::string                 message = InputErrorOf([&] { vr::ReadVolume(file.parent_path().string()); });
-    EXPECT_MESSAGE_HAS(message, "the DICOM file " + file.string() + " is corrupt");
+    EXPECT_MESSAGE_HAS(message, "the DICOM file " + file.string());
 
-    // In a folder of good files: the whole series is refused, naming the corrupt one.
-    const std::filesystem::path mixed = folder.Path() / file.parent_path().filename();
-    std::filesystem::create_directories(mixed);
-    WriteDicomSeries(volume, mixed.string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
-    std::filesystem::copy_file(file, mixed / file.filename());
-    message = InputErrorOf([&] { vr::ReadVolume(mixed.string()); });
-    EXPECT_MESSAGE_HAS(message, (mixed / file.filename()).string());
-    EXPECT_MESSAGE_HAS(message, "the series is not read");
+    // In a folder of good files: the whole series is refused, naming the corrupt one. (Only where GDCM dies on it:
+    // the file of 50448 bits fails in ITK's read, and it belongs to another series, which is not read.)
+    if (std::string(finding).find("assert") != std::string::npos)
+    {
+      const std::filesystem::path mixed = folder.Path() / file.parent_path().filename();
+      std::filesystem::create_directories(mixed);
+      WriteDicomSeries(volume, mixed.string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+      std::filesystem::copy_file(file, mixed / file.filename());
+      message = InputErrorOf([&] { vr::ReadVolume(mixed.string()); });
+      EXPECT_MESSAGE_HAS(message, (mixed / file.filename()).string());
+      EXPECT_MESSAGE_HAS(message, "is not read");
+    }
 
     // A corrupt DICOM file named like a volume file: GDCM is not asked in this process whether it reads it.
     const std::string named = folder.File(file.stem().string() + ".nrrd");

@@ -1540,26 +1540,30 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
   for (const char * finding : { "dicom-meta-explicit-assert/IM0018.dcm",
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
-                                "dicom-truncated-assert/IM0011.dcm" })
+                                "dicom-truncated-assert/IM0011.dcm",
+                                "dicom-bits-allocated-unhandled/IM0030.dcm" })
   {
     const fs::path    file = fs::path(VR_FINDINGS_DIR) / finding;
     const std::string name = file.filename().string();
     {
       const RunResult run =
-        ExpectRejected({ file.parent_path().string(), Centerlines() }, { file.string(), "corrupt" });
+        ExpectRejected({ file.parent_path().string(), Centerlines() }, { "the DICOM file " + file.string() });
       EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
     }
 
-    const fs::path mixed = m_Folder / ("mixed-" + name);
-    fs::create_directories(mixed);
-    for (const auto & entry : fs::directory_iterator(good))
+    // In a good series: refused, naming it, where GDCM dies on it (the file of 50448 bits fails in ITK's read, and
+    // it belongs to another series than the good one, which is read without it).
+    if (std::string(finding).find("assert") != std::string::npos)
     {
-      fs::copy_file(entry.path(), mixed / entry.path().filename());
-    }
-    fs::copy_file(file, mixed / name);
-    {
+      const fs::path mixed = m_Folder / ("mixed-" + name);
+      fs::create_directories(mixed);
+      for (const auto & entry : fs::directory_iterator(good))
+      {
+        fs::copy_file(entry.path(), mixed / entry.path().filename());
+      }
+      fs::copy_file(file, mixed / name);
       const RunResult run =
-        ExpectRejected({ mixed.string(), Centerlines() }, { (mixed / name).string(), "the series is not read" });
+        ExpectRejected({ mixed.string(), Centerlines() }, { (mixed / name).string(), "is not read" });
       EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
     }
 
