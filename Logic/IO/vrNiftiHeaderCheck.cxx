@@ -336,7 +336,8 @@ CheckFields(const Header & header, const std::string & where)
     throw InputError(where + ": NIfTI header field pixdim[0] (qfac) holds " + Text(header.Pixdim[0]) +
                      "; it must be a finite number");
   }
-  const double unit = SpatialUnitInMillimetres(header.XyztUnits);
+  // The library reads xyzt_units from NIfTI headers only (Analyze 7.5 has no such field there): mm otherwise.
+  const double unit = header.IsNifti ? SpatialUnitInMillimetres(header.XyztUnits) : 1.0;
   for (int k = 1; k <= axes; ++k)
   {
     const double value = header.Pixdim[k];

@@ -431,6 +431,10 @@ TEST(NiftiHeaderCheck, TheLibrarysLayoutRulesAreFollowed)
   std::memcpy(analyze.Magic, "\x01\x02\x03", 4);
   analyze.Srow[0][0] = NaN;
   EXPECT_EQ(MessageFor(analyze, nifti1), "");
+  // Nor are its units (byte 123 is no xyzt_units there): a pixdim of 5000 is 5000 mm, not 5 km.
+  analyze.XyztUnits = 1;
+  analyze.Pixdim[1] = 5000;
+  EXPECT_EQ(MessageFor(analyze, nifti1), "");
   analyze.Dim[2] = 0;
   EXPECT_NE(MessageFor(analyze, nifti1).find("dim[2]"), std::string::npos);
   // Neither NIfTI nor Analyze: left to ITK, which reads no such file.
