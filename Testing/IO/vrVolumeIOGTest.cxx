@@ -299,7 +299,8 @@ TEST(BadVolumeInput, CorruptDICOMFilesEndTheReaderProcessNotThisOne)
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
                                 "dicom-truncated-assert/IM0011.dcm",
-                                "dicom-bits-allocated-unhandled/IM0030.dcm" })
+                                "dicom-bits-allocated-unhandled/IM0030.dcm",
+                                "dicom-acr-nema-assert/IM0027.dcm" })
   {
     const std::filesystem::path file = std::filesystem::path(VR_FINDINGS_DIR) / finding;
     std::string                 message = InputErrorOf([&] { vr::ReadVolume(file.parent_path().string()); });

@@ -1541,7 +1541,8 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
                                 "dicom-truncated-assert/IM0011.dcm",
-                                "dicom-bits-allocated-unhandled/IM0030.dcm" })
+                                "dicom-bits-allocated-unhandled/IM0030.dcm",
+                                "dicom-acr-nema-assert/IM0027.dcm" })
   {
     const fs::path    file = fs::path(VR_FINDINGS_DIR) / finding;
     const std::string name = file.filename().string();
