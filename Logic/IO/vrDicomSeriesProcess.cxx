@@ -246,17 +246,21 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
   const std::vector<std::string> lines = Lines(progress);
   std::string                    lastFile;
   std::size_t                    errorLine = lines.size();
-  bool                           scanning = false;
+  std::string                    step = "starting"; // what the child was doing when it stopped, if not a file
   for (std::size_t k = 0; k < lines.size(); ++k)
   {
     if (lines[k].rfind("file ", 0) == 0)
     {
       lastFile = lines[k].substr(5);
-      scanning = false;
+      step.clear();
     }
     else if (lines[k] == "scan")
     {
-      scanning = true;
+      step = "sorting the folder's files into series";
+    }
+    else if (lines[k] == "write")
+    {
+      step = "handing the series it read over";
     }
     else if (lines[k].rfind("error ", 0) == 0)
     {
@@ -295,14 +299,12 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
     const std::string how =
       WIFSIGNALED(status) ? SignalName(WTERMSIG(status)) : "exit status " + std::to_string(WEXITSTATUS(status));
     const std::string detail = " (" + how + (assertion.empty() ? std::string() : "; " + assertion) + ")";
-    if (!lastFile.empty() && !scanning)
+    if (step.empty())
     {
       throw InputError(where + ": the DICOM file " + lastFile + " is corrupt: GDCM's reader died reading it" + detail +
                        "; the series is not read: remove or replace that file");
     }
-    throw InputError(where + ": GDCM's reader died " +
-                     (scanning ? std::string("sorting the folder's files into series") : std::string("starting")) +
-                     detail + "; the series is not read");
+    throw InputError(where + ": GDCM's reader died " + step + detail + "; the series is not read");
   }
   auto reader = itk::ImageFileReader<VolumeImageType>::New();
   reader->SetImageIO(itk::MetaImageIO::New());
