@@ -1,8 +1,11 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCenterlineExtraction.h"
 
+#include <algorithm>
+
 #include "vrCoordinateFrames.h"
 #include "vrImageGrid.h"
+#include "vrNodeConversion.h"
 #include "vrITKMessages.h"
 #include "vrParameterName.h"
 #include "vrInputError.h"
@@ -133,6 +136,102 @@ SplitSegmentationPaths(const std::string & text)
   return paths;
 }
 
+std::string
+VesselNameOfFile(const std::string & path)
+{
+  std::string name = FileName(path);
+  for (const char * extension : { ".seg.nrrd", ".nii.gz", ".nii", ".nrrd", ".nhdr", ".mha", ".mhd" })
+  {
+    const std::string ending(extension);
+    if (name.size() > ending.size() && name.compare(name.size() - ending.size(), ending.size(), ending) == 0)
+    {
+      name.erase(name.size() - ending.size());
+      break;
+    }
+  }
+  std::replace(name.begin(), name.end(), '_', ' ');
+  return name;
+}
+
+namespace
+{
+template<typename TImage>
+void
+NameBranchesByRegionOf(itk::CenterlineTree & tree, const TImage * regions, const std::map<int, std::string> & names)
+{
+  if (regions == nullptr || names.empty())
+  {
+    return;
+  }
+  const auto & region = regions->GetBufferedRegion();
+  for (auto & branch : tree.GetBranches())
+  {
+    std::map<int, std::size_t> votes;
+    for (const auto & point : branch.Points)
+    {
+      itk::Index<3> index;
+      if (!regions->TransformPhysicalPointToIndex(point, index) || !region.IsInside(index))
+      {
+        continue;
+      }
+      const int value = static_cast<int>(std::lround(static_cast<double>(regions->GetPixel(index))));
+      if (names.count(value) != 0)
+      {
+        ++votes[value];
+      }
+    }
+    const auto most =
+      std::max_element(votes.begin(), votes.end(), [](const auto & a, const auto & b) { return a.second < b.second; });
+    if (most != votes.end())
+    {
+      branch.Name = names.at(most->first);
+    }
+  }
+}
+} // namespace
+
+void
+NameBranchesByRegion(itk::CenterlineTree &              tree,
+                     const itk::Image<float, 3> *       regions,
+                     const std::map<int, std::string> & names)
+{
+  NameBranchesByRegionOf(tree, regions, names);
+}
+
+void
+NameBranchesByRegion(itk::CenterlineTree &              tree,
+                     const SegmentationMaskType *       regions,
+                     const std::map<int, std::string> & names)
+{
+  NameBranchesByRegionOf(tree, regions, names);
+}
+
+std::map<int, std::string>
+RegionNamesOf(const Segmentation & segmentation)
+{
+  std::map<int, std::string> names;
+  for (std::size_t k = 0; k < segmentation.RegionNames.size() && segmentation.Regions; ++k)
+  {
+    names[static_cast<int>(k + 1)] = segmentation.RegionNames[k];
+  }
+  return names;
+}
+
+vtkSmartPointer<VolumeNode>
+MakeSegmentationNode(const Segmentation & segmentation)
+{
+  if (!segmentation.Regions)
+  {
+    return ConvertItkImageToVolumeNode(segmentation.Mask.GetPointer(), segmentation.Name);
+  }
+  auto node = ConvertItkImageToVolumeNode(segmentation.Regions.GetPointer(), segmentation.Name);
+  for (const auto & [value, name] : RegionNamesOf(segmentation))
+  {
+    node->SetAttribute(RegionNameAttributePrefix + std::to_string(value), name);
+  }
+  return node;
+}
+
 Segmentation
 ReadSegmentation(const std::vector<std::string> & paths,
                  const std::vector<double> &      labels,
@@ -158,9 +257,23 @@ ReadSegmentation(const std::vector<std::string> & paths,
                          (labels.empty() ? std::string() : " with label " + ListLabels(labels)) + " (values " +
                          reports[k].Values + ")");
     }
+    segmentation.RegionNames.push_back(VesselNameOfFile(paths[k]));
     if (k == 0)
     {
       segmentation.Mask = mask;
+      // Regions tell vessels apart when several files are combined; a single file's name need not be a vessel's
+      // ("segmentation.nii.gz").
+      if (paths.size() >= 2 && paths.size() <= 255)
+      {
+        // Region 1 is the first file's vessel: a copy of its mask (1 = vessel).
+        segmentation.Regions = SegmentationMaskType::New();
+        segmentation.Regions->CopyInformation(mask);
+        segmentation.Regions->SetRegions(mask->GetBufferedRegion());
+        segmentation.Regions->Allocate();
+        std::copy(mask->GetBufferPointer(),
+                  mask->GetBufferPointer() + mask->GetBufferedRegion().GetNumberOfPixels(),
+                  segmentation.Regions->GetBufferPointer());
+      }
       continue;
     }
     if (!detail::SameGrid(mask, segmentation.Mask))
@@ -173,9 +286,14 @@ ReadSegmentation(const std::vector<std::string> & paths,
     const std::size_t     count = mask->GetBufferedRegion().GetNumberOfPixels();
     unsigned char *       combined = segmentation.Mask->GetBufferPointer();
     const unsigned char * added = mask->GetBufferPointer();
+    unsigned char *       regions = segmentation.Regions ? segmentation.Regions->GetBufferPointer() : nullptr;
     for (std::size_t v = 0; v < count; ++v)
     {
       combined[v] = static_cast<unsigned char>(combined[v] | added[v]);
+      if (regions != nullptr && added[v] != 0 && regions[v] == 0)
+      {
+        regions[v] = static_cast<unsigned char>(k + 1);
+      }
     }
   }
   if (vesselVoxels == 0)

@@ -5,8 +5,12 @@
 #include "itkCenterlineExtractionFilter.h"
 #include "itkCenterlineTree.h"
 #include "vrSegmentationIO.h"
+#include "vrVolumeNode.h"
+
+#include <vtkSmartPointer.h>
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,11 +47,41 @@ struct CenterlineExtractionParameters
 struct Segmentation
 {
   SegmentationMaskType::Pointer Mask;
+  /** On the mask's grid, which file each vessel voxel came from: 0 outside, k for the k-th file (the first file that
+   * has it where files overlap); null for a single file, or more than 255. */
+  SegmentationMaskType::Pointer Regions;
+  /** The vessel each region is: RegionNames[k - 1] for region k, from its file's name as TotalSegmentator writes
+   * them ("iliac_artery_left.nii.gz" gives "iliac artery left"). */
+  std::vector<std::string> RegionNames;
   /** The file names (not paths), comma-separated: how messages name the segmentation. */
   std::string Name;
   /** One line per file: its name, what it held and how many vessel voxels it gave. */
   std::vector<std::string> Descriptions;
 };
+
+/** The prefix of a segmentation node's attributes that name its regions: attribute "<prefix><k>" names the voxels of
+ * value k (vr::ReadSegmentationNode sets them; a platform may too). */
+constexpr const char * RegionNameAttributePrefix = "VesselReformation.RegionName.";
+
+/** \return the vessel a segmentation file holds, from its name: the folder and the extension (.nii.gz, .nii, .nrrd,
+ * .seg.nrrd, .nhdr, .mha, .mhd) dropped and underscores read as spaces ("aorta.nii.gz": "aorta";
+ * "common_carotid_artery_left.nii.gz": "common carotid artery left"). */
+std::string
+VesselNameOfFile(const std::string & path);
+
+/** Names each branch of \a tree after the region most of its points lie in (the voxel nearest each point);
+ * branches whose points lie in no named region keep their name.
+ * \param tree LPS mm.
+ * \param regions region values on a grid (LPS); non-integral values are rounded.
+ * \param names the name of each region value. */
+void
+NameBranchesByRegion(itk::CenterlineTree &              tree,
+                     const itk::Image<float, 3> *       regions,
+                     const std::map<int, std::string> & names);
+void
+NameBranchesByRegion(itk::CenterlineTree &              tree,
+                     const SegmentationMaskType *       regions,
+                     const std::map<int, std::string> & names);
 
 /** Splits a comma-separated list of segmentation files; a text that names an existing file as it is stays whole
  * (a file name may contain a comma).
@@ -68,6 +102,18 @@ Segmentation
 ReadSegmentation(const std::vector<std::string> & paths,
                  const std::vector<double> &      labels,
                  std::vector<std::string> &       warnings);
+
+/** \return region value -> name of \a segmentation's regions (empty without regions). */
+std::map<int, std::string>
+RegionNamesOf(const Segmentation & segmentation);
+
+/** \a segmentation as a platform's label map node, for VesselReformationLogic::SetSegmentationNode: value k for the
+ * k-th file's vessel voxels, each named by the attribute RegionNameAttributePrefix + k, so that the logic names the
+ * extracted branches; the plain mask (1 = vessel) when it has no regions.
+ * \param segmentation what ReadSegmentation returned.
+ * \return a new node named segmentation.Name. */
+vtkSmartPointer<VolumeNode>
+MakeSegmentationNode(const Segmentation & segmentation);
 
 /** \class CenterlineExtractionReport
  * \brief What an extraction found.

@@ -9,7 +9,7 @@
 
 namespace vr
 {
-/** Where BilateralDepthRelaxFilter runs (DESIGN 3.7). */
+/** Where BilateralDepthRelaxFilter runs (docs/design.md 3.7). */
 enum class RelaxBackend
 {
   /** OpenCL when the device it would use is a GPU or an accelerator and works; on a CPU device (PoCL) the native

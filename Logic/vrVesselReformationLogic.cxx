@@ -101,7 +101,7 @@ ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & par
 } // namespace
 
 /** Whether updating \a output will run its source (defined below). */
-bool
+static bool
 WillRun(itk::DataObject * output);
 
 /** One stage of the pipeline as the logic watches it: how often its filter ran, how long the latest run took, and
@@ -140,6 +140,10 @@ struct VesselReformationLogic::Internals
   vtkMTimeType                  ConvertedSegmentationTime{ 0 };
   std::vector<double>           ConvertedLabels;
   SegmentationMaskType::Pointer SegmentationMask;
+  /** The segmentation node's values and the names of its regions (RegionNameAttributePrefix), for naming the
+   * extracted branches; empty names when the node names none. */
+  VolumeImageType::Pointer   SegmentationValues;
+  std::map<int, std::string> SegmentationRegionNames;
   // Where Tree came from: a centerline node, or the extraction (its run count when Tree was taken from it).
   bool         TreeFromExtraction{ false };
   unsigned int TreeExtractionRuns{ 0 };
@@ -305,6 +309,23 @@ VesselReformationLogic::Internals::ConvertInputs()
     const VolumeImageType::Pointer values = ConvertVolumeNodeToItkImage(SegmentationNodeInput);
     SegmentationReadReport         report;
     SegmentationMask = MakeSegmentationMask(values, ExtractionParameters.Labels, SegmentationName(), &report);
+    SegmentationRegionNames.clear();
+    const std::string prefix = RegionNameAttributePrefix;
+    for (const auto & [key, value] : SegmentationNodeInput->GetAttributes())
+    {
+      if (key.compare(0, prefix.size(), prefix) == 0 && !value.empty())
+      {
+        try
+        {
+          SegmentationRegionNames[std::stoi(key.substr(prefix.size()))] = value;
+        }
+        catch (const std::exception &)
+        {
+          // Not a region number: not ours to read.
+        }
+      }
+    }
+    SegmentationValues = SegmentationRegionNames.empty() ? nullptr : values;
     if (report.ForegroundVoxels == 0)
     {
       if (ExtractionParameters.Labels.empty())
@@ -441,6 +462,7 @@ VesselReformationLogic::Internals::ExtractCenterlines()
     return;
   }
   Tree = Extraction->GetCenterlineTree();
+  NameBranchesByRegion(Tree, SegmentationValues.GetPointer(), SegmentationRegionNames);
   TreeFromExtraction = true;
   TreeExtractionRuns = ExtractionWatch.Runs;
   ConvertedCenterlineNode = nullptr; // a centerline node set later is converted again
@@ -595,7 +617,7 @@ VesselReformationLogic::Internals::ConfigurePipeline()
 }
 
 /** Whether updating \a output will run its source: ITK's own test in DataObject::UpdateOutputData. */
-bool
+static bool
 WillRun(itk::DataObject * output)
 {
   output->UpdateOutputInformation();

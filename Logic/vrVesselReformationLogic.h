@@ -42,7 +42,7 @@ struct StageTimes
   double Surface{ 0.0 };
 };
 
-/** How many times each stage has run since the logic was made (DESIGN 3.7's recompute rules are tested on
+/** How many times each stage has run since the logic was made (docs/design.md 3.7's recompute rules are tested on
  * these).
  * \ingroup VesselReformation
  */
@@ -89,7 +89,7 @@ struct ReformationOutputs
 };
 
 /** \class VesselReformationLogic
- * \brief The module logic of the multipath vessel reformation (DESIGN 3.7), shaped like a 3D Slicer loadable
+ * \brief The module logic of the multipath vessel reformation (docs/design.md 3.7), shaped like a 3D Slicer loadable
  * module's logic.
  *
  * It takes a volume node, the centerlines (a centerline node, or a segmentation node whose centerlines it extracts)

@@ -22,6 +22,7 @@ Difference(const StageCounts & after, const StageCounts & before)
 {
   StageCounts counts;
   counts.Conversion = after.Conversion - before.Conversion;
+  counts.Extraction = after.Extraction - before.Extraction;
   counts.Depth = after.Depth - before.Depth;
   counts.Relax = after.Relax - before.Relax;
   counts.Resample = after.Resample - before.Resample;

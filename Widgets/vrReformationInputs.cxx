@@ -101,7 +101,7 @@ ReadSegmentationNode(const std::vector<std::string> & paths,
 {
   const Segmentation segmentation = ReadSegmentation(paths, {}, warnings);
   descriptions = segmentation.Descriptions;
-  return ConvertItkImageToVolumeNode(segmentation.Mask.GetPointer(), segmentation.Name);
+  return MakeSegmentationNode(segmentation);
 }
 
 ReformationInputs

@@ -3,6 +3,7 @@
 
 #include "vrCenterlineExtraction.h"
 #include "vrInputError.h"
+#include "vrModulePanel.h"
 #include "vrParameterName.h"
 #include "vrReformationInputs.h"
 #include "vrRelaxBackend.h"
@@ -116,7 +117,10 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
   app.add_option("--fixLumen", fixLumen, "fix the lumen: on or off (default on)");
   app.add_option("--window", window, "display window width, in the volume's unit (HU for CT)");
   app.add_option("--level", level, "display window level, in the volume's unit (HU for CT)");
-  app.add_option("--preset", options.Preset, "window/level preset: CTA, bone, soft-tissue or full");
+  app.add_option("--preset",
+                 options.Preset,
+                 "window/level preset: CTA, bone, soft-tissue, percentile (the volume's 1st to 99th percentile) or "
+                 "full (default: CTA for a CT, percentile for other data)");
   app.add_option("--overlays",
                  overlays,
                  "overlays, comma-separated: centerlines, mask, labels, depth; or none "
@@ -279,13 +283,15 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
     if (!options.Preset.empty())
     {
       const std::string                        key = ToLower(options.Preset);
-      const std::map<std::string, std::string> presets = {
-        { "cta", "CTA" }, { "bone", "Bone" }, { "soft-tissue", "Soft tissue" }, { "full", "Full range" }
-      };
-      const auto found = presets.find(key);
+      const std::map<std::string, std::string> presets = { { "cta", "CTA" },
+                                                           { "bone", "Bone" },
+                                                           { "soft-tissue", "Soft tissue" },
+                                                           { "percentile", PercentilePresetName },
+                                                           { "full", "Full range" } };
+      const auto                               found = presets.find(key);
       if (found == presets.end())
       {
-        throw InputError("--preset \"" + options.Preset + "\": use CTA, bone, soft-tissue or full");
+        throw InputError("--preset \"" + options.Preset + "\": use CTA, bone, soft-tissue, percentile or full");
       }
       if (options.HasWindowLevel)
       {

@@ -35,7 +35,7 @@ struct CPRDepthResult
   const uint32_t *      Owner;
 };
 
-/** Rasterises \a tree into \a view (centerline pixels, DESIGN 3.4 step 1), then assigns every pixel its depth,
+/** Rasterises \a tree into \a view (centerline pixels, docs/design.md 3.4 step 1), then assigns every pixel its depth,
  * owner and fixed flag by \a mode; \a rasterized is called in between. Creates \a workspace when null. The
  * non-template work of every CPRDepthImageFilter, compiled once. */
 CPRDepthResult
@@ -49,7 +49,7 @@ ComputeCPRDepth(const CenterlineTree &        tree,
 } // namespace detail
 
 /** \class CPRDepthImageFilter
- * \brief Computes the multipath CPR depth map of a centerline tree for a view (DESIGN 3.4).
+ * \brief Computes the multipath CPR depth map of a centerline tree for a view (docs/design.md 3.4).
  *
  * Three outputs on the view's image grid: the depth along the view direction v in mm (output 0), the fixed
  * mask (output 1, 1 = fixed: centerline pixels and, with FixLumen, pixels within the owner's lumen radius) and

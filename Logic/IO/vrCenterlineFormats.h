@@ -22,14 +22,6 @@ WriteVTKCenterlines(const itk::CenterlineTree & tree,
                     const std::string &         temporaryPath,
                     CoordinateSpace             space);
 
-/** Walks a legacy .vtk file as VTK's vtkPolyDataReader will, before it does: the header, DATASET POLYDATA, and every
- * section, checking each declared count against limits and against the values or bytes that really follow, every
- * cell's point ids against the points, and POINT_DATA/CELL_DATA counts against the points and cells. VTK 9.1's
- * legacy reader trusts those counts (null dereferences on truncated files, uninitialised values on short arrays).
- * Throws vr::InputError naming the file, the section and the line. */
-void
-CheckLegacyVTKPolyData(const std::string & path);
-
 itk::CenterlineTree
 ReadMarkupsCurves(const std::string & path, CoordinateSpace space, CenterlineReadReport & report);
 void

@@ -2,14 +2,15 @@
 #include "vrCenterlineFormats.h"
 #include "vrText.h"
 #include "vrCenterlinePolyData.h"
+#include "vrCheckedXMLPolyDataReader.h"
 #include "vrInputError.h"
 #include "vrText.h"
+#include "vrLegacyVTKReader.h"
 #include "vrVTKErrorCapture.h"
 
 #include <vtkDoubleArray.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -21,6 +22,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <cctype>
 
 namespace vr::detail
@@ -110,8 +112,8 @@ HeaderInteger(const std::string & bytes, std::size_t at, std::size_t size, bool 
  * VTK's parser will trust it: uncompressed, one integer, the byte count; compressed, the block count, the block
  * size, the last block's size and each block's compressed size. Every size must fit in what the file holds after
  * it: VTK 9.1 allocates a block of the declared compressed size before reading it (fuzzing found a header asking
- * for 2.6 GB). */
-void
+ * for 2.6 GB). \return the bytes of the array's values, uncompressed. */
+std::uint64_t
 CheckBinaryHeader(const std::string & file,
                   std::size_t         start,
                   bool                base64,
@@ -151,7 +153,7 @@ CheckBinaryHeader(const std::string & file,
     {
       throw InputError(where + ": a binary array declares more bytes than the file holds");
     }
-    return;
+    return HeaderInteger(header, 0, integerSize, bigEndian);
   }
   std::string header = headerBytes(3 * integerSize);
   if (header.size() < 3 * integerSize)
@@ -184,12 +186,56 @@ CheckBinaryHeader(const std::string & file,
       throw InputError(where + ": a compressed array declares more compressed bytes than the file holds");
     }
   }
+  // Every block is full but the last, whose size is given unless it is full too (0).
+  return blocks == 0 ? 0 : (blocks - 1) * blockSize + (lastBlockSize == 0 ? blockSize : lastBlockSize);
+}
+
+/** Bytes of one value of an XML data array type; 0 for strings and types this check does not count. */
+std::size_t
+XMLTypeSize(const char * type)
+{
+  const std::string t = type == nullptr ? std::string() : std::string(type);
+  if (t == "Int8" || t == "UInt8" || t == "Char")
+  {
+    return 1;
+  }
+  if (t == "Int16" || t == "UInt16")
+  {
+    return 2;
+  }
+  if (t == "Int32" || t == "UInt32" || t == "Float32")
+  {
+    return 4;
+  }
+  if (t == "Int64" || t == "UInt64" || t == "Float64")
+  {
+    return 8;
+  }
+  return 0;
+}
+
+/** Whitespace-separated values of inline ASCII data from \a start up to the next tag. */
+long long
+CountASCIIValues(const std::string & file, std::size_t start)
+{
+  long long count = 0;
+  bool      inValue = false;
+  for (std::size_t k = start; k < file.size() && file[k] != '<'; ++k)
+  {
+    const bool space = std::isspace(static_cast<unsigned char>(file[k])) != 0;
+    count += !space && !inValue ? 1 : 0;
+    inValue = !space;
+  }
+  return count;
 }
 
 /** Checks the parsed XML of a .vtp before VTK's reader reads its arrays: VTK 9.1 trusts the declared counts and
  * component numbers (Points of 6 components make it leak the points it read; negative or huge counts size its
- * buffers). Every Piece's counts, the Points array's 3 components, and every data array's 1 to 64 components. */
-void
+ * buffers). Every Piece's counts, the Points array's 3 components, and every data array's 1 to 64 components; the
+ * values each array of numbers holds (counted in the file: ASCII values, the byte count of binary data) against what
+ * the piece needs: 3 per point, the points or cells times the components for point and cell data, one offset per
+ * cell. \return the values each such array holds, for the checks made while VTK reads the cells. */
+ValuesHeld
 CheckVTPStructure(vtkXMLDataParser * parser, const std::string & path, const std::string & where)
 {
   constexpr long long MaximumCount = 10000000;
@@ -231,6 +277,7 @@ CheckVTPStructure(vtkXMLDataParser * parser, const std::string & path, const std
       file.find('_', static_cast<std::size_t>(std::max<vtkTypeInt64>(0, appended->GetXMLByteIndex())));
     appendedStart = marker == std::string::npos ? file.size() : marker + 1;
   }
+  ValuesHeld held;
   for (int d = 0; d < root->GetNumberOfNestedElements(); ++d)
   {
     vtkXMLDataElement * dataSet = root->GetNestedElement(d);
@@ -245,11 +292,14 @@ CheckVTPStructure(vtkXMLDataParser * parser, const std::string & path, const std
       {
         continue;
       }
+      std::map<std::string, long long> counts;
       for (const char * count :
            { "NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys" })
       {
-        WholeAttribute(piece, count, 0, MaximumCount, 0, where);
+        counts[count] = WholeAttribute(piece, count, 0, MaximumCount, 0, where);
       }
+      const long long cells =
+        counts["NumberOfVerts"] + counts["NumberOfLines"] + counts["NumberOfStrips"] + counts["NumberOfPolys"];
       for (int s = 0; s < piece->GetNumberOfNestedElements(); ++s)
       {
         vtkXMLDataElement * section = piece->GetNestedElement(s);
@@ -274,6 +324,8 @@ CheckVTPStructure(vtkXMLDataParser * parser, const std::string & path, const std
                              std::to_string(components) + " values is more than this reader accepts");
           }
           const std::string format = array->GetAttribute("format") ? array->GetAttribute("format") : "ascii";
+          const std::size_t typeSize = XMLTypeSize(array->GetAttribute("type"));
+          std::uint64_t     bytes = 0;
           if (format == "binary")
           {
             // The inline data follows the end of the DataArray's start tag (VTK keeps its own position protected).
@@ -284,28 +336,65 @@ CheckVTPStructure(vtkXMLDataParser * parser, const std::string & path, const std
             {
               ++start;
             }
-            CheckBinaryHeader(file, start, true, integerSize, bigEndian, compressed, where);
+            bytes = CheckBinaryHeader(file, start, true, integerSize, bigEndian, compressed, where);
           }
           else if (format == "appended")
           {
             const long long offset = WholeAttribute(array, "offset", 0, 1LL << 40, 0, where);
-            CheckBinaryHeader(file,
-                              appendedStart + static_cast<std::size_t>(offset),
-                              appendedBase64,
-                              integerSize,
-                              bigEndian,
-                              compressed,
-                              where);
+            bytes = CheckBinaryHeader(file,
+                                      appendedStart + static_cast<std::size_t>(offset),
+                                      appendedBase64,
+                                      integerSize,
+                                      bigEndian,
+                                      compressed,
+                                      where);
           }
           else if (format != "ascii")
           {
             throw InputError(where + ": data array format \"" + format.substr(0, 20) +
                              "\" is not ascii, binary or appended");
           }
+          if (typeSize == 0)
+          {
+            continue;
+          }
+          long long values = static_cast<long long>(bytes / typeSize);
+          if (format == "ascii")
+          {
+            const std::size_t start =
+              file.find('>', static_cast<std::size_t>(std::max<vtkTypeInt64>(0, array->GetXMLByteIndex())));
+            values = start == std::string::npos ? 0 : CountASCIIValues(file, start + 1);
+          }
+          held[array] = values;
+          const char *      arrayName = array->GetAttribute("Name");
+          const std::string name = arrayName != nullptr ? arrayName : "";
+          long long         expected = -1;
+          if (sectionName == "Points")
+          {
+            expected = 3 * counts["NumberOfPoints"];
+          }
+          else if (sectionName == "PointData")
+          {
+            expected = components * counts["NumberOfPoints"];
+          }
+          else if (sectionName == "CellData")
+          {
+            expected = components * cells;
+          }
+          else if (name == "offsets" && counts.count("NumberOf" + sectionName) != 0)
+          {
+            expected = counts["NumberOf" + sectionName];
+          }
+          if (expected >= 0 && values != expected)
+          {
+            throw InputError(where + ": the " + sectionName + " array \"" + name.substr(0, 40) + "\" holds " +
+                             std::to_string(values) + " values; the piece's counts need " + std::to_string(expected));
+          }
         }
       }
     }
   }
+  return held;
 }
 } // namespace
 
@@ -319,7 +408,7 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
     if (HasExtension(path, ".vtp"))
     {
       report.Format = "VTK XML PolyData (.vtp)";
-      auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+      auto reader = vtkSmartPointer<CheckedXMLPolyDataReader>::New();
       capture.Observe(reader);
       reader->SetFileName(path.c_str());
       // The XML first; its declarations are checked before the reader reads the arrays they describe.
@@ -329,8 +418,12 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
         throw InputError("centerline file " + path +
                          ": not a readable VTK XML PolyData file (truncated or corrupt?): " + capture.FirstError());
       }
-      CheckVTPStructure(reader->GetXMLParser(), path, "centerline file " + path);
+      reader->SetValuesHeld(CheckVTPStructure(reader->GetXMLParser(), path, "centerline file " + path));
       reader->Update();
+      if (!reader->Problem().empty())
+      {
+        throw InputError("centerline file " + path + ": " + reader->Problem());
+      }
       if (capture.HasErrors())
       {
         throw InputError("centerline file " + path +
@@ -341,23 +434,10 @@ ReadVTKCenterlines(const std::string & path, CoordinateSpace space, CenterlineRe
     else
     {
       report.Format = "legacy VTK PolyData (.vtk)";
-      CheckLegacyVTKPolyData(path);
-      auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
-      capture.Observe(reader);
-      reader->SetFileName(path.c_str());
-      if (reader->IsFilePolyData() == 0)
-      {
-        throw InputError("centerline file " + path + ": not a legacy VTK file of DATASET POLYDATA" +
-                         (capture.HasErrors() ? ": " + capture.FirstError() : std::string()));
-      }
-      reader->Update();
-      if (capture.HasErrors())
-      {
-        throw InputError("centerline file " + path +
-                         ": not a readable legacy VTK PolyData file (truncated or corrupt?): " + capture.FirstError());
-      }
-      headerSpace = SpaceFromLegacyHeader(reader->GetHeader());
-      polyData = reader->GetOutput();
+      // Our own reader: VTK's legacy reader trusts the file's counts.
+      LegacyVTKPolyData legacy = ReadLegacyVTKPolyData(path, "centerline file " + path);
+      headerSpace = SpaceFromLegacyHeader(legacy.Header.c_str());
+      polyData = legacy.PolyData;
     }
   }
   if (polyData == nullptr || polyData->GetNumberOfPoints() == 0)

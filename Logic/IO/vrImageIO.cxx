@@ -4,7 +4,9 @@
 #include "vrAtomicOutput.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
+#include "vrNiftiHeaderCheck.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
@@ -77,8 +79,7 @@ Open2DImage(const std::string & path, const std::string & role)
       detail::CheckInputPath(dataFile, where + ": the data file");
     }
   }
-  itk::ImageIOBase::Pointer io =
-    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+  itk::ImageIOBase::Pointer io = detail::CreateImageIOWithoutDICOM(path);
   if (io.IsNull())
   {
     throw InputError(where + ": no ITK reader recognises this file (is the header corrupt?)");

@@ -4,10 +4,6 @@
 #include "vrInputError.h"
 #include "vrText.h"
 
-#include <zlib.h>
-
-#include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -158,79 +154,6 @@ JSONNestingDepth(const std::string & path, const std::string & role)
   }
   return deepest;
 }
-namespace
-{
-/** A value of \a bytes at \a offset as T, byte-swapped when \a swap. */
-template<typename T>
-T
-HeaderValue(const unsigned char * bytes, std::size_t offset, bool swap)
-{
-  unsigned char copy[sizeof(T)];
-  std::memcpy(copy, bytes + offset, sizeof(T));
-  if (swap)
-  {
-    for (std::size_t k = 0; k < sizeof(T) / 2; ++k)
-    {
-      std::swap(copy[k], copy[sizeof(T) - 1 - k]);
-    }
-  }
-  T value;
-  std::memcpy(&value, copy, sizeof(T));
-  return value;
-}
-} // namespace
-
-void
-CheckNiftiHeader(const std::string & path, const std::string & where)
-{
-  // gzread reads plain files as they are, so one path serves .nii and .nii.gz.
-  gzFile file = gzopen(path.c_str(), "rb");
-  if (file == nullptr)
-  {
-    return; // the reader that follows says what is wrong with the file
-  }
-  unsigned char header[540] = {};
-  const int     read = gzread(file, header, sizeof(header));
-  gzclose(file);
-  if (read < 348)
-  {
-    return;
-  }
-  const auto size = HeaderValue<std::int32_t>(header, 0, false);
-  const auto swappedSize = HeaderValue<std::int32_t>(header, 0, true);
-  const bool nifti1 = size == 348 || swappedSize == 348;
-  const bool nifti2 = (size == 540 || swappedSize == 540) && read >= 540;
-  if (!nifti1 && !nifti2)
-  {
-    return;
-  }
-  const bool swap = nifti1 ? size != 348 : size != 540;
-  // (name, offset of the first value, count) of the geometry fields, as float (NIfTI-1) or double (NIfTI-2).
-  struct Field
-  {
-    const char * Name;
-    std::size_t  Offset;
-    std::size_t  Count;
-  };
-  const Field nifti1Fields[] = { { "pixdim", 80, 7 },  { "quatern_b/c/d", 256, 3 }, { "qoffset_x/y/z", 268, 3 },
-                                 { "srow_x", 280, 4 }, { "srow_y", 296, 4 },        { "srow_z", 312, 4 } };
-  const Field nifti2Fields[] = { { "pixdim", 112, 7 }, { "quatern_b/c/d", 352, 3 }, { "qoffset_x/y/z", 376, 3 },
-                                 { "srow_x", 400, 4 }, { "srow_y", 432, 4 },        { "srow_z", 464, 4 } };
-  for (const Field & field : nifti1 ? nifti1Fields : nifti2Fields)
-  {
-    for (std::size_t k = 0; k < field.Count; ++k)
-    {
-      const double value = nifti1 ? HeaderValue<float>(header, field.Offset + 4 * k, swap)
-                                  : HeaderValue<double>(header, field.Offset + 8 * k, swap);
-      if (!std::isfinite(value) || std::abs(value) > 1e7)
-      {
-        throw InputError(where + ": NIfTI header field " + field.Name + " holds " + std::to_string(value) +
-                         "; a geometry beyond 1e7 mm or not finite cannot be read");
-      }
-    }
-  }
-}
-
 void
 CheckImageIOIsOneWeRead(const std::string & ioClassName, const std::string & where, bool dicomAllowed)
 {

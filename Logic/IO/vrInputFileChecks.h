@@ -40,13 +40,6 @@ DetachedDataFiles(const std::string & headerPath);
 std::size_t
 JSONNestingDepth(const std::string & path, const std::string & role);
 
-/** Checks the geometry fields of a NIfTI-1 or NIfTI-2 header (plain or gzip-compressed) before ITK reads it:
- * pixdim, the quaternion and its offsets, and the sform rows must be finite and within 1e7 (mm). ITK 5.2's NIfTI
- * reader hands them to vnl's SVD, which aborts the process on a non-finite matrix. Files that are not NIfTI (no
- * header size of 348 or 540 in either byte order) are left alone. Throws vr::InputError "<where>: ...". */
-void
-CheckNiftiHeader(const std::string & path, const std::string & where);
-
 /** Refuses an ITK ImageIO (by its class name) other than NRRD, NIfTI and MetaImage (and DICOM when \a dicomAllowed):
  * ITK picks a reader by content, so a PNG, JPEG, TIFF or BMP named like a volume would reach libraries whose error
  * handling aborts the process on a corrupt file (ITK 5.2's PNG reader: libpng's default handler calls abort). */

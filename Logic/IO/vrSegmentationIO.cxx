@@ -3,7 +3,9 @@
 
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
+#include "vrNiftiHeaderCheck.h"
 #include "vrURINames.h"
 
 // The reader pulls in the IO factory registration (see vrVolumeIO.cxx).
@@ -169,8 +171,7 @@ ReadSegmentationMask(const std::string & path, const std::vector<double> & label
       detail::CheckInputPath(dataFile, where + ": the data file");
     }
   }
-  itk::ImageIOBase::Pointer io =
-    itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+  itk::ImageIOBase::Pointer io = detail::CreateImageIOWithoutDICOM(path);
   if (io.IsNull())
   {
     throw InputError(where + ": no ITK reader recognises this file (NIfTI, NRRD or MetaImage are expected)");

@@ -4,12 +4,14 @@
 #include <vtkAlgorithm.h>
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
+#include <vtkLogger.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLReader.h>
 
 #include <mutex>
+#include <string>
 
 namespace vr::detail
 {
@@ -20,6 +22,14 @@ CaptureMutex()
 {
   static std::recursive_mutex mutex;
   return mutex;
+}
+
+/** How many captures are alive (under CaptureMutex): the outermost one silences vtkLogger's stderr output. */
+int &
+CaptureDepth()
+{
+  static int depth = 0;
+  return depth;
 }
 
 /** "ERROR: In file.cxx, line 12\nvtkClass (0x1234): what went wrong\n\n" -> "what went wrong". */
@@ -106,6 +116,18 @@ public:
   vtkSmartPointer<ErrorRecorder> m_Recorder;
 };
 vtkStandardNewMacro(RecordingOutputWindow);
+
+/** Records what vtkLogger is given at warning level or worse: VTK 9.1's vtkErrorMacro on an object without an
+ * ErrorEvent observer (a data array failing to allocate) logs there as well as on the output window, and vtkLogger
+ * prints to stderr itself. */
+void
+RecordLogMessage(void * recorder, const vtkLogger::Message & message)
+{
+  if (message.verbosity <= vtkLogger::VERBOSITY_WARNING)
+  {
+    static_cast<ErrorRecorder *>(recorder)->m_Errors.push_back(CleanMessage(message.message));
+  }
+}
 } // namespace
 
 class VTKErrorCapture::Implementation
@@ -115,6 +137,8 @@ public:
   vtkSmartPointer<ErrorRecorder>         m_Recorder{ vtkSmartPointer<ErrorRecorder>::New() };
   vtkSmartPointer<vtkOutputWindow>       m_PreviousWindow;
   vtkSmartPointer<RecordingOutputWindow> m_Window{ vtkSmartPointer<RecordingOutputWindow>::New() };
+  std::string                            m_LogCallback;
+  vtkLogger::Verbosity                   m_PreviousStderrVerbosity{ vtkLogger::VERBOSITY_INFO };
 };
 
 VTKErrorCapture::VTKErrorCapture()
@@ -123,10 +147,26 @@ VTKErrorCapture::VTKErrorCapture()
   m_Implementation->m_PreviousWindow = vtkOutputWindow::GetInstance();
   m_Implementation->m_Window->m_Recorder = m_Implementation->m_Recorder;
   vtkOutputWindow::SetInstance(m_Implementation->m_Window);
+  if (CaptureDepth()++ == 0)
+  {
+    // vtkLogger has no getter for its stderr level; with no callback or log file added, the cutoff is that level.
+    m_Implementation->m_PreviousStderrVerbosity = vtkLogger::GetCurrentVerbosityCutoff();
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  m_Implementation->m_LogCallback = "vr-capture-" + std::to_string(CaptureDepth());
+  vtkLogger::AddCallback(m_Implementation->m_LogCallback.c_str(),
+                         &RecordLogMessage,
+                         m_Implementation->m_Recorder.GetPointer(),
+                         vtkLogger::VERBOSITY_WARNING);
 }
 
 VTKErrorCapture::~VTKErrorCapture()
 {
+  vtkLogger::RemoveCallback(m_Implementation->m_LogCallback.c_str());
+  if (--CaptureDepth() == 0)
+  {
+    vtkLogger::SetStderrVerbosity(m_Implementation->m_PreviousStderrVerbosity);
+  }
   vtkOutputWindow::SetInstance(m_Implementation->m_PreviousWindow);
 }
 

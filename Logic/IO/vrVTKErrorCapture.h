@@ -20,7 +20,9 @@ namespace vr::detail
  * vtkOutputWindow), never through exceptions. While a capture lives, the output window is replaced by a silent
  * one that records what it is given, and Observe() adds ErrorEvent/WarningEvent observers to an algorithm (and,
  * for XML readers, to their parser), so a caller can turn the first message into a vr::InputError that names
- * the file. Captures are serialised by a process-wide lock because the output window is global.
+ * the file. VTK 9.1 also hands an error without an observer to vtkLogger, which prints to stderr itself: while a
+ * capture lives, vtkLogger prints nothing and its warnings and errors are recorded too. Captures are serialised by a
+ * process-wide lock because the output window and the logger are global.
  * \ingroup VesselReformation
  */
 class VTKErrorCapture

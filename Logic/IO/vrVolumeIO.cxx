@@ -2,19 +2,20 @@
 #include "vrVolumeIO.h"
 
 #include "vrAtomicOutput.h"
+#include "vrDicomSeriesProcess.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
+#include "vrNiftiHeaderCheck.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
 // (ITK_IO_FACTORY_REGISTER_MANAGER): NRRD, NIfTI, MetaImage, PNG and GDCM are known to this translation unit.
 #include "itkGDCMImageIO.h"
-#include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileReader.h"
 #include "itkImageFileWriter.h"
 #include "itkImageIOFactory.h"
-#include "itkImageSeriesReader.h"
 
 #include <cmath>
 #include <filesystem>
@@ -47,56 +48,12 @@ VolumeImageType::Pointer
 ReadDicomSeries(const std::string & folder)
 {
   const std::string        where = "volume folder " + folder;
-  auto                     names = itk::GDCMSeriesFileNames::New();
-  std::vector<std::string> files;
-  try
-  {
-    const detail::ScopedSilentITKOutput quiet; // "No Series were found": said below, in our words
-    names->SetUseSeriesDetails(true);
-    names->SetDirectory(folder);
-    // Several series in one folder: take the one with the most files (the volume, not a scout).
-    for (const std::string & uid : names->GetSeriesUIDs())
-    {
-      const std::vector<std::string> & seriesFiles = names->GetFileNames(uid);
-      if (seriesFiles.size() > files.size())
-      {
-        files = seriesFiles;
-      }
-    }
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(where + ": cannot scan for DICOM files: " + detail::CondenseITKMessage(exception));
-  }
-  if (files.empty())
-  {
-    throw InputError(where + ": holds no DICOM series");
-  }
-  auto dicom = itk::GDCMImageIO::New();
-  auto reader = itk::ImageSeriesReader<VolumeImageType>::New();
-  reader->SetImageIO(dicom);
-  reader->SetFileNames(files);
-  try
-  {
-    reader->Update();
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(where + ": the DICOM series (" + std::to_string(files.size()) +
-                     " files) cannot be read: " + detail::CondenseITKMessage(exception));
-  }
-  if (dicom->GetNumberOfComponents() != 1)
-  {
-    throw InputError(where + ": the DICOM series has " + std::to_string(dicom->GetNumberOfComponents()) +
-                     " components per pixel (colour?); a volume must be scalar");
-  }
-  VolumeImageType::Pointer volume = reader->GetOutput();
+  VolumeImageType::Pointer volume = detail::ReadDicomSeriesInChildProcess(folder, where);
   const auto               size = volume->GetLargestPossibleRegion().GetSize();
   if (size[2] < 2)
   {
     throw InputError(where + ": the DICOM series is a single 2D slice; a volume must be 3D");
   }
-  volume->DisconnectPipeline();
   RequireFiniteVoxels(*volume, where);
   return volume;
 }
@@ -131,7 +88,7 @@ InspectVolumeFile(const std::string & path)
   itk::ImageIOBase::Pointer io;
   {
     const detail::ScopedConsoleCapture console;
-    io = itk::ImageIOFactory::CreateImageIO(path.c_str(), itk::ImageIOFactory::IOFileModeEnum::ReadMode);
+    io = detail::CreateImageIOWithoutDICOM(path);
   }
   if (io.IsNull())
   {

@@ -9,12 +9,6 @@
 
 namespace vr
 {
-/** The flags every module accepts besides those of its XML, as 3D Slicer's generated modules do: --xml (print
- * the description), --help (print the usage), --processinformationaddress (Slicer hands a running shared
- * library module its progress structure) and --returnparameterfile (where Slicer wants the values the module
- * returns, one "name = value" line each). */
-constexpr const char * ReservedFlags[] = { "xml", "help", "processinformationaddress", "returnparameterfile" };
-
 /** \class CLIArguments
  * \brief A parsed command line of a module: the values given for its parameters, checked against the XML.
  * \ingroup VesselReformation

@@ -73,7 +73,7 @@ RunExtractCenterlines(const vr::CLIArguments & arguments, vr::CLIProgress & prog
     vr::ReadSegmentation(vr::SplitSegmentationPaths(arguments.String("segmentation")), parameters.Labels, warnings);
   progress.Update(0.1, "read");
   vr::CenterlineExtractionReport report;
-  const itk::CenterlineTree      tree = vr::ExtractCenterlineTree(
+  itk::CenterlineTree            tree = vr::ExtractCenterlineTree(
     segmentation.Mask,
     "segmentation " + segmentation.Name,
     parameters,
@@ -87,6 +87,8 @@ RunExtractCenterlines(const vr::CLIArguments & arguments, vr::CLIProgress & prog
     },
     warnings,
     &report);
+  // Each branch named after the file its voxels came from (TotalSegmentator writes one file per vessel).
+  vr::NameBranchesByRegion(tree, segmentation.Regions.GetPointer(), vr::RegionNamesOf(segmentation));
   for (const auto & warning : warnings)
   {
     progress.Print(std::cerr, "warning: " + warning);

@@ -177,7 +177,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     {
       progress.Print(std::cerr, "warning: " + warning);
     }
-    logic.SetSegmentationNode(vr::ConvertItkImageToVolumeNode(segmentation.Mask.GetPointer(), segmentation.Name));
+    logic.SetSegmentationNode(vr::MakeSegmentationNode(segmentation));
     for (const auto & description : segmentation.Descriptions)
     {
       source += (source.empty() ? "extracted from " : "; ") + description;

@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// Centerline readers and writers (issue 3, DESIGN 3.3): real VMTK data, round trips through every format,
+// Centerline readers and writers (issue 3, docs/design.md 3.3): real VMTK data, round trips through every format,
 // hand-written files in each coordinate convention, and the bad inputs.
 #include "vrCenterlineIO.h"
 #include "vrCenterlinePolyData.h"
@@ -993,7 +993,7 @@ TEST(BadCenterlineInput, VTKFilesWithoutLinesOrWithABadRadiusArray)
                           "POINTS 2 double\n1 2 3\n4 5 6\nVERTICES 2 4\n1 0\n1 1\n");
   std::string message = InputErrorOf([&] { vr::ReadCenterlines(vertices); });
   EXPECT_MESSAGE_HAS(message, vertices);
-  EXPECT_MESSAGE_HAS(message, "holds no polyline");
+  EXPECT_MESSAGE_HAS(message, "VERTICES are not part of a centerline file"); // refused by the legacy reader
 
   // XML with a Radius array one value short of the point count.
   const std::string shortRadius = folder.File("short-radius.vtp");

@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// The module logic: nodes to ITK (RAS <-> LPS), the recompute rules of DESIGN 3.7, warnings, parameter checks.
+// The module logic: nodes to ITK (RAS <-> LPS), the recompute rules of docs/design.md 3.7, warnings, parameter checks.
 
 #include "itkCPRVectorHelpers.h"
 #include "vrCoordinateFrames.h"

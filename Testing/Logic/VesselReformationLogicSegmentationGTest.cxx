@@ -3,6 +3,8 @@
 // extraction rerun only when the segmentation, its labels or the extraction parameters change, one of the two
 // centerline sources, segmentations on another grid than the volume, labels, cancelling, bad parameters.
 
+#include "itkImageRegionIteratorWithIndex.h"
+#include "vrCenterlineExtraction.h"
 #include "vrCoordinateFrames.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
@@ -365,3 +367,44 @@ TEST_F(LogicWithSegmentation, BadExtractionParametersAreNamedByMeaning)
   expectParameter(extraction, vr::ParameterName::RootPoint);
 }
 } // namespace
+
+TEST(SegmentationRegionNames, FileNamesReadAsVesselNames)
+{
+  EXPECT_EQ(vr::VesselNameOfFile("/data/seg/aorta.nii.gz"), "aorta");
+  EXPECT_EQ(vr::VesselNameOfFile("common_carotid_artery_left.nii.gz"), "common carotid artery left");
+  EXPECT_EQ(vr::VesselNameOfFile("iliac_artery_right.nii"), "iliac artery right");
+  EXPECT_EQ(vr::VesselNameOfFile("vessels.seg.nrrd"), "vessels");
+  EXPECT_EQ(vr::VesselNameOfFile("a.b_c.mha"), "a.b c");
+  EXPECT_EQ(vr::VesselNameOfFile("noextension"), "noextension");
+}
+
+TEST(SegmentationRegionNames, EachBranchTakesTheRegionMostOfItsPointsLieIn)
+{
+  // A 10 x 10 x 10 grid of 1 mm voxels: region 1 for x < 5, region 2 for x >= 5, region 3 nowhere named.
+  auto regions = itk::Image<float, 3>::New();
+  regions->SetRegions(itk::ImageRegion<3>({ { 0, 0, 0 } }, { { 10, 10, 10 } }));
+  regions->Allocate();
+  for (itk::ImageRegionIteratorWithIndex<itk::Image<float, 3>> it(regions, regions->GetBufferedRegion()); !it.IsAtEnd();
+       ++it)
+  {
+    it.Set(it.GetIndex()[0] < 5 ? 1.0f : 2.0f);
+  }
+  itk::CenterlineTree   tree;
+  itk::CenterlineBranch mostlyLeft; // x = 1, 2, 3, 6: three of four points in region 1
+  mostlyLeft.Id = 1;
+  mostlyLeft.Points = { vr::test::P(1, 5, 5), vr::test::P(2, 5, 5), vr::test::P(3, 5, 5), vr::test::P(6, 5, 5) };
+  itk::CenterlineBranch right; // all in region 2
+  right.Id = 2;
+  right.Points = { vr::test::P(7, 1, 1), vr::test::P(8, 2, 2) };
+  itk::CenterlineBranch outside; // outside the grid: keeps its name
+  outside.Id = 3;
+  outside.Name = "kept";
+  outside.Points = { vr::test::P(50, 50, 50), vr::test::P(60, 50, 50) };
+  tree.AddBranch(mostlyLeft);
+  tree.AddBranch(right);
+  tree.AddBranch(outside);
+  vr::NameBranchesByRegion(tree, regions.GetPointer(), { { 1, "aorta" }, { 2, "iliac artery left" } });
+  EXPECT_EQ(tree.GetBranches()[0].Name, "aorta");
+  EXPECT_EQ(tree.GetBranches()[1].Name, "iliac artery left");
+  EXPECT_EQ(tree.GetBranches()[2].Name, "kept");
+}

@@ -479,6 +479,20 @@ protected:
   fs::path m_Folder;
 };
 
+TEST_F(ExtractCenterlinesBadInput, FuzzFindingsAreRefusedByName)
+{
+  // NIfTI headers whose NaN srow made ITK 5.2's reader abort in vnl's SVD (issue 25): sizeof_hdr is garbage, which
+  // the NIfTI library ignores when dim[0] is valid.
+  for (const char * name : { "nifti-nan-srow-abort.nii", "nifti-nan-srow-abort-2.nii" })
+  {
+    ExpectRejected({ std::string(VR_FINDINGS_DIR) + "/" + name }, { name, "NIfTI header field sizeof_hdr" });
+  }
+  // A corrupt DICOM file that makes GDCM abort, named like a segmentation: GDCM is not asked whether it reads it.
+  const fs::path dicom = m_Folder / "mask.nrrd";
+  fs::copy_file(fs::path(VR_FINDINGS_DIR) / "dicom-meta-explicit-assert" / "IM0018.dcm", dicom);
+  ExpectRejected({ dicom.string() }, { "mask.nrrd" });
+}
+
 TEST_F(ExtractCenterlinesBadInput, EmptyMask)
 {
   auto empty = vr::test::MakeLabelMap({ { 20, 20, 20 } }, V(1, 1, 1), P(0, 0, 0), Identity());

@@ -1,7 +1,7 @@
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Validates a command-line module's --xml description against CTK's schema with xmllint, as MITK's command-line
 # module support (CTK's ctkCmdLineModuleXmlValidator) would, and checks that the validation can fail: the same
-# description with one parameter's description and label in DESIGN 3.8's old order must be rejected.
+# description with one parameter's description and label in docs/design.md 3.8's old order must be rejected.
 # Run by CTest: cmake -DMODULE=<executable> -DSCHEMA=<ctkCmdLineModule.xsd> -DXMLLINT=<xmllint> -DWORK_DIR=<dir> -P this
 foreach(variable MODULE SCHEMA XMLLINT WORK_DIR)
   if(NOT DEFINED ${variable})

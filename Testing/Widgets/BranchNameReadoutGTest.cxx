@@ -6,6 +6,11 @@
 #include "vrWidgetsTestSupport.h"
 
 #include "itkCTAPhantom.h"
+#include "vrCenterlineIO.h"
+#include "vrNodeConversion.h"
+#include "vrTestFiles.h"
+#include "vrTestSegmentations.h"
+#include "vrVolumeIO.h"
 #include "vrCoordinateFrames.h"
 #include "vrPixelReadout.h"
 
@@ -16,7 +21,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <map>
 #include <set>
@@ -44,7 +51,7 @@ DistanceToBranch(const itk::CenterlineBranch::PointType & point, const itk::Cent
 
 /** The checks for one phantom shown in \a window: returns the original ids whose name was read at least once. */
 std::set<int>
-ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom & phantom)
+ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom & phantom, double minimumRight = 1.0)
 {
   const auto result = window.GetCPRView()->GetResult();
   EXPECT_TRUE(result);
@@ -57,6 +64,7 @@ ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom
   mask->GetDimensions(dimensions);
   std::set<int> named;
   int           checked = 0;
+  int           right = 0;
   int           hovered = 0;
   for (int j = 0; j < dimensions[1]; ++j)
   {
@@ -89,8 +97,12 @@ ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom
         continue;
       }
       const std::string expected = phantom.BranchName(nearest->second);
-      EXPECT_EQ(readout.BranchName, expected) << "pixel (" << i << ", " << j << ") at RAS (" << readout.RAS[0] << ", "
-                                              << readout.RAS[1] << ", " << readout.RAS[2] << ")";
+      if (minimumRight >= 1.0)
+      {
+        EXPECT_EQ(readout.BranchName, expected) << "pixel (" << i << ", " << j << ") at RAS (" << readout.RAS[0] << ", "
+                                                << readout.RAS[1] << ", " << readout.RAS[2] << ")";
+      }
+      right += readout.BranchName == expected ? 1 : 0;
       // The patient's left is RAS -x: a vessel named left must lie there.
       if (expected.rfind("left ", 0) == 0)
       {
@@ -113,13 +125,17 @@ ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom
         const PixelReadout & shown = window.GetCPRView()->GetReadout();
         EXPECT_EQ(shown.Column, i);
         EXPECT_EQ(shown.Row, j);
-        EXPECT_EQ(shown.BranchName, expected);
-        EXPECT_TRUE(shown.ToText().contains(QString::fromStdString(expected))) << shown.ToText().toStdString();
+        EXPECT_EQ(shown.BranchName, readout.BranchName);
+        EXPECT_TRUE(shown.ToText().contains(QString::fromStdString(readout.BranchName)))
+          << shown.ToText().toStdString();
         ++hovered;
       }
     }
   }
+  std::cout << right << " of " << checked << " fixed pixels away from junctions named as the phantom names them, "
+            << named.size() << " vessels read\n";
   EXPECT_GT(checked, 100);
+  EXPECT_GE(right, minimumRight * checked) << right << " of " << checked << " pixels named right";
   EXPECT_EQ(hovered, static_cast<int>(named.size()));
   return named;
 }
@@ -161,5 +177,82 @@ TEST(BranchNameReadout, EveryFixedPixelOfTheThoracicPhantomNamesItsArteryOnTheRi
   {
     EXPECT_EQ(names.count(phantom.BranchName(branch.Id)), 1u) << phantom.BranchName(branch.Id) << " never read";
   }
+}
+/** The thoracic phantom's volume and its exact tree written to files, the tree as \a centerlineFile. */
+std::string
+WriteThoraxVolume(const vr::test::ScopedTemporaryFolder & folder, const itk::CTAPhantom & phantom)
+{
+  const std::string volume = folder.File("thorax.nrrd");
+  vr::WriteVolume(phantom.Source->GetOutput(), volume);
+  return volume;
+}
+
+TEST(BranchNameReadout, CurveNamesOfAMarkupsFileAppearInTheReadout)
+{
+  // The thoracic tree as 3D Slicer curves, each named after its artery (the markups writer writes branch names).
+  vr::test::ScopedTemporaryFolder folder;
+  const itk::CTAPhantom           phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax, 1.5);
+  phantom.Source->Update();
+  const std::string volume = WriteThoraxVolume(folder, phantom);
+  const std::string curves = folder.File("arteries.mrk.json");
+  vr::WriteCenterlines(phantom.Tree, curves);
+  ASSERT_NE(vr::test::ReadTextFile(curves).find("\"left subclavian artery\""), std::string::npos);
+
+  const auto window = MakeWindowOnSmallPhantom(0.0);
+  const auto before = window->GetController()->GetInputs();
+  window->OpenFiles(QString::fromStdString(volume), QString::fromStdString(curves));
+  ASSERT_TRUE(WaitUntil([&] { return window->GetController()->GetInputs() != before; }, 120.0));
+  ASSERT_TRUE(WaitUntilSettled(*window, 300.0));
+  const std::set<int> named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom);
+  EXPECT_EQ(named.size(), phantom.Tree.GetNumberOfBranches());
+}
+
+TEST(BranchNameReadout, MaskFileNamesOfATotalSegmentatorFolderAppearInTheReadout)
+{
+  // One mask per artery, named as TotalSegmentator names its files ("left_subclavian_artery.nii.gz"), drawn from the
+  // phantom's exact tubes; the viewer extracts the centerlines and names each branch after the file it runs in.
+  vr::test::ScopedTemporaryFolder folder;
+  const itk::CTAPhantom           phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax, 1.5);
+  phantom.Source->Update();
+  const std::string volume = WriteThoraxVolume(folder, phantom);
+  const auto *      grid = phantom.Source->GetOutput();
+  QStringList       masks;
+  for (const auto & branch : phantom.Tree.GetBranches())
+  {
+    auto mask = vr::test::MakeLabelMap(
+      grid->GetLargestPossibleRegion().GetSize(), grid->GetSpacing(), grid->GetOrigin(), grid->GetDirection());
+    itk::CenterlineTree one;
+    one.AddBranch(branch);
+    vr::test::DrawTubes(mask, one);
+    std::string file = phantom.BranchName(branch.Id);
+    std::replace(file.begin(), file.end(), ' ', '_');
+    const std::string path = folder.File(file + ".nii.gz");
+    // As float voxels 0 and 1: a label map to the reader, written by the project's own volume writer.
+    auto values = vr::VolumeImageType::New();
+    values->CopyInformation(mask);
+    values->SetRegions(mask->GetLargestPossibleRegion());
+    values->Allocate();
+    std::copy(mask->GetBufferPointer(),
+              mask->GetBufferPointer() + mask->GetLargestPossibleRegion().GetNumberOfPixels(),
+              values->GetBufferPointer());
+    vr::WriteVolume(values, path);
+    masks << QString::fromStdString(path);
+  }
+  const auto window = MakeWindowOnSmallPhantom(0.0);
+  const auto before = window->GetController()->GetInputs();
+  window->OpenFilesWithSegmentation(QString::fromStdString(volume), masks);
+  ASSERT_TRUE(WaitUntil([&] { return window->GetController()->GetInputs() != before; }, 120.0));
+  ASSERT_TRUE(WaitUntilSettled(*window, 300.0));
+  ASSERT_TRUE(WaitUntil(
+    [&]
+    {
+      return window->GetCPRView()->GetResult() &&
+             window->GetCPRView()->GetResult()->Inputs->Tree.GetNumberOfBranches() > 0;
+    },
+    120.0));
+  // Extracted branches end where the extraction splits them, near but not at the files' borders: most pixels away
+  // from the junctions must read their file's vessel.
+  const std::set<int> named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom, 0.9);
+  EXPECT_GE(named.size(), phantom.Tree.GetNumberOfBranches() - 1);
 }
 } // namespace

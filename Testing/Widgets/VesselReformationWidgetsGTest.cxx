@@ -30,6 +30,7 @@
 #include <QMessageBox>
 #include <QSlider>
 #include <QTest>
+#include <QWheelEvent>
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkCellData.h>
@@ -381,6 +382,45 @@ TEST(ViewerSettingsTest, RecentKeepsEightLatestFirstWithoutRepeatsAndTheFolderOf
             std::filesystem::path(folder.File("viewer.ini")).parent_path().string());
 }
 
+TEST_F(WidgetsTest, AResizeKeepsTheImageFittedUntilTheUserZooms)
+{
+  CPRView * view = Window().GetCPRView();
+  const int width = static_cast<int>(view->GetResult()->Outputs.View.GetSize()[0]);
+  const int height = static_cast<int>(view->GetResult()->Outputs.View.GetSize()[1]);
+  auto      corners = [&]
+  {
+    return std::make_pair(view->WidgetPositionOfPixel(0, 0, false),
+                          view->WidgetPositionOfPixel(width - 1, height - 1, false));
+  };
+  const auto before = corners();
+  Window().resize(1700, 1050);
+  QTest::qWait(300);
+  const auto resized = corners();
+  EXPECT_NE(resized, before) << "the image kept its screen size in a larger view";
+  view->FitImage();
+  EXPECT_EQ(corners(), resized) << "after the resize the image was not fitted";
+
+  // Zoomed by the user: a resize leaves the zoom alone.
+  QWidget *     target = view->GetRenderWidget();
+  const QPointF centre(target->width() / 2.0, target->height() / 2.0);
+  QWheelEvent   wheel(centre,
+                    QPointF(target->mapToGlobal(centre.toPoint())),
+                    QPoint(),
+                    QPoint(0, 240),
+                    Qt::NoButton,
+                    Qt::NoModifier,
+                    Qt::NoScrollPhase,
+                    false);
+  QApplication::sendEvent(target, &wheel);
+  const auto zoomed = corners();
+  Window().resize(1400, 900);
+  QTest::qWait(300);
+  const auto afterZoomedResize = corners();
+  view->FitImage();
+  EXPECT_NE(corners(), afterZoomedResize) << "the zoom was undone by the resize";
+  (void)zoomed;
+}
+
 TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
 {
   const ReformationOutputs reference = ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle));
@@ -408,7 +448,7 @@ TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
   pixels.emplace_back(width - 1, height - 1);
   pixels.emplace_back(63, 128);
 
-  // The independent reference for the position: DESIGN 3.2's B(i, j) + d v from the view's C, u, v and up, in LPS,
+  // The independent reference for the position: docs/design.md 3.2's B(i, j) + d v from the view's C, u, v and up, in LPS,
   // then RAS by negating x and y.
   const itk::CPRViewGeometry & view = reference.View;
   QWidget *                    target = Window().GetCPRView()->GetRenderWidget();

@@ -1,0 +1,325 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrDicomSeriesProcess.h"
+
+#include "vrITKMessages.h"
+#include "vrInputError.h"
+
+#include "itkImageFileReader.h"
+#include "itkMetaImageIO.h"
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+extern char ** environ;
+
+namespace vr::detail
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+constexpr const char * HelperName = "vrReadDicomSeries";
+
+bool
+IsExecutable(const fs::path & path)
+{
+  std::error_code error;
+  return fs::is_regular_file(path, error) && ::access(path.c_str(), X_OK) == 0;
+}
+
+/** A private folder under the system's temporary folder, removed with everything in it. */
+class TemporaryFolder
+{
+public:
+  TemporaryFolder()
+  {
+    std::error_code error;
+    std::string     pattern = (fs::temp_directory_path(error) / "vr-dicom-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) != nullptr)
+    {
+      m_Path = pattern;
+    }
+  }
+  ~TemporaryFolder()
+  {
+    if (!m_Path.empty())
+    {
+      std::error_code error;
+      fs::remove_all(m_Path, error);
+    }
+  }
+  TemporaryFolder(const TemporaryFolder &) = delete;
+  TemporaryFolder &
+  operator=(const TemporaryFolder &) = delete;
+
+  const fs::path &
+  Path() const
+  {
+    return m_Path;
+  }
+
+private:
+  fs::path m_Path;
+};
+
+std::vector<std::string>
+Lines(const fs::path & path)
+{
+  std::ifstream            file(path);
+  std::vector<std::string> lines;
+  std::string              line;
+  while (std::getline(file, line))
+  {
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+/** glibc's "prog: /build/gdcm/Source/gdcmPixelFormat.h:94: ...: Assertion `spp <= 4' failed." as
+ * "gdcmPixelFormat.h:94: assertion `spp <= 4' failed"; empty when the child printed no assertion. */
+std::string
+AssertionText(const fs::path & messages)
+{
+  for (const std::string & line : Lines(messages))
+  {
+    const auto assertion = line.find("Assertion `");
+    if (assertion == std::string::npos)
+    {
+      continue;
+    }
+    std::string expression = line.substr(assertion + 11);
+    expression = expression.substr(0, expression.find("' failed"));
+    // The source file and line: the field before the function's, after the program's name.
+    std::string where;
+    const auto  first = line.find(": ");
+    if (first != std::string::npos)
+    {
+      const auto second = line.find(": ", first + 2);
+      if (second != std::string::npos && second < assertion)
+      {
+        where = fs::path(line.substr(first + 2, second - first - 2)).filename().string() + ": ";
+      }
+    }
+    return where + "assertion `" + expression + "' failed";
+  }
+  return std::string();
+}
+
+std::string
+SignalName(int signal)
+{
+  switch (signal)
+  {
+    case SIGABRT:
+      return "SIGABRT, an assertion or abort";
+    case SIGSEGV:
+      return "SIGSEGV, a crash";
+    case SIGBUS:
+      return "SIGBUS, a crash";
+    case SIGFPE:
+      return "SIGFPE, a crash";
+    case SIGILL:
+      return "SIGILL, a crash";
+    case SIGKILL:
+      return "SIGKILL, killed (out of memory?)";
+    default:
+      return "signal " + std::to_string(signal);
+  }
+}
+
+/** Runs \a helper with \a arguments, its standard output and error into \a messages; returns waitpid's status, or
+ * -1 (errno kept in \a spawnError) when it could not be started. */
+int
+RunHelper(const std::string &              helper,
+          const std::vector<std::string> & arguments,
+          const fs::path &                 messages,
+          int &                            spawnError)
+{
+  std::vector<char *> argv;
+  argv.push_back(const_cast<char *>(helper.c_str()));
+  for (const std::string & argument : arguments)
+  {
+    argv.push_back(const_cast<char *>(argument.c_str()));
+  }
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  pid_t child = -1;
+  spawnError = ::posix_spawn(&child, helper.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawnError != 0)
+  {
+    return -1;
+  }
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0)
+  {
+    if (errno != EINTR)
+    {
+      spawnError = errno;
+      return -1;
+    }
+  }
+  return status;
+}
+} // namespace
+
+std::string
+DicomSeriesReaderPath()
+{
+  if (const char * configured = std::getenv("VR_DICOM_SERIES_READER"))
+  {
+    return IsExecutable(configured) ? std::string(configured) : std::string();
+  }
+  std::vector<fs::path> bases;
+  Dl_info               info{};
+  if (::dladdr(reinterpret_cast<void *>(&DicomSeriesReaderPath), &info) != 0 && info.dli_fname != nullptr)
+  {
+    std::error_code error;
+    bases.push_back(fs::canonical(info.dli_fname, error).parent_path());
+  }
+  std::error_code error;
+  const fs::path  executable = fs::read_symlink("/proc/self/exe", error);
+  if (!error)
+  {
+    bases.push_back(executable.parent_path());
+  }
+  for (const fs::path & base : bases)
+  {
+    for (const fs::path & candidate : { base / HelperName,
+                                        base / "../libexec/VesselReformation" / HelperName,
+                                        base / "../../../libexec/VesselReformation" / HelperName })
+    {
+      if (IsExecutable(candidate))
+      {
+        return candidate.lexically_normal().string();
+      }
+    }
+  }
+  for (const char * compiledIn : { VR_DICOM_SERIES_READER_BUILD_PATH, VR_DICOM_SERIES_READER_INSTALL_PATH })
+  {
+    if (IsExecutable(compiledIn))
+    {
+      return compiledIn;
+    }
+  }
+  return std::string();
+}
+
+VolumeImageType::Pointer
+ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & where)
+{
+  const std::string helper = DicomSeriesReaderPath();
+  if (helper.empty())
+  {
+    throw InputError(where + ": cannot read DICOM: the reader process " + std::string(HelperName) +
+                     " was not found (is the installation complete? VR_DICOM_SERIES_READER may name it)");
+  }
+  const TemporaryFolder scratch;
+  if (scratch.Path().empty())
+  {
+    throw InputError(where + ": cannot read DICOM: no temporary folder could be made for the reader process");
+  }
+  const fs::path output = scratch.Path() / "series.mha";
+  const fs::path progress = scratch.Path() / "progress.txt";
+  const fs::path messages = scratch.Path() / "messages.txt";
+  int            spawnError = 0;
+  const int      status = RunHelper(helper, { folder, output.string(), progress.string() }, messages, spawnError);
+  if (status < 0)
+  {
+    throw InputError(where + ": cannot start the DICOM reader process " + helper + ": " + std::strerror(spawnError));
+  }
+  const std::vector<std::string> lines = Lines(progress);
+  std::string                    lastFile;
+  std::size_t                    errorLine = lines.size();
+  std::string                    step = "starting"; // what the child was doing when it stopped, if not a file
+  for (std::size_t k = 0; k < lines.size(); ++k)
+  {
+    if (lines[k].rfind("file ", 0) == 0)
+    {
+      lastFile = lines[k].substr(5);
+      step.clear();
+    }
+    else if (lines[k] == "scan")
+    {
+      step = "sorting the folder's files into series";
+    }
+    else if (lines[k] == "write")
+    {
+      step = "handing the series it read over";
+    }
+    else if (lines[k].rfind("error ", 0) == 0)
+    {
+      errorLine = k;
+      break;
+    }
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 1 && errorLine < lines.size())
+  {
+    std::string description;
+    for (std::size_t k = errorLine + 1; k < lines.size(); ++k)
+    {
+      description += (k == errorLine + 1 ? "" : "\n") + lines[k];
+    }
+    const std::string what = lines[errorLine].substr(6);
+    const std::string text = CondenseITKMessage(itk::ExceptionObject(__FILE__, __LINE__, description.c_str()));
+    if (what == "scan")
+    {
+      throw InputError(where + ": cannot scan for DICOM files: " + text);
+    }
+    if (what.rfind("read ", 0) == 0)
+    {
+      const std::string files = what.substr(5);
+      throw InputError(where + ": the DICOM file " + lastFile + " cannot be read: " + text + "; the series (" + files +
+                       (files == "1" ? " file" : " files") + ") is not read: remove or replace that file");
+    }
+    if (what == "write")
+    {
+      throw InputError(where + ": the DICOM series was read but could not be handed over: " + text);
+    }
+    throw InputError(where + ": " + text);
+  }
+  if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+  {
+    const std::string assertion = AssertionText(messages);
+    const std::string how =
+      WIFSIGNALED(status) ? SignalName(WTERMSIG(status)) : "exit status " + std::to_string(WEXITSTATUS(status));
+    const std::string detail = " (" + how + (assertion.empty() ? std::string() : "; " + assertion) + ")";
+    if (step.empty())
+    {
+      throw InputError(where + ": the DICOM file " + lastFile + " is corrupt: GDCM's reader died reading it" + detail +
+                       "; the series is not read: remove or replace that file");
+    }
+    throw InputError(where + ": GDCM's reader died " + step + detail + "; the series is not read");
+  }
+  auto reader = itk::ImageFileReader<VolumeImageType>::New();
+  reader->SetImageIO(itk::MetaImageIO::New());
+  reader->SetFileName(output.string());
+  try
+  {
+    const ScopedConsoleCapture console;
+    reader->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError(where + ": the DICOM reader process handed over no volume: " + CondenseITKMessage(exception));
+  }
+  VolumeImageType::Pointer volume = reader->GetOutput();
+  volume->DisconnectPipeline();
+  return volume;
+}
+} // namespace vr::detail

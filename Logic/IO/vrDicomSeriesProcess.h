@@ -1,0 +1,31 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrDicomSeriesProcess_h
+#define vrDicomSeriesProcess_h
+
+#include "vrImageTypes.h"
+
+#include <string>
+
+/** Reading a DICOM series in a child process. Not installed: an implementation detail of the IO library. */
+namespace vr::detail
+{
+/** Reads the DICOM series with the most files in \a folder as ReadVolume() does, in the helper vrReadDicomSeries
+ * (a child process), so that a corrupt file that makes GDCM abort or crash ends the child only. Debian's GDCM is
+ * built with assertions, and reading one corrupt file is enough to abort.
+ *
+ * A corrupt file is reported by name and the whole series is refused (its other files are not read: a volume with
+ * a slice missing would be wrong without a word). Throws vr::InputError "<where>: ..." naming the file and the signal,
+ * or GDCM's and ITK's failure in one line; nothing from GDCM or ITK reaches the terminal.
+ *
+ * The helper is found at $VR_DICOM_SERIES_READER when set, else beside the executable or shared library holding
+ * this code, in ../libexec/VesselReformation from there (an install tree's bin/ or lib/VesselReformation/cli-modules/
+ * three levels down), then in the build tree and the install prefix this library was built for. */
+VolumeImageType::Pointer
+ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & where);
+
+/** The helper's path as ReadDicomSeriesInChildProcess() finds it; empty when there is none. */
+std::string
+DicomSeriesReaderPath();
+} // namespace vr::detail
+
+#endif

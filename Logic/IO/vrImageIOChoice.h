@@ -1,0 +1,20 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrImageIOChoice_h
+#define vrImageIOChoice_h
+
+#include "itkImageIOBase.h"
+
+#include <string>
+
+/** Which ITK ImageIO reads a file. Not installed: an implementation detail of the IO library. */
+namespace vr::detail
+{
+/** ITK's choice of reader for \a path (itk::ImageIOFactory::CreateImageIO: the first registered ImageIO whose
+ * CanReadFile says yes), except that GDCM is never asked: its CanReadFile parses the whole file, and Debian's GDCM
+ * aborts the process on some corrupt files. DICOM is read from a folder, in a child process (vrDicomSeriesProcess.h).
+ * Null when no other ImageIO takes the file. */
+itk::ImageIOBase::Pointer
+CreateImageIOWithoutDICOM(const std::string & path);
+} // namespace vr::detail
+
+#endif

@@ -1,0 +1,191 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// vrReadDicomSeries <folder> <output.mha> <progress file>: reads the DICOM series with the most files in <folder>
+// (ITK's GDCMSeriesFileNames and ImageSeriesReader, as float) and writes it to <output.mha>. It runs as a child
+// process of the volume reader (vrDicomSeriesProcess.cxx) because Debian's GDCM asserts, i.e. aborts the process, on
+// some corrupt files: here an abort ends this process only. Before GDCM opens a file, "file <path>" is appended to
+// the progress file, so the parent can name the file that a crash or a failure happened in. Its last line is "done"
+// on success, or "error <scan|none|read N|message|write>" followed by ITK's description (or the message) on the
+// lines after it. Exit status: 0 done, 1 error, 2 wrong arguments.
+#include "itkGDCMImageIO.h"
+#include "itkGDCMSeriesFileNames.h"
+#include "itkImageFileWriter.h"
+#include "itkImageSeriesReader.h"
+#include "itkMetaImageIO.h"
+#include "itkObject.h"
+
+#include <gdcmImageReader.h>
+#include <gdcmTrace.h>
+
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace
+{
+int ProgressFile = -1;
+
+/** Appends \a line to the progress file at once (no buffer a crash could lose). */
+void
+Report(const std::string & line)
+{
+  const std::string text = line + "\n";
+  std::size_t       written = 0;
+  while (written < text.size())
+  {
+    const ssize_t count = ::write(ProgressFile, text.data() + written, text.size() - written);
+    if (count <= 0)
+    {
+      return;
+    }
+    written += static_cast<std::size_t>(count);
+  }
+}
+
+/** GDCM's ImageIO, saying which file it is about to read before each header and each slice it reads. */
+class TracingGDCMImageIO : public itk::GDCMImageIO
+{
+public:
+  ITK_DISALLOW_COPY_AND_MOVE(TracingGDCMImageIO);
+  using Self = TracingGDCMImageIO;
+  using Superclass = itk::GDCMImageIO;
+  using Pointer = itk::SmartPointer<Self>;
+  itkNewMacro(Self);
+  itkTypeMacro(TracingGDCMImageIO, GDCMImageIO);
+
+  void
+  ReadImageInformation() override
+  {
+    Report("file " + std::string(this->GetFileName()));
+    Superclass::ReadImageInformation();
+  }
+  void
+  Read(void * buffer) override
+  {
+    Report("file " + std::string(this->GetFileName()));
+    Superclass::Read(buffer);
+  }
+
+protected:
+  TracingGDCMImageIO() = default;
+  ~TracingGDCMImageIO() override = default;
+};
+
+/** Ends with "error <what failed>" and ITK's description (or our message) on the lines after it. */
+int
+Fail(const std::string & what, const std::string & description)
+{
+  Report("error " + what);
+  Report(description);
+  return 1;
+}
+} // namespace
+
+int
+main(int argc, char * argv[])
+{
+  if (argc != 4)
+  {
+    return 2;
+  }
+  const std::string folder = argv[1];
+  const std::string output = argv[2];
+  ProgressFile = ::open(argv[3], O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0600);
+  if (ProgressFile < 0)
+  {
+    return 2;
+  }
+  // A corrupt file is reported by the parent; a core dump of this process would only fill the user's disk.
+  const rlimit noCore{ 0, 0 };
+  ::setrlimit(RLIMIT_CORE, &noCore);
+  // GDCM's and ITK's own messages would reach the terminal (two per slice): the parent reports in its words.
+  gdcm::Trace::SetDebug(false);
+  gdcm::Trace::SetWarning(false);
+  gdcm::Trace::SetError(false);
+  itk::Object::GlobalWarningDisplayOff();
+
+  // Every file of the folder parsed once, one at a time: a file that makes GDCM abort while the series are sorted
+  // out below is named here first.
+  std::vector<std::string> entries;
+  std::error_code          error;
+  for (const auto & entry : std::filesystem::directory_iterator(folder, error))
+  {
+    if (entry.is_regular_file(error))
+    {
+      entries.push_back(entry.path().string());
+    }
+  }
+  std::sort(entries.begin(), entries.end());
+  for (const std::string & file : entries)
+  {
+    Report("file " + file);
+    gdcm::ImageReader reader; // as the series scan reads it: the header, then the image description
+    reader.SetFileName(file.c_str());
+    reader.Read(); // a file that is not DICOM is simply not read, here and in the scan
+  }
+  Report("scan");
+
+  std::vector<std::string> files;
+  try
+  {
+    auto names = itk::GDCMSeriesFileNames::New();
+    names->SetUseSeriesDetails(true);
+    names->SetDirectory(folder);
+    // Several series in one folder: the one with the most files (the volume, not a scout).
+    for (const std::string & uid : names->GetSeriesUIDs())
+    {
+      const std::vector<std::string> & seriesFiles = names->GetFileNames(uid);
+      if (seriesFiles.size() > files.size())
+      {
+        files = seriesFiles;
+      }
+    }
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    return Fail("scan", exception.GetDescription());
+  }
+  if (files.empty())
+  {
+    return Fail("none", "holds no DICOM series");
+  }
+
+  using VolumeType = itk::Image<float, 3>;
+  auto dicom = TracingGDCMImageIO::New();
+  auto reader = itk::ImageSeriesReader<VolumeType>::New();
+  reader->SetImageIO(dicom);
+  reader->SetFileNames(files);
+  try
+  {
+    reader->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    return Fail("read " + std::to_string(files.size()), exception.GetDescription());
+  }
+  if (dicom->GetNumberOfComponents() != 1)
+  {
+    return Fail("message",
+                "the DICOM series has " + std::to_string(dicom->GetNumberOfComponents()) +
+                  " components per pixel (colour?); a volume must be scalar");
+  }
+  Report("write");
+  auto writer = itk::ImageFileWriter<VolumeType>::New();
+  writer->SetImageIO(itk::MetaImageIO::New());
+  writer->SetInput(reader->GetOutput());
+  writer->SetFileName(output);
+  try
+  {
+    writer->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    return Fail("write", exception.GetDescription());
+  }
+  Report("done " + std::to_string(files.size()));
+  return 0;
+}
