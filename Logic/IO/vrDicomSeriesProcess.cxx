@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrDicomSeriesProcess.h"
 
+#include "itkMetaDataObject.h"
+
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 
@@ -320,6 +322,16 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
   }
   VolumeImageType::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
+  // The first file's patient and study (vr::DICOMAttribute keys), which the node conversion turns into attributes.
+  std::ifstream identity(output.string() + ".identity");
+  for (std::string line; std::getline(identity, line);)
+  {
+    const auto tab = line.find('\t');
+    if (tab != std::string::npos && line.rfind("DICOM.", 0) == 0)
+    {
+      itk::EncapsulateMetaData<std::string>(volume->GetMetaDataDictionary(), line.substr(0, tab), line.substr(tab + 1));
+    }
+  }
   return volume;
 }
 } // namespace vr::detail

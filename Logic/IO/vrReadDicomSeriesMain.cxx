@@ -9,6 +9,7 @@
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileWriter.h"
+#include "vrDICOMIdentity.h"
 #include "itkImageSeriesReader.h"
 #include "itkMetaImageIO.h"
 #include "itkObject.h"
@@ -22,6 +23,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -174,6 +176,19 @@ main(int argc, char * argv[])
                   " components per pixel (colour?); a volume must be scalar");
   }
   Report("write");
+  // The patient and study of the first file, for the node the caller makes (vr::DICOMAttribute): one
+  // "key<TAB>value" line each beside the volume.
+  const auto * headers = reader->GetMetaDataDictionaryArray();
+  if (headers != nullptr && !headers->empty() && headers->front() != nullptr)
+  {
+    std::ofstream identity(output + ".identity");
+    for (auto [key, value] : vr::DICOMAttributesOf(*headers->front()))
+    {
+      std::replace_if(
+        value.begin(), value.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+      identity << key << '\t' << value << '\n';
+    }
+  }
   auto writer = itk::ImageFileWriter<VolumeType>::New();
   writer->SetImageIO(itk::MetaImageIO::New());
   writer->SetInput(reader->GetOutput());

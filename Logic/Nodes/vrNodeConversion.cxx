@@ -354,6 +354,16 @@ Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name
   node->SetName(name);
   node->SetImageData(data);
   node->SetIJKToRASMatrix(matrix);
+  // What a reader knew of the patient and study (DICOM's, vr::DICOMAttribute) becomes the node's attributes.
+  const auto & dictionary = image->GetMetaDataDictionary();
+  for (const auto & key : dictionary.GetKeys())
+  {
+    std::string value;
+    if (key.rfind("DICOM.", 0) == 0 && itk::ExposeMetaData<std::string>(dictionary, key, value))
+    {
+      node->SetAttribute(key, value);
+    }
+  }
   return node;
 }
 } // namespace
