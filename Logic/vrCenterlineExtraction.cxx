@@ -258,6 +258,32 @@ ReadSegmentation(const std::vector<std::string> & paths,
                          reports[k].Values + ")");
     }
     segmentation.RegionNames.push_back(VesselNameOfFile(paths[k]));
+    if (k == 0 && paths.size() == 1 && !reports[0].LabelNames.empty() && reports[0].LabelNames.size() <= 255)
+    {
+      // One label map whose header names its labels (3D Slicer's .seg.nrrd): a region per named label, among the
+      // vessel voxels.
+      segmentation.RegionNames.clear();
+      std::map<int, unsigned char> regionOf;
+      for (const auto & [label, labelName] : reports[0].LabelNames)
+      {
+        segmentation.RegionNames.push_back(labelName);
+        regionOf[label] = static_cast<unsigned char>(segmentation.RegionNames.size());
+      }
+      segmentation.Regions = SegmentationMaskType::New();
+      segmentation.Regions->CopyInformation(mask);
+      segmentation.Regions->SetRegions(mask->GetBufferedRegion());
+      segmentation.Regions->Allocate(true);
+      const float *         values = reports[0].LabelValues->GetBufferPointer();
+      const unsigned char * vessel = mask->GetBufferPointer();
+      unsigned char *       regions = segmentation.Regions->GetBufferPointer();
+      for (std::size_t v = 0; v < mask->GetBufferedRegion().GetNumberOfPixels(); ++v)
+      {
+        const auto found = regionOf.find(static_cast<int>(std::lround(values[v])));
+        regions[v] = vessel[v] != 0 && found != regionOf.end() ? found->second : 0;
+      }
+      segmentation.Mask = mask;
+      continue;
+    }
     if (k == 0)
     {
       segmentation.Mask = mask;

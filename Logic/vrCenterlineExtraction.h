@@ -48,10 +48,11 @@ struct Segmentation
 {
   SegmentationMaskType::Pointer Mask;
   /** On the mask's grid, which file each vessel voxel came from: 0 outside, k for the k-th file (the first file that
-   * has it where files overlap); null for a single file, or more than 255. */
+   * has it where files overlap); for a single label map whose header names its labels (3D Slicer's .seg.nrrd), k for
+   * the k-th named label; null otherwise (a single unnamed file, more than 255). */
   SegmentationMaskType::Pointer Regions;
   /** The vessel each region is: RegionNames[k - 1] for region k, from its file's name as TotalSegmentator writes
-   * them ("iliac_artery_left.nii.gz" gives "iliac artery left"). */
+   * them ("iliac_artery_left.nii.gz" gives "iliac artery left"), or the label's name in the file's header. */
   std::vector<std::string> RegionNames;
   /** The file names (not paths), comma-separated: how messages name the segmentation. */
   std::string Name;

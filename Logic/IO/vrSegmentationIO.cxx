@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrSegmentationIO.h"
 
+#include "itkMetaDataObject.h"
+
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
@@ -16,12 +18,44 @@
 #include <cmath>
 #include <filesystem>
 #include <set>
+#include <cstdlib>
 #include <sstream>
 
 namespace vr
 {
 namespace
 {
+/** 3D Slicer's segment names in a .seg.nrrd header (SegmentN_Name, SegmentN_LabelValue, SegmentN_Layer): the
+ * segments of layer 0 (the voxels a single label map holds), by label value. */
+std::map<int, std::string>
+LabelNamesOf(const itk::MetaDataDictionary & dictionary)
+{
+  std::map<int, std::string> names;
+  for (int segment = 0; segment < 1000; ++segment)
+  {
+    const std::string prefix = "Segment" + std::to_string(segment) + "_";
+    std::string       name;
+    std::string       value;
+    std::string       layer = "0";
+    if (!itk::ExposeMetaData<std::string>(dictionary, prefix + "Name", name))
+    {
+      break;
+    }
+    if (!itk::ExposeMetaData<std::string>(dictionary, prefix + "LabelValue", value))
+    {
+      continue;
+    }
+    itk::ExposeMetaData<std::string>(dictionary, prefix + "Layer", layer);
+    char *     end = nullptr;
+    const long label = std::strtol(value.c_str(), &end, 10);
+    if (layer == "0" && end != value.c_str() && *end == '\0' && label > 0 && label < 65536 && !name.empty())
+    {
+      names[static_cast<int>(label)] = name;
+    }
+  }
+  return names;
+}
+
 using FloatVolume = itk::Image<float, 3>;
 
 std::string
@@ -226,6 +260,12 @@ ReadSegmentationMask(const std::string & path, const std::vector<double> & label
   {
     throw InputError(where + ": the voxel data cannot be read (truncated?): " + detail::CondenseITKMessage(exception));
   }
-  return MakeSegmentationMask(reader->GetOutput(), labels, where, report);
+  SegmentationMaskType::Pointer mask = MakeSegmentationMask(reader->GetOutput(), labels, where, report);
+  if (report != nullptr && report->Kind == "label map")
+  {
+    report->LabelNames = LabelNamesOf(io->GetMetaDataDictionary());
+    report->LabelValues = report->LabelNames.empty() ? nullptr : reader->GetOutput();
+  }
+  return mask;
 }
 } // namespace vr

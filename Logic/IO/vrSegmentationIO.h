@@ -5,6 +5,7 @@
 #include "itkImage.h"
 #include "vrImageTypes.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,11 @@ struct SegmentationReadReport
   std::size_t ForegroundVoxels{ 0 };
   /** The distinct values of the file (up to 12, ascending, e.g. "0 1 2"), or their range ("-3.2 to 48.1"). */
   std::string Values;
+  /** The names a label map's header gives its labels (3D Slicer's .seg.nrrd: SegmentN_Name and SegmentN_LabelValue,
+   * layer 0), by label value; empty when it names none. */
+  std::map<int, std::string> LabelNames;
+  /** The file's values when LabelNames is not empty (to tell the named vessels apart), else null. */
+  itk::Image<float, 3>::Pointer LabelValues;
 };
 
 /** The vessel mask of segmentation values already in memory (a platform's label map node), by the rules of

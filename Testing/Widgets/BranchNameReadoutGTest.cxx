@@ -6,6 +6,7 @@
 #include "vrWidgetsTestSupport.h"
 
 #include "itkCTAPhantom.h"
+#include "itkMetaDataObject.h"
 #include "vrCenterlineIO.h"
 #include "vrNodeConversion.h"
 #include "vrTestFiles.h"
@@ -252,6 +253,55 @@ TEST(BranchNameReadout, MaskFileNamesOfATotalSegmentatorFolderAppearInTheReadout
     120.0));
   // Extracted branches end where the extraction splits them, near but not at the files' borders: most pixels away
   // from the junctions must read their file's vessel.
+  const std::set<int> named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom, 0.9);
+  EXPECT_GE(named.size(), phantom.Tree.GetNumberOfBranches() - 1);
+}
+TEST(BranchNameReadout, SegmentNamesOfASlicerSegNrrdAppearInTheReadout)
+{
+  // The thoracic arteries as one label map, label k for the k-th artery, named in the header as 3D Slicer's
+  // .seg.nrrd names its segments (SegmentN_Name, SegmentN_LabelValue, SegmentN_Layer).
+  vr::test::ScopedTemporaryFolder folder;
+  const itk::CTAPhantom           phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax, 1.5);
+  phantom.Source->Update();
+  const std::string volume = WriteThoraxVolume(folder, phantom);
+  const auto *      grid = phantom.Source->GetOutput();
+  auto              labels = vr::VolumeImageType::New();
+  labels->CopyInformation(grid);
+  labels->SetRegions(grid->GetLargestPossibleRegion());
+  labels->Allocate(true);
+  int segment = 0;
+  for (const auto & branch : phantom.Tree.GetBranches())
+  {
+    auto mask = vr::test::MakeLabelMap(
+      grid->GetLargestPossibleRegion().GetSize(), grid->GetSpacing(), grid->GetOrigin(), grid->GetDirection());
+    itk::CenterlineTree one;
+    one.AddBranch(branch);
+    vr::test::DrawTubes(mask, one);
+    const float label = static_cast<float>(segment + 1);
+    for (std::size_t v = 0; v < mask->GetLargestPossibleRegion().GetNumberOfPixels(); ++v)
+    {
+      if (mask->GetBufferPointer()[v] != 0 && labels->GetBufferPointer()[v] == 0.0f)
+      {
+        labels->GetBufferPointer()[v] = label;
+      }
+    }
+    const std::string prefix = "Segment" + std::to_string(segment) + "_";
+    itk::EncapsulateMetaData<std::string>(
+      labels->GetMetaDataDictionary(), prefix + "Name", phantom.BranchName(branch.Id));
+    itk::EncapsulateMetaData<std::string>(
+      labels->GetMetaDataDictionary(), prefix + "LabelValue", std::to_string(segment + 1));
+    itk::EncapsulateMetaData<std::string>(labels->GetMetaDataDictionary(), prefix + "Layer", "0");
+    ++segment;
+  }
+  const std::string path = folder.File("arteries.seg.nrrd");
+  vr::WriteVolume(labels, path);
+  ASSERT_NE(vr::test::ReadTextFile(path).find("Segment5_Name:="), std::string::npos) << "the names are in the header";
+
+  const auto window = MakeWindowOnSmallPhantom(0.0);
+  const auto before = window->GetController()->GetInputs();
+  window->OpenFilesWithSegmentation(QString::fromStdString(volume), { QString::fromStdString(path) });
+  ASSERT_TRUE(WaitUntil([&] { return window->GetController()->GetInputs() != before; }, 120.0));
+  ASSERT_TRUE(WaitUntilSettled(*window, 300.0));
   const std::set<int> named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom, 0.9);
   EXPECT_GE(named.size(), phantom.Tree.GetNumberOfBranches() - 1);
 }
