@@ -448,8 +448,8 @@ TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
   pixels.emplace_back(width - 1, height - 1);
   pixels.emplace_back(63, 128);
 
-  // The independent reference for the position: docs/design.md 3.2's B(i, j) + d v from the view's C, u, v and up, in LPS,
-  // then RAS by negating x and y.
+  // The independent reference for the position: docs/design.md 3.2's B(i, j) + d v from the view's C, u, v and up, in
+  // LPS, then RAS by negating x and y.
   const itk::CPRViewGeometry & view = reference.View;
   QWidget *                    target = Window().GetCPRView()->GetRenderWidget();
   for (const auto & [i, j] : pixels)
@@ -898,6 +898,64 @@ TEST_F(WidgetsTest, CenterlinesMostlyOutsideShowTheirWholeWarningAndUndoBringsTh
   EXPECT_TRUE(Window().GetShownWarnings().isEmpty());
   EXPECT_FALSE(Window().CanUndoOpen());
   ExpectShows(Window(), ReferenceOutputs(SmallPhantomInputs(), Window().GetCPRView()->GetResult()->Parameters).CPR);
+}
+
+TEST_F(WidgetsTest, EveryInputFuzzingFoundIsRefusedWithADialogAndTheDataStays)
+{
+  // Volumes (NIfTI headers that aborted ITK, DICOM folders whose file aborted GDCM) and centerlines (legacy .vtk that
+  // crashed VTK, a .vtp that asked for exabytes): each a dialog naming the file, and the data on screen kept.
+  const std::filesystem::path               findings = VR_FINDINGS_DIR;
+  const std::filesystem::path               corpus = VR_FUZZ_CORPUS_DIR;
+  std::vector<std::pair<std::string, bool>> inputs; // path, is a volume
+  for (const auto & entry : std::filesystem::directory_iterator(findings))
+  {
+    if (entry.is_directory() || entry.path().extension() == ".nii")
+    {
+      inputs.emplace_back(entry.path().string(), true);
+    }
+  }
+  for (const char * file : { "vtk/crash-two-lines-sections.vtk",
+                             "vtk/crash-metadata-lines-segv-2.vtk",
+                             "vtp/crash-ascii-offsets-huge.vtp" })
+  {
+    inputs.emplace_back((corpus / file).string(), false);
+  }
+  ASSERT_GE(inputs.size(), 11u) << "the findings of issue 25 and the campaign's";
+
+  const auto inputsBefore = Controller().GetInputs();
+  const auto shownBefore = Window().GetCPRView()->GetResult();
+  int        errors = 0;
+  QObject::connect(&Window(), &ViewerWindow::errorShown, &Window(), [&] { ++errors; });
+  for (const auto & [path, volume] : inputs)
+  {
+    const int before = errors;
+    if (volume)
+    {
+      Window().OpenVolume(QString::fromStdString(path));
+    }
+    else
+    {
+      Window().OpenCenterlines(QString::fromStdString(path));
+    }
+    ASSERT_TRUE(WaitUntil([&] { return errors == before + 1; }, 120.0)) << path;
+    ASSERT_TRUE(WaitUntilSettled(Window()));
+    QMessageBox * dialog = ErrorDialog(Window());
+    ASSERT_NE(dialog, nullptr) << path;
+    const std::string text = dialog->text().toStdString();
+    // The message names the file; a DICOM folder's names the corrupt file inside it.
+    EXPECT_NE(text.find(std::filesystem::path(path).filename().string()), std::string::npos) << path << ": " << text;
+    if (std::filesystem::is_directory(path))
+    {
+      for (const auto & file : std::filesystem::directory_iterator(path))
+      {
+        EXPECT_NE(text.find(file.path().filename().string()), std::string::npos) << path << ": " << text;
+      }
+    }
+    dialog->close();
+    EXPECT_EQ(Controller().GetInputs(), inputsBefore) << path;
+  }
+  EXPECT_EQ(Window().GetCPRView()->GetResult(), shownBefore);
+  ExpectShows(Window(), shownBefore->Outputs.CPR);
 }
 
 /** The distinct values of a polydata's cell array. */
