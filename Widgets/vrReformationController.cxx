@@ -321,6 +321,24 @@ ReformationController::WorkerLoop()
     {
       std::unique_lock<std::mutex> lock(m_Mutex);
       m_Wake.wait(lock, [this] { return m_Quit || m_PendingLoad || m_PendingJob; });
+      if (!m_Quit && !m_PendingLoad && m_PendingJob->Kind == RequestKind::Interactive && m_SurfaceWaitsForDisplay &&
+          m_ShownId < m_DeliveredId)
+      {
+        // One image of a drag in flight: the next step starts once the view has shown the last one (or a time limit
+        // passed), so that the worker's threads leave the processor to the drawing, and the steps that came meanwhile
+        // merge into the latest.
+        m_Wake.wait_for(lock,
+                        std::chrono::duration<double>(m_SurfaceWaitSeconds),
+                        [this]
+                        {
+                          return m_Quit || m_PendingLoad || !m_PendingJob || m_PendingJob->Kind == RequestKind::Final ||
+                                 !m_SurfaceWaitsForDisplay || m_ShownId >= m_DeliveredId;
+                        });
+      }
+      if (!m_Quit && !m_PendingLoad && !m_PendingJob)
+      {
+        continue;
+      }
       if (m_Quit)
       {
         return;
@@ -645,6 +663,11 @@ void
 ReformationController::Deliver(std::shared_ptr<ReformationResult> result)
 {
   result->ReadyTime = std::chrono::steady_clock::now();
+  if (!result->HasFullSurface())
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_DeliveredId = std::max(m_DeliveredId, result->RequestId);
+  }
   Post(
     [this, result]
     {
@@ -655,6 +678,9 @@ ReformationController::Deliver(std::shared_ptr<ReformationResult> result)
         if (result->RequestId < floor)
         {
           ++m_Statistics.Stale;
+          // Never shown: the next step of a drag need not wait for it.
+          m_ShownId = std::max(m_ShownId, result->RequestId);
+          m_Wake.notify_all();
           return;
         }
         if (!result->HasFullSurface())

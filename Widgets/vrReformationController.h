@@ -318,6 +318,8 @@ private:
   bool                                                   m_SurfaceWaitsForDisplay{ false };
   double                                                 m_SurfaceWaitSeconds{ 1.0 };
   std::uint64_t                                          m_ShownId{ 0 };
+  /** The latest request whose images were handed to the GUI thread. */
+  std::uint64_t m_DeliveredId{ 0 };
 
   // GUI-thread state.
   std::shared_ptr<const ReformationInputs> m_Inputs;
