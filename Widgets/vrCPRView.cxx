@@ -46,9 +46,9 @@ constexpr double MaskLayerZ = -0.3;
 constexpr double LineLayerZ = -0.5;
 constexpr double CameraDistance = 1000.0;
 
-/** Shares the pixels of a one-slice output node, placed at world (i sx, j sy). */
+/** Shares the pixels of a one-slice output node, placed at world (origin + i sx, origin + j sy). */
 void
-Wrap(vtkImageData * target, VolumeNode * node, const double spacing[2])
+Wrap(vtkImageData * target, VolumeNode * node, const double spacing[2], const double origin[2])
 {
   if (node == nullptr || node->GetImageData() == nullptr)
   {
@@ -56,7 +56,7 @@ Wrap(vtkImageData * target, VolumeNode * node, const double spacing[2])
     return;
   }
   target->ShallowCopy(node->GetImageData());
-  target->SetOrigin(0.0, 0.0, 0.0);
+  target->SetOrigin(origin[0], origin[1], 0.0);
   target->SetSpacing(spacing[0], spacing[1], 1.0);
 }
 
@@ -217,6 +217,18 @@ CPRView::CPRView(QWidget * parent)
   m_UpperRightText->GetTextProperty()->SetJustificationToRight();
   m_UpperRightText->GetPositionCoordinate()->SetValue(0.99, 0.99);
   m_UpperLeftText->SetInput("No reformation yet");
+  // A preview says so where the eye is (lower right, away from the captions under the image), in amber.
+  m_PreviewText = vtkSmartPointer<vtkTextActor>::New();
+  m_PreviewText->GetTextProperty()->SetFontSize(16);
+  m_PreviewText->GetTextProperty()->SetColor(1.0, 0.75, 0.2);
+  m_PreviewText->GetTextProperty()->BoldOn();
+  m_PreviewText->GetTextProperty()->ShadowOn();
+  m_PreviewText->GetTextProperty()->SetJustificationToRight();
+  m_PreviewText->GetTextProperty()->SetVerticalJustificationToBottom();
+  m_PreviewText->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  m_PreviewText->GetPositionCoordinate()->SetValue(0.99, 0.01);
+  m_PreviewText->SetVisibility(false);
+  m_Renderer->AddViewProp(m_PreviewText);
 
   m_Widget->setMouseTracking(true);
   m_Widget->installEventFilter(this);
@@ -245,26 +257,39 @@ CPRView::SetResult(std::shared_ptr<const ReformationResult> result)
     return;
   }
   const auto & view = result->Outputs.View;
-  const int    width = static_cast<int>(view.GetSize()[0]);
-  const int    height = static_cast<int>(view.GetSize()[1]);
-  const bool   refit = width != m_ImageSize[0] || height != m_ImageSize[1] || view.GetSpacing()[0] != m_Spacing[0] ||
-                     view.GetSpacing()[1] != m_Spacing[1] || !m_Result;
+  // The frame is the full view's: a preview lies over the same millimetres and keeps the camera where it is.
+  const auto & frame = result->IsPreview() ? result->FullView : view;
+  const int    frameWidth = static_cast<int>(frame.GetSize()[0]);
+  const int    frameHeight = static_cast<int>(frame.GetSize()[1]);
+  const bool   refit = frameWidth != m_FrameSize[0] || frameHeight != m_FrameSize[1] ||
+                     frame.GetSpacing()[0] != m_FrameSpacing[0] || frame.GetSpacing()[1] != m_FrameSpacing[1] ||
+                     !m_Result;
   const bool newCenterlines = !m_Result || m_Result->Inputs != result->Inputs || m_Result->Outputs.View != view;
   m_Result = std::move(result);
-  m_ImageSize[0] = width;
-  m_ImageSize[1] = height;
+  m_ImageSize[0] = static_cast<int>(view.GetSize()[0]);
+  m_ImageSize[1] = static_cast<int>(view.GetSize()[1]);
   m_Spacing[0] = view.GetSpacing()[0];
   m_Spacing[1] = view.GetSpacing()[1];
+  m_FrameSize[0] = frameWidth;
+  m_FrameSize[1] = frameHeight;
+  m_FrameSpacing[0] = frame.GetSpacing()[0];
+  m_FrameSpacing[1] = frame.GetSpacing()[1];
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    // Both grids are centred on the view's centre C (pixel i at (i - (W - 1) / 2) s mm from it).
+    m_Origin[axis] =
+      0.5 * (m_FrameSize[axis] - 1) * m_FrameSpacing[axis] - 0.5 * (m_ImageSize[axis] - 1) * m_Spacing[axis];
+  }
 
   const auto & outputs = m_Result->Outputs;
-  Wrap(m_Filtered->Image, outputs.CPR, m_Spacing);
-  Wrap(m_Filtered->Depth, outputs.RelaxedDepth, m_Spacing);
-  Wrap(m_Filtered->Mask, outputs.FixedMask, m_Spacing);
-  Wrap(m_Filtered->Labels, outputs.OwnerLabels, m_Spacing);
-  Wrap(m_Unfiltered->Image, outputs.UnfilteredCPR, m_Spacing);
-  Wrap(m_Unfiltered->Depth, outputs.Depth, m_Spacing);
-  Wrap(m_Unfiltered->Mask, outputs.FixedMask, m_Spacing);
-  Wrap(m_Unfiltered->Labels, outputs.OwnerLabels, m_Spacing);
+  Wrap(m_Filtered->Image, outputs.CPR, m_Spacing, m_Origin);
+  Wrap(m_Filtered->Depth, outputs.RelaxedDepth, m_Spacing, m_Origin);
+  Wrap(m_Filtered->Mask, outputs.FixedMask, m_Spacing, m_Origin);
+  Wrap(m_Filtered->Labels, outputs.OwnerLabels, m_Spacing, m_Origin);
+  Wrap(m_Unfiltered->Image, outputs.UnfilteredCPR, m_Spacing, m_Origin);
+  Wrap(m_Unfiltered->Depth, outputs.Depth, m_Spacing, m_Origin);
+  Wrap(m_Unfiltered->Mask, outputs.FixedMask, m_Spacing, m_Origin);
+  Wrap(m_Unfiltered->Labels, outputs.OwnerLabels, m_Spacing, m_Origin);
   if (newCenterlines)
   {
     UpdateCenterlines();
@@ -328,8 +353,8 @@ CPRView::UnfilteredOffset() const
   {
     return 0.0;
   }
-  const double width = m_ImageSize[0] * m_Spacing[0];
-  return -(width + std::max(4.0 * m_Spacing[0], 0.04 * width));
+  const double width = m_FrameSize[0] * m_FrameSpacing[0];
+  return -(width + std::max(4.0 * m_FrameSpacing[0], 0.04 * width));
 }
 
 void
@@ -365,14 +390,13 @@ CPRView::UpdatePanes()
   show(m_Unfiltered.get(), showUnfiltered, m_Comparison != CPRComparison::Split);
 
   const double sx = m_Spacing[0];
-  const double sy = m_Spacing[1];
   if (m_Comparison == CPRComparison::Split && hasImage)
   {
     vtkNew<vtkPolyData> line;
     vtkNew<vtkPoints>   points;
-    const double        x = (width / 2 - 0.5) * sx;
-    points->InsertNextPoint(x, -0.5 * sy, LineLayerZ);
-    points->InsertNextPoint(x, (m_ImageSize[1] - 0.5) * sy, LineLayerZ);
+    const double        x = m_Origin[0] + (width / 2 - 0.5) * sx;
+    points->InsertNextPoint(x, -0.5 * m_FrameSpacing[1], LineLayerZ);
+    points->InsertNextPoint(x, (m_FrameSize[1] - 0.5) * m_FrameSpacing[1], LineLayerZ);
     vtkNew<vtkCellArray> cells;
     const vtkIdType      ids[2] = { 0, 1 };
     cells->InsertNextCell(2, ids);
@@ -411,7 +435,7 @@ CPRView::UpdatePanes()
     m_Unfiltered->Caption->SetInput("unfiltered (w = 0)");
     m_Unfiltered->Caption->SetVisibility(showUnfiltered && m_Comparison != CPRComparison::Split);
     // Below the image, where no corner annotation sits.
-    const double below = (m_ImageSize[1] + 0.5) * sy;
+    const double below = (m_FrameSize[1] + 0.5) * m_FrameSpacing[1];
     m_Filtered->Caption->GetPositionCoordinate()->SetValue(0.0, below, 0.0);
     m_Unfiltered->Caption->GetPositionCoordinate()->SetValue(UnfilteredOffset(), below, 0.0);
   }
@@ -483,7 +507,8 @@ CPRView::UpdateCenterlines()
     for (const auto & point : branch.Points)
     {
       const auto coordinates = view.ToView(point);
-      ids.push_back(points->InsertNextPoint(coordinates.Column * m_Spacing[0], coordinates.Row * m_Spacing[1], 0.0));
+      ids.push_back(points->InsertNextPoint(
+        m_Origin[0] + coordinates.Column * m_Spacing[0], m_Origin[1] + coordinates.Row * m_Spacing[1], 0.0));
     }
     if (ids.size() < 2)
     {
@@ -516,21 +541,33 @@ CPRView::UpdateAnnotation()
   right << view.GetSize()[0] << " x " << view.GetSize()[1] << " px\n"
         << Format(view.GetSpacing()[0], 2) << " x " << Format(view.GetSpacing()[1], 2) << " mm";
   m_UpperRightText->SetInput(right.str().c_str());
+  const unsigned int factor = m_Result->PreviewFactor;
+  m_PreviewText->SetVisibility(factor > 1);
+  if (factor > 1)
+  {
+    m_PreviewText->SetInput(("preview (1/" + std::to_string(factor) + " resolution)").c_str());
+  }
+}
+
+QString
+CPRView::GetPreviewLabel() const
+{
+  return m_PreviewText->GetVisibility() ? QString::fromUtf8(m_PreviewText->GetInput()) : QString();
 }
 
 void
 CPRView::FitImage()
 {
-  if (m_ImageSize[0] == 0)
+  if (m_FrameSize[0] == 0)
   {
     return;
   }
-  const double sx = m_Spacing[0];
-  const double sy = m_Spacing[1];
+  const double sx = m_FrameSpacing[0];
+  const double sy = m_FrameSpacing[1];
   const double left = std::min(0.0, UnfilteredOffset()) - 0.5 * sx;
-  const double right = (m_ImageSize[0] - 0.5) * sx;
+  const double right = (m_FrameSize[0] - 0.5) * sx;
   const double top = -0.5 * sy;
-  const double bottom = (m_ImageSize[1] - 0.5) * sy;
+  const double bottom = (m_FrameSize[1] - 0.5) * sy;
   // Room in screen pixels: above for the corner annotations, below for the captions, a little on the sides.
   const double widthPixels = std::max(50, m_Widget->width() - 16);
   const double heightPixels = std::max(50, m_Widget->height() - 2 * 44);
@@ -594,7 +631,7 @@ QPointF
 CPRView::WidgetPositionOfPixel(double column, double row, bool unfiltered) const
 {
   const double offset = unfiltered ? UnfilteredOffset() : 0.0;
-  return WorldToWidget(offset + column * m_Spacing[0], row * m_Spacing[1]);
+  return WorldToWidget(offset + m_Origin[0] + column * m_Spacing[0], m_Origin[1] + row * m_Spacing[1]);
 }
 
 PixelReadout
@@ -605,8 +642,9 @@ CPRView::ReadoutAt(const QPointF & position) const
     return PixelReadout();
   }
   const auto world = WidgetToWorld(position);
-  const int  row = static_cast<int>(std::floor(world[1] / m_Spacing[1] + 0.5));
-  auto columnIn = [&](double offset) { return static_cast<int>(std::floor((world[0] - offset) / m_Spacing[0] + 0.5)); };
+  const int  row = static_cast<int>(std::floor((world[1] - m_Origin[1]) / m_Spacing[1] + 0.5));
+  auto       columnIn = [&](double offset)
+  { return static_cast<int>(std::floor((world[0] - offset - m_Origin[0]) / m_Spacing[0] + 0.5)); };
   bool unfiltered = false;
   int  column = columnIn(0.0);
   switch (m_Comparison)

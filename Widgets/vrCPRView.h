@@ -74,8 +74,11 @@ struct CPROverlays
  * - wheel zooms about the mouse (1.2 per notch), middle-drag pans, double-click fits the image;
  * - hovering reports the pixel's column and row, its RAS position, intensity, depth and branch (readoutChanged()).
  *
- * Pixel (i, j) (row 0 at the top) is drawn at world (i sx, j sy), the camera looking along +z with -y up, so the
- * image appears as the reformation defines it: screen-right u, screen-down -up.
+ * Pixel (i, j) (row 0 at the top) of a full-resolution image is drawn at world (i sx, j sy), the camera looking along
+ * +z with -y up, so the image appears as the reformation defines it: screen-right u, screen-down -up. A preview (a
+ * result at k times the spacing, docs/progressive-refinement.md) is drawn over the same millimetres of its full view,
+ * with the overlays on its own grid, and labelled "preview (1/k resolution)" in the lower right corner until the full
+ * image replaces it.
  *
  * \sa ReformationController, ThreeDView, ModulePanel
  * \ingroup VesselReformation
@@ -166,6 +169,9 @@ public:
   {
     return m_CenterlinePolyData;
   }
+  /** \return the preview label on screen ("preview (1/2 resolution)"), or empty when the image is a full one. */
+  QString
+  GetPreviewLabel() const;
   /** \return seconds the latest vtkRenderWindow::Render() of a new image took. */
   double
   GetLastRenderSeconds() const
@@ -225,6 +231,7 @@ private:
   std::unique_ptr<Pane>                         m_Unfiltered;
   vtkSmartPointer<vtkTextActor>                 m_UpperLeftText;
   vtkSmartPointer<vtkTextActor>                 m_UpperRightText;
+  vtkSmartPointer<vtkTextActor>                 m_PreviewText;
   vtkSmartPointer<vtkActor>                     m_SplitLine;
   vtkSmartPointer<vtkPolyData>                  m_CenterlinePolyData;
 
@@ -233,12 +240,19 @@ private:
   bool                                     m_HasPendingDisplay{ false };
   int                                      m_ImageSize[2]{ 0, 0 };
   double                                   m_Spacing[2]{ 1.0, 1.0 };
-  double                                   m_Window{ 900.0 };
-  double                                   m_Level{ 200.0 };
-  CPROverlays                              m_Overlays;
-  CPRComparison                            m_Comparison{ CPRComparison::Filtered };
-  PixelReadout                             m_Readout;
-  double                                   m_LastRenderSeconds{ 0.0 };
+  /** World position of pixel (0, 0) of the image shown: 0 for a full image, the shift that lays a preview over its
+   * full view's millimetres otherwise. */
+  double m_Origin[2]{ 0.0, 0.0 };
+  /** Size and spacing of the full view of the result shown (the image's own for a full image): what fitting and the
+   * captions go by, so that a preview does not move the camera. */
+  int           m_FrameSize[2]{ 0, 0 };
+  double        m_FrameSpacing[2]{ 1.0, 1.0 };
+  double        m_Window{ 900.0 };
+  double        m_Level{ 200.0 };
+  CPROverlays   m_Overlays;
+  CPRComparison m_Comparison{ CPRComparison::Filtered };
+  PixelReadout  m_Readout;
+  double        m_LastRenderSeconds{ 0.0 };
 
   // The drag in progress.
   Qt::MouseButton m_DragButton{ Qt::NoButton };

@@ -32,6 +32,35 @@ Difference(const StageCounts & after, const StageCounts & before)
   return counts;
 }
 
+/** Whether \a a and \a b ask for the same view up to the angle (then they resolve to the same centre, size and
+ * spacing on the same inputs). */
+bool
+SameViewUpToAngle(const ReformationParameters & a, const ReformationParameters & b)
+{
+  itk::CPRViewSpecification first = a.ToViewSpecification();
+  first.AngleInDegrees = b.AngleInDegrees;
+  return first == b.ToViewSpecification();
+}
+
+double
+Median(std::vector<double> values)
+{
+  if (values.empty())
+  {
+    return -1.0;
+  }
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+std::size_t
+FactorIndex(unsigned int factor)
+{
+  const auto found = std::find(PreviewFactors.begin(), PreviewFactors.end(), factor);
+  return found == PreviewFactors.end() ? 0 : static_cast<std::size_t>(found - PreviewFactors.begin());
+}
+
 /** Registers the result types for queued signals once. */
 void
 RegisterMetaTypes()
@@ -73,6 +102,9 @@ ReformationController::ReformationController(QObject * parent)
       const QString text = QString::fromStdString(message);
       Post([this, text] { emit warningIssued(text); });
     });
+  m_RefineTimer.setSingleShot(true);
+  m_RefineTimer.setInterval(RefinementDelayMilliseconds);
+  connect(&m_RefineTimer, &QTimer::timeout, this, [this] { Refine(); });
   m_Worker = std::thread([this] { WorkerLoop(); });
 }
 
@@ -110,6 +142,7 @@ ReformationController::LoadInputs(Loader loader, const QString & what, std::opti
     // Results of every request made so far belong to the old inputs.
     m_DisplayFloor = m_NextId;
   }
+  m_RefineTimer.stop();
   SetBusy(true);
   m_Wake.notify_all();
 }
@@ -134,10 +167,96 @@ ReformationController::Request(const ReformationParameters & parameters, Request
         m_Logic.AbortUpdate();
       }
     }
+    else if (m_Running && !m_RunningLoad && m_RunningFactor == 1 &&
+             (m_RunningKind == RequestKind::Final || m_RunningRefinement) && ChooseFactorLocked() > 1)
+    {
+      // A new step of an interaction aborts a full-resolution update while previews are in use: its preview comes
+      // sooner, and the full image follows when the interaction pauses or ends.
+      m_Logic.AbortUpdate();
+    }
+  }
+  if (kind == RequestKind::Interactive)
+  {
+    m_LastInteractiveId = id;
+    m_LastInteractiveParameters = parameters;
+    m_RefineTimer.start();
+  }
+  else
+  {
+    m_RefineTimer.stop();
   }
   SetBusy(true);
   m_Wake.notify_all();
   return id;
+}
+
+void
+ReformationController::Refine()
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    if (m_NextId - 1 != m_LastInteractiveId || ChooseFactorLocked() <= 1)
+    {
+      return; // a newer request came, or the step was at full resolution already
+    }
+    const std::uint64_t id = m_NextId++;
+    if (m_PendingJob)
+    {
+      ++m_Statistics.Superseded;
+    }
+    m_PendingJob =
+      Job{ id, RequestKind::Interactive, m_LastInteractiveParameters, std::chrono::steady_clock::now(), true };
+  }
+  SetBusy(true);
+  m_Wake.notify_all();
+}
+
+void
+ReformationController::SetPreviewFactor(unsigned int factor)
+{
+  std::lock_guard<std::mutex> lock(m_Mutex);
+  m_ForcedFactor = factor == 0 ? 0 : PreviewFactors[FactorIndex(factor)];
+}
+
+void
+ReformationController::SetFrameBudget(double seconds)
+{
+  std::lock_guard<std::mutex> lock(m_Mutex);
+  m_FrameBudget = std::max(0.0, seconds);
+}
+
+unsigned int
+ReformationController::GetCurrentPreviewFactor() const
+{
+  std::lock_guard<std::mutex> lock(m_Mutex);
+  return ChooseFactorLocked();
+}
+
+unsigned int
+ReformationController::ChooseFactorLocked() const
+{
+  if (m_ForcedFactor != 0)
+  {
+    return m_ForcedFactor;
+  }
+  std::array<double, PreviewFactors.size()> seconds{};
+  for (std::size_t index = 0; index < seconds.size(); ++index)
+  {
+    seconds[index] = Median(m_Times[index]);
+  }
+  return ChoosePreviewFactor(seconds, m_FrameBudget);
+}
+
+void
+ReformationController::RecordTime(unsigned int factor, double seconds)
+{
+  std::lock_guard<std::mutex> lock(m_Mutex);
+  auto &                      times = m_Times[FactorIndex(factor)];
+  times.push_back(seconds);
+  if (times.size() > RecentTimes)
+  {
+    times.erase(times.begin());
+  }
 }
 
 std::shared_ptr<const ReformationInputs>
@@ -203,6 +322,24 @@ ReformationController::WorkerLoop()
     {
       std::unique_lock<std::mutex> lock(m_Mutex);
       m_Wake.wait(lock, [this] { return m_Quit || m_PendingLoad || m_PendingJob; });
+      if (!m_Quit && !m_PendingLoad && m_PendingJob->Kind == RequestKind::Interactive && m_SurfaceWaitsForDisplay &&
+          m_ShownId < m_DeliveredId)
+      {
+        // One image of a drag in flight: the next step starts once the view has shown the last one (or a time limit
+        // passed), so that the worker's threads leave the processor to the drawing, and the steps that came meanwhile
+        // merge into the latest.
+        m_Wake.wait_for(lock,
+                        std::chrono::duration<double>(m_SurfaceWaitSeconds),
+                        [this]
+                        {
+                          return m_Quit || m_PendingLoad || !m_PendingJob || m_PendingJob->Kind == RequestKind::Final ||
+                                 !m_SurfaceWaitsForDisplay || m_ShownId >= m_DeliveredId;
+                        });
+      }
+      if (!m_Quit && !m_PendingLoad && !m_PendingJob)
+      {
+        continue;
+      }
       if (m_Quit)
       {
         return;
@@ -217,6 +354,8 @@ ReformationController::WorkerLoop()
       {
         job.swap(m_PendingJob);
         m_RunningKind = job->Kind;
+        m_RunningRefinement = job->Refinement;
+        m_RunningFactor = 1;
       }
       m_Running = true;
     }
@@ -266,6 +405,15 @@ ReformationController::RunLoad(Load & load)
     }
     auto inputs = std::make_shared<const ReformationInputs>(std::move(loaded));
     m_WorkerInputs = inputs;
+    // New data: its view and its update times are still to be measured.
+    m_FullView.reset();
+    {
+      std::lock_guard<std::mutex> lock(m_Mutex);
+      for (auto & times : m_Times)
+      {
+        times.clear();
+      }
+    }
     SetLogicInputs(*inputs);
     Post(
       [this, inputs]
@@ -342,7 +490,33 @@ ReformationController::ExtractCenterlines(const ReformationInputs &             
 void
 ReformationController::RunJob(const Job & job)
 {
-  auto images = Update(job, false);
+  // A step of an interaction: a preview of the same view when previews are in use and the full view is known.
+  unsigned int          factor = 1;
+  ReformationParameters parameters = job.Parameters;
+  if (job.Kind == RequestKind::Interactive && !job.Refinement)
+  {
+    {
+      std::lock_guard<std::mutex> lock(m_Mutex);
+      factor = ChooseFactorLocked();
+    }
+    if (factor > 1 && m_FullView && SameViewUpToAngle(job.Parameters, m_FullViewParameters))
+    {
+      parameters = PreviewParameters(job.Parameters, *m_FullView, factor);
+    }
+    else
+    {
+      factor = 1;
+    }
+  }
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_RunningFactor = factor;
+    if (job.Refinement)
+    {
+      ++m_Statistics.Refinements;
+    }
+  }
+  auto images = Update(job, parameters, factor, false);
   if (!images)
   {
     return;
@@ -366,7 +540,7 @@ ReformationController::RunJob(const Job & job)
       return; // superseded: its surface would be stale before it is drawn
     }
   }
-  auto surface = Update(job, true);
+  auto surface = Update(job, parameters, factor, true);
   if (surface)
   {
     surface->PreviewSurface = images->PreviewSurface;
@@ -376,7 +550,10 @@ ReformationController::RunJob(const Job & job)
 }
 
 std::shared_ptr<ReformationResult>
-ReformationController::Update(const Job & job, bool surface)
+ReformationController::Update(const Job &                   job,
+                              const ReformationParameters & parameters,
+                              unsigned int                  factor,
+                              bool                          surface)
 {
   using Clock = std::chrono::steady_clock;
   if (!m_WorkerInputs)
@@ -385,7 +562,7 @@ ReformationController::Update(const Job & job, bool surface)
     Post([this, id] { emit requestFailed(id, tr("No volume and centerlines are loaded yet."), QString()); });
     return nullptr;
   }
-  m_Logic.SetParameters(job.Parameters);
+  m_Logic.SetParameters(parameters);
   m_Logic.SetSurfaceEnabled(surface);
   m_ProgressStarted = false;
   const StageCounts before = m_Logic.GetStageExecutionCounts();
@@ -408,7 +585,20 @@ ReformationController::Update(const Job & job, bool surface)
     auto result = std::make_shared<ReformationResult>();
     result->RequestId = job.Id;
     result->Kind = job.Kind;
-    result->Parameters = job.Parameters;
+    result->Parameters = parameters;
+    result->PreviewFactor = factor;
+    if (factor == 1)
+    {
+      result->FullView = outputs.View;
+      m_FullView = outputs.View;
+      m_FullViewParameters = parameters;
+    }
+    else
+    {
+      const auto & full = *m_FullView;
+      result->FullView = itk::CPRViewGeometry(
+        full.GetUp(), outputs.View.GetAngleInDegrees(), full.GetCenter(), full.GetSize(), full.GetSpacing());
+    }
     result->Outputs = outputs;
     result->Inputs = m_WorkerInputs;
     result->UpdateSeconds = seconds;
@@ -426,6 +616,11 @@ ReformationController::Update(const Job & job, bool surface)
       const auto previewStart = Clock::now();
       result->PreviewSurface = BuildPreviewSurface(outputs, result->PreviewStride);
       result->PreviewSeconds = std::chrono::duration<double>(Clock::now() - previewStart).count();
+      if (result->StagesRun.Depth > 0)
+      {
+        // A new view (an angle step): what the next step's choice of preview factor is made from.
+        RecordTime(factor, result->UpdateSeconds + result->PreviewSeconds);
+      }
     }
     std::lock_guard<std::mutex> lock(m_Mutex);
     m_Counts = result->CountsAfter;
@@ -469,6 +664,11 @@ void
 ReformationController::Deliver(std::shared_ptr<ReformationResult> result)
 {
   result->ReadyTime = std::chrono::steady_clock::now();
+  if (!result->HasFullSurface())
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_DeliveredId = std::max(m_DeliveredId, result->RequestId);
+  }
   Post(
     [this, result]
     {
@@ -479,11 +679,15 @@ ReformationController::Deliver(std::shared_ptr<ReformationResult> result)
         if (result->RequestId < floor)
         {
           ++m_Statistics.Stale;
+          // Never shown: the next step of a drag need not wait for it.
+          m_ShownId = std::max(m_ShownId, result->RequestId);
+          m_Wake.notify_all();
           return;
         }
         if (!result->HasFullSurface())
         {
           ++m_Statistics.Displayed;
+          m_Statistics.Previews += result->IsPreview() ? 1 : 0;
         }
       }
       m_Latest = result;

@@ -2,12 +2,14 @@
 #ifndef vrReformationController_h
 #define vrReformationController_h
 
+#include "vrProgressiveRefinement.h"
 #include "vrReformationInputs.h"
 #include "vrReformationParameters.h"
 #include "vrVesselReformationLogic.h"
 
 #include <QObject>
 #include <QString>
+#include <QTimer>
 
 #include <chrono>
 #include <condition_variable>
@@ -17,6 +19,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <array>
 #include <thread>
 #include <vector>
 
@@ -32,9 +35,11 @@ enum class RequestKind
   /** Any change the user settled on (a spin box, a released slider, the end of a drag): aborts a running update
    * and replaces a pending request. Its cut surface is built after its images are shown. */
   Final,
-  /** A step of a drag: replaces a pending request but lets a running update finish and be shown, so that a drag
-   * shows a new image each time the logic finishes one, at most one update behind the mouse. No cut surface (the 3D
-   * view shows the preview). */
+  /** A step of a drag: replaces a pending request but lets a running preview finish and be shown, so that a drag
+   * shows a new image each time the logic finishes one, at most one update behind the mouse. While previews are in
+   * use (progressive refinement, docs/progressive-refinement.md) it is computed at k times the pixel spacing, aborts
+   * a running full-resolution update, and a pause of RefinementDelayMilliseconds brings the full-resolution image.
+   * No cut surface (the 3D view shows the preview surface). */
   Interactive
 };
 
@@ -46,8 +51,13 @@ struct ReformationResult
   /** The request it answers (increasing in the order requests were made). */
   std::uint64_t RequestId{ 0 };
   RequestKind   Kind{ RequestKind::Final };
-  /** The parameters it was computed with. */
+  /** The parameters it was computed with (a preview's: vr::PreviewParameters of the request's). */
   ReformationParameters Parameters;
+  /** k: 1 for a full-resolution result, 2 or 4 for a preview at k times the pixel spacing of FullView. */
+  unsigned int PreviewFactor{ 1 };
+  /** The full-resolution view the result stands for (Outputs.View itself when PreviewFactor is 1): a view places a
+   * preview over the same millimetres. */
+  itk::CPRViewGeometry FullView;
   /** The logic's output nodes (the logic makes new nodes when a stage reruns, so these stay as they are). Surface is
    * null in the first result of a request and set in the second one (Final requests only). */
   ReformationOutputs Outputs;
@@ -80,6 +90,12 @@ struct ReformationResult
   {
     return Outputs.Surface != nullptr;
   }
+  /** True for a preview (PreviewFactor > 1). */
+  bool
+  IsPreview() const
+  {
+    return PreviewFactor > 1;
+  }
 };
 
 /** Counts of what happened to requests, for the status bar and for tests.
@@ -97,6 +113,10 @@ struct RequestStatistics
   unsigned int Stale{ 0 };
   /** Requests the logic refused (vr::InputError). */
   unsigned int Failed{ 0 };
+  /** Of the Displayed, the previews (coarser images while an interaction went on). */
+  unsigned int Previews{ 0 };
+  /** Full-resolution updates started after a pause of an interaction (not counting Final requests). */
+  unsigned int Refinements{ 0 };
 };
 
 /** \class ReformationController
@@ -175,6 +195,23 @@ public:
   /** The least time between two progressChanged() signals, in seconds (the first and the last always come). */
   static constexpr double ProgressIntervalSeconds = 0.1;
 
+  /** Progressive refinement (docs/progressive-refinement.md). \a factor 0 (the default) chooses the preview factor k
+   * from the measured times of recent updates and the frame budget (vr::ChoosePreviewFactor); 1 turns previews off
+   * (every step at full resolution, as a test of exact images wants); 2 or 4 previews every step at that factor. */
+  void
+  SetPreviewFactor(unsigned int factor);
+  /** The time a step's update should take, in seconds (default 0.05: 20 images a second). */
+  void
+  SetFrameBudget(double seconds);
+  /** \return the factor the next Interactive step would be computed at. */
+  unsigned int
+  GetCurrentPreviewFactor() const;
+  /** The pause after the latest Interactive step that starts the full-resolution update (when the step was a
+   * preview). */
+  static constexpr int RefinementDelayMilliseconds = 150;
+  /** How many recent update times per factor the choice looks at (their median). */
+  static constexpr std::size_t RecentTimes = 5;
+
 signals:
   void
   inputsLoaded(std::shared_ptr<const vr::ReformationInputs> inputs);
@@ -204,6 +241,8 @@ private:
     RequestKind                           Kind{ RequestKind::Final };
     ReformationParameters                 Parameters;
     std::chrono::steady_clock::time_point Time;
+    /** The full-resolution update after a pause of an interaction: never a preview. */
+    bool Refinement{ false };
   };
   struct Load
   {
@@ -225,9 +264,19 @@ private:
    * back and the exception goes on. \return the inputs with their centerlines. */
   ReformationInputs
   ExtractCenterlines(const ReformationInputs & inputs, const std::optional<ReformationParameters> & parameters);
-  /** Runs one logic update with the cut surface on or off; returns the result, or null when cancelled or failed. */
+  /** Runs one logic update of \a parameters (the job's, or its preview's at \a factor) with the cut surface on or
+   * off; returns the result, or null when cancelled or failed. */
   std::shared_ptr<ReformationResult>
-  Update(const Job & job, bool surface);
+  Update(const Job & job, const ReformationParameters & parameters, unsigned int factor, bool surface);
+  /** The factor for an Interactive step now (the forced one, or the adaptive choice). Under m_Mutex. */
+  unsigned int
+  ChooseFactorLocked() const;
+  /** Keeps the time of an update at \a factor whose view changed. */
+  void
+  RecordTime(unsigned int factor, double seconds);
+  /** The pause after an Interactive step ended: the full-resolution update when the step was a preview. GUI thread. */
+  void
+  Refine();
   /** Posts \a call to the GUI thread. */
   void
   Post(std::function<void()> call);
@@ -239,8 +288,12 @@ private:
   // Worker-only state.
   VesselReformationLogic                   m_Logic;
   std::shared_ptr<const ReformationInputs> m_WorkerInputs;
-  std::chrono::steady_clock::time_point    m_LastProgressTime;
-  bool                                     m_ProgressStarted{ false };
+  /** The latest full-resolution view and the parameters it came from: a preview of the same view (up to the angle)
+   * keeps its centre, size and spacing. */
+  std::optional<itk::CPRViewGeometry>   m_FullView;
+  ReformationParameters                 m_FullViewParameters;
+  std::chrono::steady_clock::time_point m_LastProgressTime;
+  bool                                  m_ProgressStarted{ false };
 
   // Shared state, under m_Mutex.
   mutable std::mutex      m_Mutex;
@@ -249,15 +302,24 @@ private:
   std::optional<Load>     m_PendingLoad;
   bool                    m_Running{ false };
   /** The running work is a load: requests do not abort it (a newer load does). */
-  bool              m_RunningLoad{ false };
-  RequestKind       m_RunningKind{ RequestKind::Final };
-  bool              m_Quit{ false };
-  std::uint64_t     m_NextId{ 1 };
-  StageCounts       m_Counts;
-  RequestStatistics m_Statistics;
-  bool              m_SurfaceWaitsForDisplay{ false };
-  double            m_SurfaceWaitSeconds{ 1.0 };
-  std::uint64_t     m_ShownId{ 0 };
+  bool        m_RunningLoad{ false };
+  RequestKind m_RunningKind{ RequestKind::Final };
+  /** The running update's factor (1: full resolution). */
+  unsigned int m_RunningFactor{ 1 };
+  bool         m_RunningRefinement{ false };
+  unsigned int m_ForcedFactor{ 0 };
+  double       m_FrameBudget{ 0.05 };
+  /** Recent update times at each of vr::PreviewFactors, newest last. */
+  std::array<std::vector<double>, PreviewFactors.size()> m_Times;
+  bool                                                   m_Quit{ false };
+  std::uint64_t                                          m_NextId{ 1 };
+  StageCounts                                            m_Counts;
+  RequestStatistics                                      m_Statistics;
+  bool                                                   m_SurfaceWaitsForDisplay{ false };
+  double                                                 m_SurfaceWaitSeconds{ 1.0 };
+  std::uint64_t                                          m_ShownId{ 0 };
+  /** The latest request whose images were handed to the GUI thread. */
+  std::uint64_t m_DeliveredId{ 0 };
 
   // GUI-thread state.
   std::shared_ptr<const ReformationInputs> m_Inputs;
@@ -265,6 +327,10 @@ private:
   /** Results of requests older than this one are stale. */
   std::uint64_t m_DisplayFloor{ 0 };
   bool          m_Busy{ false };
+  /** Starts Refine() once an interaction pauses; the latest Interactive step's id and parameters. */
+  QTimer                m_RefineTimer;
+  std::uint64_t         m_LastInteractiveId{ 0 };
+  ReformationParameters m_LastInteractiveParameters;
 
   std::thread m_Worker;
 };

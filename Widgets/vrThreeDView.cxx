@@ -393,7 +393,15 @@ ThreeDView::ScheduleRender()
     return;
   }
   m_RenderScheduled = true;
-  QTimer::singleShot(0,
+  int delay = 0;
+  if (m_Interacting)
+  {
+    const auto since =
+      std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - m_LastRenderTime)
+        .count();
+    delay = static_cast<int>(std::max<long long>(0, InteractiveRenderIntervalMilliseconds - since));
+  }
+  QTimer::singleShot(delay,
                      this,
                      [this]
                      {
@@ -408,7 +416,8 @@ ThreeDView::Render()
   m_Renderer->ResetCameraClippingRange();
   const auto start = std::chrono::steady_clock::now();
   m_RenderWindow->Render();
-  m_LastRenderSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  m_LastRenderTime = std::chrono::steady_clock::now();
+  m_LastRenderSeconds = std::chrono::duration<double>(m_LastRenderTime - start).count();
   vtkPolyData * drawn = m_Surface->GetVisibility() ? vtkPolyData::SafeDownCast(m_SurfaceMapper->GetInput()) : nullptr;
   m_LastRenderedPoints = drawn != nullptr ? drawn->GetNumberOfPoints() : 0;
   emit rendered(m_LastRenderSeconds, IsShowingFullSurface());

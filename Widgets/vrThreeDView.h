@@ -6,6 +6,8 @@
 
 #include <QWidget>
 
+#include <chrono>
+
 #include <vtkSmartPointer.h>
 
 #include <array>
@@ -64,9 +66,13 @@ public:
   bool
   IsShowingFullSurface() const;
 
-  /** Asks for a render; requests made before it runs are merged into one. */
+  /** Asks for a render; requests made before it runs are merged into one. While the CPR view's drag turns the view
+   * (SetInteracting), renders come at most every InteractiveRenderIntervalMilliseconds: a frame of this view costs
+   * more than one of the CPR view on a software OpenGL, and the CPR view's images come first
+   * (docs/progressive-refinement.md). */
   void
-  ScheduleRender();
+                       ScheduleRender();
+  static constexpr int InteractiveRenderIntervalMilliseconds = 250;
   /** Renders now. */
   void
   Render();
@@ -124,6 +130,7 @@ private:
   bool                                     m_Interacting{ false };
   bool                                     m_Orbiting{ false };
   bool                                     m_RenderScheduled{ false };
+  std::chrono::steady_clock::time_point    m_LastRenderTime;
   bool                                     m_CameraSet{ false };
   double                                   m_LastRenderSeconds{ 0.0 };
   long long                                m_LastRenderedPoints{ 0 };

@@ -12,7 +12,11 @@
 //                      swapped the frame). Their median and p95 over the repetitions come with the time's.
 //   Drag               a left-drag in the CPR view at 60 mouse events a second, 2 pixels (1 degree) each, for 3 s:
 //                      images shown per second, and for each shown image the time from the mouse event that asked for
-//                      its angle to its frame (latency), with the logic's time of those updates.
+//                      its angle to its frame (latency), with the logic's time of those updates; then the release: the
+//                      time from it to the full-resolution image at the final angle on screen (release_to_full). The
+//                      argument is the controller's preview factor (docs/progressive-refinement.md): 0 adaptive (the
+//                      viewer's default), 1 previews off (every step at full resolution, as before previews existed).
+//                      preview_fraction: the share of the drag's images that were previews.
 //   Logic_AngleChange  the logic alone (no window) for the same changes: depth, relaxation, both CPRs.
 //   Window_Repaint     one synchronous repaint of the whole window (a spin box's or the progress bar's change costs
 //   it). ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
@@ -277,7 +281,11 @@ Drag(benchmark::State & state)
   QWidget *           target = window.GetCPRView()->GetRenderWidget();
   std::vector<double> latencies;
   std::vector<double> logicTimes;
+  std::vector<double> releaseTimes;
   double              framesPerSecond = 0.0;
+  int                 previews = 0;
+  int                 shownFrames = 0;
+  window.GetController()->SetPreviewFactor(static_cast<unsigned int>(state.range(0)));
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     viewer.Settle();
@@ -301,6 +309,7 @@ Drag(benchmark::State & state)
                                            dragLatencies.push_back(Seconds(found->second, now));
                                            logicTimes.push_back(result->UpdateSeconds);
                                            ++frames;
+                                           previews += result->IsPreview() ? 1 : 0;
                                          }
                                        });
     const QPointF                          origin(200.0, 400.0);
@@ -323,9 +332,33 @@ Drag(benchmark::State & state)
     }
     const double seconds = Seconds(start, Clock::now());
     QObject::disconnect(connection);
+    const double      finalAngle = vr::WrapAngle(DesignAngle + vr::CPRView::DegreesPerPixel * pixelsPerEvent * events);
+    bool              fullShown = false;
+    Clock::time_point fullTime;
+    auto              released = QObject::connect(window.GetCPRView(),
+                                     &vr::CPRView::imageDisplayed,
+                                     window.GetCPRView(),
+                                     [&](std::uint64_t)
+                                     {
+                                       const auto result = window.GetCPRView()->GetResult();
+                                       if (!fullShown && !result->IsPreview() &&
+                                           result->Outputs.View.GetAngleInDegrees() == finalAngle)
+                                       {
+                                         fullShown = true;
+                                         fullTime = Clock::now();
+                                       }
+                                     });
+    const auto        release = Clock::now();
     send(QEvent::MouseButtonRelease, origin + QPointF(pixelsPerEvent * events, 0.0), Qt::LeftButton, Qt::NoButton);
+    RunUntil([&] { return fullShown; }, 30.0);
+    QObject::disconnect(released);
+    if (fullShown)
+    {
+      releaseTimes.push_back(Seconds(release, fullTime));
+    }
     state.SetIterationTime(seconds);
     framesPerSecond += frames / seconds;
+    shownFrames += frames;
     latencies.insert(latencies.end(), dragLatencies.begin(), dragLatencies.end());
   }
   viewer.Settle();
@@ -334,6 +367,9 @@ Drag(benchmark::State & state)
   state.counters["latency_median_ms"] = 1000.0 * Percentile(latencies, 0.5);
   state.counters["latency_p95_ms"] = 1000.0 * P95(latencies);
   state.counters["logic_median_ms"] = 1000.0 * Percentile(logicTimes, 0.5);
+  state.counters["release_to_full_median_ms"] = 1000.0 * Percentile(releaseTimes, 0.5);
+  state.counters["preview_fraction"] = shownFrames > 0 ? static_cast<double>(previews) / shownFrames : 0.0;
+  window.GetController()->SetPreviewFactor(0);
 }
 
 void
@@ -409,6 +445,9 @@ BENCHMARK(Logic_AngleChange)
   ->ComputeStatistics("p95", P95)
   ->ReportAggregatesOnly(true);
 BENCHMARK(Drag)
+  ->ArgName("preview_factor")
+  ->Arg(0)
+  ->Arg(1)
   ->Iterations(1)
   ->Repetitions(3)
   ->UseManualTime()
