@@ -1040,6 +1040,13 @@ ViewerWindow::SaveOutputs(const QString & folder)
     ShowError(tr("Cannot save outputs"), tr("There is no reformation on screen yet."));
     return false;
   }
+  if (shown->IsPreview())
+  {
+    // A preview is a coarser stand-in while the view turns: its files would not be the reformation.
+    ShowError(tr("Cannot save outputs"),
+              tr("A preview is on screen; save again once the full-resolution image has replaced it."));
+    return false;
+  }
   // The full result of the request on screen, with its cut surface when it has been built.
   auto result = m_Controller->GetLatestResult();
   if (!result || result->RequestId != shown->RequestId)
@@ -1160,6 +1167,12 @@ ViewerWindow::ExportRotationSeries(const QString & folder, const RotationAngles 
   if (!shown || !shown->Inputs)
   {
     ShowError(tr("Cannot export a rotation series"), tr("There is no reformation on screen yet."));
+    return 0;
+  }
+  if (shown->IsPreview())
+  {
+    ShowError(tr("Cannot export a rotation series"),
+              tr("A preview is on screen; export again once the full-resolution image has replaced it."));
     return 0;
   }
   RotationSeriesSettings settings;

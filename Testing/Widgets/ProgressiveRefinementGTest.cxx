@@ -406,6 +406,16 @@ TEST_F(PreviewWidgetsTest, APauseInADragBringsTheFullResolutionAndAStepDuringItA
   ASSERT_FALSE(displayed.empty());
   EXPECT_TRUE(displayed.back()->IsPreview());
   EXPECT_EQ(displayed.back()->Parameters.Iterations, 1250); // 20000 / 4^2
+  // Saving or exporting a preview would write a coarse stand-in: refused, nothing written.
+  {
+    vr::test::ScopedTemporaryFolder folder;
+    QString                         refused;
+    Window().SetErrorHandler([&](const QString & title, const QString &) { refused = title; });
+    EXPECT_FALSE(Window().SaveOutputs(QString::fromStdString(folder.File(""))));
+    EXPECT_EQ(refused, QStringLiteral("Cannot save outputs"));
+    EXPECT_TRUE(folder.Entries().empty());
+    Window().SetErrorHandler({});
+  }
   const std::size_t shownBeforeStep = displayed.size();
 
   // A step while it relaxes: aborted through the logic, and the new angle's preview follows.
