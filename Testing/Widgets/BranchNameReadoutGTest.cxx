@@ -141,13 +141,10 @@ ExpectEveryFixedPixelNamesItsVessel(ViewerWindow & window, const itk::CTAPhantom
   return named;
 }
 
-TEST(BranchNameReadout, EveryFixedPixelOfTheRunoffPhantomNamesItsVesselOnTheRightSide)
+/** Checks that every vessel of \a phantom was among those \a named. */
+void
+ExpectEveryVesselRead(const itk::CTAPhantom & phantom, const std::set<int> & named)
 {
-  const auto window = MakeWindowOnSmallPhantom(30.0);
-  ASSERT_TRUE(window->GetCPRView()->GetResult()) << window->GetLastError().toStdString();
-  const itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Runoff, 3.0);
-  const std::set<int>   named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom);
-  // Every vessel of the tree is seen and named at 30 degrees, both legs.
   std::set<std::string> names;
   for (const int id : named)
   {
@@ -157,6 +154,28 @@ TEST(BranchNameReadout, EveryFixedPixelOfTheRunoffPhantomNamesItsVesselOnTheRigh
   {
     EXPECT_EQ(names.count(phantom.BranchName(branch.Id)), 1u) << phantom.BranchName(branch.Id) << " never read";
   }
+}
+
+/** \a branch drawn as a tube of its radii into a label map on \a grid's geometry (1 = vessel). */
+vr::test::LabelMap::Pointer
+MaskOfBranch(const vr::VolumeImageType * grid, const itk::CenterlineBranch & branch)
+{
+  auto mask = vr::test::MakeLabelMap(
+    grid->GetLargestPossibleRegion().GetSize(), grid->GetSpacing(), grid->GetOrigin(), grid->GetDirection());
+  itk::CenterlineTree one;
+  one.AddBranch(branch);
+  vr::test::DrawTubes(mask, one);
+  return mask;
+}
+
+TEST(BranchNameReadout, EveryFixedPixelOfTheRunoffPhantomNamesItsVesselOnTheRightSide)
+{
+  const auto window = MakeWindowOnSmallPhantom(30.0);
+  ASSERT_TRUE(window->GetCPRView()->GetResult()) << window->GetLastError().toStdString();
+  const itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Runoff, 3.0);
+  const std::set<int>   named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom);
+  // Every vessel of the tree is seen and named at 30 degrees, both legs.
+  ExpectEveryVesselRead(phantom, named);
 }
 
 TEST(BranchNameReadout, EveryFixedPixelOfTheThoracicPhantomNamesItsArteryOnTheRightSide)
@@ -169,15 +188,7 @@ TEST(BranchNameReadout, EveryFixedPixelOfTheThoracicPhantomNamesItsArteryOnTheRi
   ASSERT_TRUE(WaitUntilSettled(*window, 300.0));
   const itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax, 1.5);
   const std::set<int>   named = ExpectEveryFixedPixelNamesItsVessel(*window, phantom);
-  std::set<std::string> names;
-  for (const int id : named)
-  {
-    names.insert(phantom.BranchName(id));
-  }
-  for (const auto & branch : phantom.Tree.GetBranches())
-  {
-    EXPECT_EQ(names.count(phantom.BranchName(branch.Id)), 1u) << phantom.BranchName(branch.Id) << " never read";
-  }
+  ExpectEveryVesselRead(phantom, named);
 }
 /** The thoracic phantom's volume and its exact tree written to files, the tree as \a centerlineFile. */
 std::string
@@ -220,11 +231,7 @@ TEST(BranchNameReadout, MaskFileNamesOfATotalSegmentatorFolderAppearInTheReadout
   QStringList       masks;
   for (const auto & branch : phantom.Tree.GetBranches())
   {
-    auto mask = vr::test::MakeLabelMap(
-      grid->GetLargestPossibleRegion().GetSize(), grid->GetSpacing(), grid->GetOrigin(), grid->GetDirection());
-    itk::CenterlineTree one;
-    one.AddBranch(branch);
-    vr::test::DrawTubes(mask, one);
+    const auto  mask = MaskOfBranch(grid, branch);
     std::string file = phantom.BranchName(branch.Id);
     std::replace(file.begin(), file.end(), ' ', '_');
     const std::string path = folder.File(file + ".nii.gz");
@@ -272,11 +279,7 @@ TEST(BranchNameReadout, SegmentNamesOfASlicerSegNrrdAppearInTheReadout)
   int segment = 0;
   for (const auto & branch : phantom.Tree.GetBranches())
   {
-    auto mask = vr::test::MakeLabelMap(
-      grid->GetLargestPossibleRegion().GetSize(), grid->GetSpacing(), grid->GetOrigin(), grid->GetDirection());
-    itk::CenterlineTree one;
-    one.AddBranch(branch);
-    vr::test::DrawTubes(mask, one);
+    const auto  mask = MaskOfBranch(grid, branch);
     const float label = static_cast<float>(segment + 1);
     for (std::size_t v = 0; v < mask->GetLargestPossibleRegion().GetNumberOfPixels(); ++v)
     {
