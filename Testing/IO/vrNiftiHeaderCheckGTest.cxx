@@ -371,7 +371,15 @@ TEST_P(NiftiHeaderCheckTest, EachBadFieldIsNamed)
 TEST_P(NiftiHeaderCheckTest, AWrongMagicIsNamed)
 {
   Fields fields;
-  std::memcpy(fields.Magic, GetParam().Version2 ? "n+1\0\r\n\032\n" : "n+2", 8);
+  // The other version's magic: eight bytes for a NIfTI-2 header, four (with the NUL) for a NIfTI-1 one.
+  if (GetParam().Version2)
+  {
+    std::memcpy(fields.Magic, "n+1\0\r\n\032\n", 8);
+  }
+  else
+  {
+    std::memcpy(fields.Magic, "n+2", 4);
+  }
   const std::string message = MessageFor(fields, GetParam());
   EXPECT_NE(message.find("magic"), std::string::npos) << message;
 }
