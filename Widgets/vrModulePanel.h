@@ -4,6 +4,7 @@
 
 #include "vrCPRView.h"
 #include "vrReformationController.h"
+#include "vrIntensityWindow.h"
 #include "vrReformationParameters.h"
 
 #include <QWidget>
@@ -32,7 +33,7 @@ struct WindowLevelPreset
 };
 /** CTA (W 900, L 200: lumen, soft tissue and bone at once, as the demo's pictures), bone (W 2000, L 500) and soft
  * tissue (W 400, L 40). */
-constexpr WindowLevelPreset CTAPreset{ "CTA", 900.0, 200.0 };
+constexpr WindowLevelPreset CTAPreset{ "CTA", CTAWindow, CTALevel };
 constexpr WindowLevelPreset BonePreset{ "Bone", 2000.0, 500.0 };
 constexpr WindowLevelPreset SoftTissuePreset{ "Soft tissue", 400.0, 40.0 };
 /** The preset whose window spans the volume's 1st to 99th intensity percentile (SetPercentileWindow): the default
