@@ -57,6 +57,18 @@ Milliseconds(double seconds)
 {
   return QStringLiteral("%1 ms").arg(std::lround(1000.0 * seconds));
 }
+/** The file dialogs' filters: the formats the volume and centerline readers take. */
+QString
+VolumeFileFilter()
+{
+  return ViewerWindow::tr("Volumes (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd);;All files (*)");
+}
+
+QString
+CenterlineFileFilter()
+{
+  return ViewerWindow::tr("Centerlines (*.vtp *.vtk *.mrk.json *.json *.tre *.csv);;All files (*)");
+}
 } // namespace
 
 ViewerWindow::ViewerWindow(QWidget * parent)
@@ -860,10 +872,7 @@ void
 ViewerWindow::ChooseAndOpenVolumeAndCenterlines()
 {
   const QString volume =
-    QFileDialog::getOpenFileName(this,
-                                 tr("Open a volume (then its centerlines)"),
-                                 StartFolder(),
-                                 tr("Volumes (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd);;All files (*)"));
+    QFileDialog::getOpenFileName(this, tr("Open a volume (then its centerlines)"), StartFolder(), VolumeFileFilter());
   if (volume.isEmpty())
   {
     return;
@@ -872,7 +881,7 @@ ViewerWindow::ChooseAndOpenVolumeAndCenterlines()
     QFileDialog::getOpenFileName(this,
                                  tr("Open the centerlines of %1").arg(QFileInfo(volume).fileName()),
                                  QFileInfo(volume).absolutePath(),
-                                 tr("Centerlines (*.vtp *.vtk *.mrk.json *.json *.tre *.csv);;All files (*)"));
+                                 CenterlineFileFilter());
   if (centerlines.isEmpty())
   {
     return;
@@ -1098,12 +1107,9 @@ ViewerWindow::WriteScreenshot(const QString & path)
 void
 ViewerWindow::ChooseAndOpenVolume(bool dicomFolder)
 {
-  const QString path =
-    dicomFolder ? QFileDialog::getExistingDirectory(this, tr("Open a DICOM series folder"), StartFolder())
-                : QFileDialog::getOpenFileName(this,
-                                               tr("Open a volume"),
-                                               StartFolder(),
-                                               tr("Volumes (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd);;All files (*)"));
+  const QString path = dicomFolder
+                         ? QFileDialog::getExistingDirectory(this, tr("Open a DICOM series folder"), StartFolder())
+                         : QFileDialog::getOpenFileName(this, tr("Open a volume"), StartFolder(), VolumeFileFilter());
   if (!path.isEmpty())
   {
     if (m_Settings)
@@ -1118,10 +1124,7 @@ void
 ViewerWindow::ChooseAndOpenCenterlines()
 {
   const QString path =
-    QFileDialog::getOpenFileName(this,
-                                 tr("Open centerlines"),
-                                 StartFolder(),
-                                 tr("Centerlines (*.vtp *.vtk *.mrk.json *.json *.tre *.csv);;All files (*)"));
+    QFileDialog::getOpenFileName(this, tr("Open centerlines"), StartFolder(), CenterlineFileFilter());
   if (!path.isEmpty())
   {
     if (m_Settings)
