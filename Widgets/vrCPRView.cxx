@@ -2,6 +2,7 @@
 #include "vrCPRView.h"
 
 #include "vrBranchColors.h"
+#include "vrOpenGLRenderer.h"
 
 #include <QEvent>
 #include <QKeyEvent>
@@ -173,6 +174,7 @@ CPRView::CPRView(QWidget * parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(m_Widget);
   m_RenderWindow = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  m_RenderWindow->SetMultiSamples(ViewMultiSamples());
   m_Widget->setRenderWindow(m_RenderWindow);
   m_Renderer = vtkSmartPointer<vtkRenderer>::New();
   m_Renderer->SetBackground(0.08, 0.08, 0.1);

@@ -4,6 +4,7 @@
 #include "vrBranchColors.h"
 #include "vrCoordinateFrames.h"
 #include "vrCutSurface.h"
+#include "vrOpenGLRenderer.h"
 
 #include <QTimer>
 #include <QVBoxLayout>
@@ -59,6 +60,7 @@ ThreeDView::ThreeDView(QWidget * parent)
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(m_Widget);
   m_RenderWindow = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  m_RenderWindow->SetMultiSamples(ViewMultiSamples());
   m_Widget->setRenderWindow(m_RenderWindow);
   m_Renderer = vtkSmartPointer<vtkRenderer>::New();
   m_Renderer->SetBackground(0.12, 0.12, 0.15);

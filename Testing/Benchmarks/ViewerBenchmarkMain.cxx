@@ -3,11 +3,9 @@
 // xvfb-run -a -s "-screen 0 1920x1080x24"), then Google Benchmark. The JSON context names the processor, the thread
 // count, the build flags and the OpenGL renderer.
 #include "itkMultiThreaderBase.h"
+#include "vrOpenGLRenderer.h"
 
 #include <QApplication>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QSurfaceFormat>
 #include <QVTKOpenGLNativeWidget.h>
 
@@ -33,24 +31,6 @@ ProcessorModel()
   }
   return "unknown";
 }
-
-std::string
-OpenGLRenderer()
-{
-  QOffscreenSurface surface;
-  surface.create();
-  QOpenGLContext context;
-  if (!context.create() || !context.makeCurrent(&surface))
-  {
-    return "unknown";
-  }
-  const auto * renderer = context.functions()->glGetString(GL_RENDERER);
-  const auto * version = context.functions()->glGetString(GL_VERSION);
-  std::string  text = renderer ? reinterpret_cast<const char *>(renderer) : "unknown";
-  text += version ? std::string(", OpenGL ") + reinterpret_cast<const char *>(version) : std::string();
-  context.doneCurrent();
-  return text;
-}
 } // namespace
 
 int
@@ -67,7 +47,8 @@ main(int argc, char ** argv)
   benchmark::AddCustomContext("itk_threads", std::to_string(itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads()));
   benchmark::AddCustomContext("build_type", VR_BENCHMARK_BUILD_TYPE);
   benchmark::AddCustomContext("cxx_flags", VR_BENCHMARK_CXX_FLAGS);
-  benchmark::AddCustomContext("opengl_renderer", OpenGLRenderer());
+  benchmark::AddCustomContext("opengl_renderer", vr::OpenGLRendererName());
+  benchmark::AddCustomContext("view_multisamples", std::to_string(vr::ViewMultiSamples()));
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -12,6 +12,7 @@
 #include "vrCenterlineExtraction.h"
 #include "vrImageIO.h"
 #include "vrNodeConversion.h"
+#include "vrOpenGLRenderer.h"
 #include "vrInputError.h"
 #include "vrOutputWriter.h"
 #include "vrSurfacePreview.h"
@@ -34,6 +35,7 @@
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkCellData.h>
+#include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
 
@@ -179,6 +181,29 @@ TEST_F(WidgetsTest, MovingTheAngleSliderRerunsDepthRelaxAndResampleOnceAndShowsT
   // And it differs from the image at the old angle, so the comparison can fail.
   const auto old = NodePixels(ReferenceOutputs(SmallPhantomInputs(), TestParameters(StartAngle)).CPR);
   EXPECT_NE(old, NodePixels(reference.CPR));
+}
+
+TEST(OpenGLRendererTest, SoftwareRasterisersAreToldFromGPUs)
+{
+  EXPECT_TRUE(vr::IsSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits), OpenGL 4.5 (Core Profile) Mesa 22.3.6"));
+  EXPECT_TRUE(vr::IsSoftwareRenderer("Gallium 0.4 on softpipe"));
+  EXPECT_TRUE(vr::IsSoftwareRenderer("Mesa X11 SWRAST"));
+  EXPECT_TRUE(vr::IsSoftwareRenderer("Google SwiftShader"));
+  EXPECT_TRUE(vr::IsSoftwareRenderer("GDI Generic"));
+  EXPECT_FALSE(vr::IsSoftwareRenderer("NVIDIA H200/PCIe/SSE2, OpenGL 4.6.0 NVIDIA 550.54.15"));
+  EXPECT_FALSE(vr::IsSoftwareRenderer("AMD Radeon RX 7900 XTX (radeonsi, navi31, LLVM 15.0.7)"));
+  EXPECT_FALSE(vr::IsSoftwareRenderer("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+}
+
+// Under Xvfb the renderer is Mesa's llvmpipe: both views must draw without multisampling there, which made every frame
+// about three times as dear (vrOpenGLRenderer.h).
+TEST_F(WidgetsTest, OnASoftwareRendererTheViewsDrawWithoutMultisampling)
+{
+  const std::string renderer = vr::OpenGLRendererName();
+  ASSERT_TRUE(vr::IsSoftwareRenderer(renderer)) << "the widget tests run under Xvfb's Mesa, here: " << renderer;
+  EXPECT_EQ(vr::ViewMultiSamples(), 0);
+  EXPECT_EQ(Window().GetCPRView()->GetRenderWidget()->renderWindow()->GetMultiSamples(), 0);
+  EXPECT_EQ(Window().GetThreeDView()->GetRenderWidget()->renderWindow()->GetMultiSamples(), 0);
 }
 
 TEST_F(WidgetsTest, ChangingTheWindowRerunsNothingAndRedrawsThroughTheNewWindow)
