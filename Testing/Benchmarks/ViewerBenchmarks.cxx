@@ -282,6 +282,9 @@ Drag(benchmark::State & state)
   std::vector<double> latencies;
   std::vector<double> logicTimes;
   std::vector<double> releaseTimes;
+  std::vector<double> cprRenderTimes;
+  std::vector<double> threeDRenderTimes;
+  double              dragSeconds = 0.0;
   double              framesPerSecond = 0.0;
   int                 previews = 0;
   int                 shownFrames = 0;
@@ -310,9 +313,15 @@ Drag(benchmark::State & state)
                                            logicTimes.push_back(result->UpdateSeconds);
                                            ++frames;
                                            previews += result->IsPreview() ? 1 : 0;
+                                           cprRenderTimes.push_back(window.GetCPRView()->GetLastRenderSeconds());
                                          }
                                        });
-    const QPointF                          origin(200.0, 400.0);
+    // What the 3D view draws meanwhile (at most every ThreeDView::InteractiveRenderIntervalMilliseconds).
+    auto          threeDConnection = QObject::connect(window.GetThreeDView(),
+                                             &vr::ThreeDView::rendered,
+                                             window.GetThreeDView(),
+                                             [&](double seconds, bool) { threeDRenderTimes.push_back(seconds); });
+    const QPointF origin(200.0, 400.0);
     auto send = [&](QEvent::Type type, const QPointF & position, Qt::MouseButton button, Qt::MouseButtons buttons)
     {
       QMouseEvent event(type, position, target->mapToGlobal(position.toPoint()), button, buttons, Qt::NoModifier);
@@ -332,6 +341,7 @@ Drag(benchmark::State & state)
     }
     const double seconds = Seconds(start, Clock::now());
     QObject::disconnect(connection);
+    QObject::disconnect(threeDConnection);
     const double      finalAngle = vr::WrapAngle(DesignAngle + vr::CPRView::DegreesPerPixel * pixelsPerEvent * events);
     bool              fullShown = false;
     Clock::time_point fullTime;
@@ -358,6 +368,7 @@ Drag(benchmark::State & state)
     }
     state.SetIterationTime(seconds);
     framesPerSecond += frames / seconds;
+    dragSeconds += seconds;
     shownFrames += frames;
     latencies.insert(latencies.end(), dragLatencies.begin(), dragLatencies.end());
   }
@@ -367,6 +378,9 @@ Drag(benchmark::State & state)
   state.counters["latency_median_ms"] = 1000.0 * Percentile(latencies, 0.5);
   state.counters["latency_p95_ms"] = 1000.0 * P95(latencies);
   state.counters["logic_median_ms"] = 1000.0 * Percentile(logicTimes, 0.5);
+  state.counters["cpr_render_median_ms"] = 1000.0 * Percentile(cprRenderTimes, 0.5);
+  state.counters["threeD_renders_per_s"] = static_cast<double>(threeDRenderTimes.size()) / dragSeconds;
+  state.counters["threeD_render_median_ms"] = 1000.0 * Percentile(threeDRenderTimes, 0.5);
   state.counters["release_to_full_median_ms"] = 1000.0 * Percentile(releaseTimes, 0.5);
   state.counters["preview_fraction"] = shownFrames > 0 ? static_cast<double>(previews) / shownFrames : 0.0;
   window.GetController()->SetPreviewFactor(0);
