@@ -123,6 +123,72 @@ DecideAutoRelaxBackend(const std::string & deviceRequest, const OpenCLDeviceQuer
   return decision;
 }
 
+namespace
+{
+/** The notice when auto falls back to the CPU because OpenCL is not usable (\a why). */
+std::string
+UnusableOpenCLNotice(const std::string & why)
+{
+  return "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
+}
+} // namespace
+
+RelaxFilterChoice
+ChooseRelaxFilter(RelaxBackend                    requested,
+                  itk::BilateralDepthRelaxSolver  solver,
+                  const std::string &             deviceRequest,
+                  const OpenCLRelaxFilterSource & openCL,
+                  const OpenCLDeviceQuery &       query)
+{
+  RelaxFilterChoice choice;
+  choice.Reason = "cpu requested";
+  if (requested == RelaxBackend::CPU)
+  {
+    return choice;
+  }
+  if (solver == itk::BilateralDepthRelaxSolver::Steady)
+  {
+    // Asked for OpenCL by name, the user hears why it is not used; auto simply reports its reason.
+    choice.Reason = std::string(ToString(requested)) + ": the steady solver has no OpenCL kernel, so the CPU";
+    if (requested == RelaxBackend::OpenCL)
+    {
+      choice.Notice = "relax backend opencl: the steady solver has no OpenCL kernel; relaxing on the CPU instead";
+    }
+    return choice;
+  }
+  std::string openCLReason = "opencl requested";
+  if (requested == RelaxBackend::Auto)
+  {
+    // OpenCL only on a GPU or an accelerator; on PoCL's CPU device the native path is faster.
+    const RelaxBackendDecision decision = DecideAutoRelaxBackend(deviceRequest, query);
+    if (decision.Backend == RelaxBackend::CPU)
+    {
+      choice.Reason = decision.Reason;
+      if (!decision.DeviceProblem.empty())
+      {
+        choice.Notice = UnusableOpenCLNotice(decision.DeviceProblem);
+      }
+      return choice;
+    }
+    openCLReason = decision.Reason;
+  }
+  std::string why;
+  if (auto filter = openCL(deviceRequest, why))
+  {
+    choice.Filter = filter;
+    choice.Backend = RelaxBackend::OpenCL;
+    choice.Reason = openCLReason;
+    return choice;
+  }
+  if (requested == RelaxBackend::OpenCL)
+  {
+    throw InputError("relax backend opencl: no usable OpenCL device: " + why, ParameterName::Backend);
+  }
+  choice.Notice = UnusableOpenCLNotice(why);
+  choice.Reason = "auto: OpenCL failed on the device (" + why + "), so the CPU";
+  return choice;
+}
+
 RelaxFilterType::Pointer
 CreateRelaxFilter(RelaxBackend              backend,
                   const std::string &       deviceRequest,
@@ -131,51 +197,17 @@ CreateRelaxFilter(RelaxBackend              backend,
                   std::string *             reason,
                   const OpenCLDeviceQuery & query)
 {
-  notice.clear();
-  auto report = [&](RelaxBackend used, const std::string & why)
+  const RelaxFilterChoice choice = ChooseRelaxFilter(
+    backend, itk::BilateralDepthRelaxSolver::Jacobi, deviceRequest, TryCreateOpenCLRelaxFilter, query);
+  notice = choice.Notice;
+  if (chosen)
   {
-    if (chosen)
-    {
-      *chosen = used;
-    }
-    if (reason)
-    {
-      *reason = why;
-    }
-  };
-  report(RelaxBackend::CPU, "cpu requested");
-  if (backend == RelaxBackend::CPU)
-  {
-    return RelaxFilterType::New();
+    *chosen = choice.Backend;
   }
-  std::string openCLReason = "opencl requested";
-  if (backend == RelaxBackend::Auto)
+  if (reason)
   {
-    const RelaxBackendDecision decision = DecideAutoRelaxBackend(deviceRequest, query);
-    if (decision.Backend == RelaxBackend::CPU)
-    {
-      report(RelaxBackend::CPU, decision.Reason);
-      if (!decision.DeviceProblem.empty())
-      {
-        notice =
-          "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + decision.DeviceProblem;
-      }
-      return RelaxFilterType::New();
-    }
-    openCLReason = decision.Reason;
+    *reason = choice.Reason;
   }
-  std::string why;
-  if (auto filter = TryCreateOpenCLRelaxFilter(deviceRequest, why))
-  {
-    report(RelaxBackend::OpenCL, openCLReason);
-    return filter;
-  }
-  if (backend == RelaxBackend::OpenCL)
-  {
-    throw InputError("relax backend opencl: no usable OpenCL device: " + why, ParameterName::Backend);
-  }
-  notice = "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
-  report(RelaxBackend::CPU, "auto: OpenCL failed on the device (" + why + "), so the CPU");
-  return RelaxFilterType::New();
+  return choice.Filter ? choice.Filter : RelaxFilterType::New();
 }
 } // namespace vr

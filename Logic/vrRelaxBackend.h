@@ -71,10 +71,39 @@ struct RelaxBackendDecision
 RelaxBackendDecision
 DecideAutoRelaxBackend(const std::string & deviceRequest, const OpenCLDeviceQuery & query = QueryOpenCLDevice);
 
-/** Creates the relax filter for \a backend. \a deviceRequest picks an OpenCL device ("" = the default choice,
- * see the OpenCL variant). On Auto without a usable device, returns the CPU filter and sets \a notice to why;
- * on OpenCL without one, throws vr::InputError naming what was found. \a chosen receives the backend used and
- * \a reason why (DecideAutoRelaxBackend() for Auto, which asks \a query). */
+/** Makes (or finds) the OpenCL relax filter for a device request, as TryCreateOpenCLRelaxFilter; null and \a whyNot
+ * when there is none. */
+using OpenCLRelaxFilterSource =
+  std::function<RelaxFilterType::Pointer(const std::string & deviceRequest, std::string & whyNot)>;
+
+/** What a relaxation runs on, and why, in words for the results and the stage log.
+ * \ingroup VesselReformation */
+struct RelaxFilterChoice
+{
+  /** The OpenCL filter when Backend is OpenCL; null for the CPU, whose filter the caller owns. */
+  RelaxFilterType::Pointer Filter;
+  RelaxBackend             Backend{ RelaxBackend::CPU };
+  std::string              Reason;
+  /** What the user should hear (a fallback, a backend asked for by name and not used); else empty. */
+  std::string Notice;
+};
+
+/** The one backend decision of the project (docs/design.md 3.7): cpu gives the CPU; the steady solver, which has no
+ * OpenCL kernel, gives the CPU (with a notice when OpenCL was asked for by name); auto applies
+ * DecideAutoRelaxBackend(), asking \a query, and takes OpenCL only when \a openCL then makes a filter, else the CPU
+ * with a notice saying why; opencl takes the filter \a openCL makes or throws vr::InputError naming why there is
+ * none. */
+RelaxFilterChoice
+ChooseRelaxFilter(RelaxBackend                    requested,
+                  itk::BilateralDepthRelaxSolver  solver,
+                  const std::string &             deviceRequest,
+                  const OpenCLRelaxFilterSource & openCL = TryCreateOpenCLRelaxFilter,
+                  const OpenCLDeviceQuery &       query = QueryOpenCLDevice);
+
+/** Creates the relax filter for \a backend (ChooseRelaxFilter() for the Jacobi solver). \a deviceRequest picks an
+ * OpenCL device ("" = the default choice, see the OpenCL variant). On Auto without a usable device, returns the CPU
+ * filter and sets \a notice to why; on OpenCL without one, throws vr::InputError naming what was found. \a chosen
+ * receives the backend used and \a reason why (DecideAutoRelaxBackend() for Auto, which asks \a query). */
 RelaxFilterType::Pointer
 CreateRelaxFilter(RelaxBackend              backend,
                   const std::string &       deviceRequest,

@@ -66,21 +66,6 @@ RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error
 static_assert(ReformationParameters::DefaultJumpThreshold == RelaxFilterType::DefaultJumpThreshold,
               "the logic's default jump threshold is the filter's");
 
-/** What the logic says when the steady solver, which has no OpenCL kernel, was asked for with \a backend. */
-std::string
-SteadySolverOnCPUNotice(RelaxBackend backend)
-{
-  return std::string("relax backend ") + ToString(backend) +
-         ": the steady solver has no OpenCL kernel; relaxing on the CPU instead";
-}
-
-/** Why the relaxation runs on the CPU when the steady solver was asked for with \a backend (the backend's reason). */
-std::string
-SteadySolverOnCPUReason(RelaxBackend backend)
-{
-  return std::string(ToString(backend)) + ": the steady solver has no OpenCL kernel, so the CPU";
-}
-
 /** Sets w, the range kernel (J or a, as the parameters give it), N and the solver on \a filter. */
 void
 ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & parameters)
@@ -522,68 +507,28 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
     return;
   }
   HasBackendChoice = false;
-  RelaxFilterType::Pointer chosen = CPURelax;
-  std::string              notice;
-  std::string              reason = "cpu requested";
-  bool                     tryOpenCL = Parameters.Backend == RelaxBackend::OpenCL;
-  if (Parameters.Backend != RelaxBackend::CPU && Parameters.Solver == itk::BilateralDepthRelaxSolver::Steady)
+  // The OpenCL filter of a device is made once and kept, with its built kernel.
+  auto openCL = [this](const std::string & device, std::string & whyNot) -> RelaxFilterType::Pointer
   {
-    // Asked for OpenCL by name, the user hears why it is not used; auto simply reports its reason.
-    notice = Parameters.Backend == RelaxBackend::OpenCL ? SteadySolverOnCPUNotice(Parameters.Backend) : "";
-    reason = SteadySolverOnCPUReason(Parameters.Backend);
-    tryOpenCL = false;
-  }
-  else if (Parameters.Backend == RelaxBackend::OpenCL)
-  {
-    reason = "opencl requested";
-  }
-  else if (Parameters.Backend == RelaxBackend::Auto)
-  {
-    // OpenCL only on a GPU or an accelerator; on PoCL's CPU device the native path is faster (issue 13).
-    const RelaxBackendDecision decision = DecideAutoRelaxBackend(Parameters.OpenCLDevice, OpenCLDevices);
-    reason = decision.Reason;
-    tryOpenCL = decision.Backend == RelaxBackend::OpenCL;
-    if (!decision.DeviceProblem.empty())
-    {
-      notice =
-        "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + decision.DeviceProblem;
-    }
-  }
-  if (tryOpenCL)
-  {
-    RelaxFilterType::Pointer & cached = OpenCLRelax[Parameters.OpenCLDevice];
-    std::string                why;
-    if (!cached)
-    {
-      cached = TryCreateOpenCLRelaxFilter(Parameters.OpenCLDevice, why);
-      if (cached)
-      {
-        Watch(cached, RelaxWatch, "relax");
-      }
-      else
-      {
-        OpenCLRelax.erase(Parameters.OpenCLDevice);
-      }
-    }
-    auto found = OpenCLRelax.find(Parameters.OpenCLDevice);
+    auto found = OpenCLRelax.find(device);
     if (found != OpenCLRelax.end())
     {
-      chosen = found->second;
+      return found->second;
     }
-    else if (Parameters.Backend == RelaxBackend::OpenCL)
+    RelaxFilterType::Pointer filter = TryCreateOpenCLRelaxFilter(device, whyNot);
+    if (filter)
     {
-      throw InputError("relax backend opencl: no usable OpenCL device: " + why, ParameterName::Backend);
+      Watch(filter, RelaxWatch, "relax");
+      OpenCLRelax[device] = filter;
     }
-    else
-    {
-      notice = "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: " + why;
-      reason = "auto: OpenCL failed on the device (" + why + "), so the CPU";
-    }
-  }
-  Relax = chosen;
-  Outputs.RelaxBackendUsed = chosen == CPURelax ? ToString(RelaxBackend::CPU) : ToString(RelaxBackend::OpenCL);
-  Outputs.RelaxBackendReason = reason;
-  BackendNotice = notice;
+    return filter;
+  };
+  const RelaxFilterChoice choice =
+    vr::ChooseRelaxFilter(Parameters.Backend, Parameters.Solver, Parameters.OpenCLDevice, openCL, OpenCLDevices);
+  Relax = choice.Filter ? choice.Filter : CPURelax;
+  Outputs.RelaxBackendUsed = ToString(choice.Backend);
+  Outputs.RelaxBackendReason = choice.Reason;
+  BackendNotice = choice.Notice;
   Warning(BackendNotice, ParameterName::Backend);
   HasBackendChoice = true;
   ChosenFor = Parameters.Backend;
@@ -1029,31 +974,20 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   {
     throw InputError("relaxation: no depth image given");
   }
-  std::string  notice;
-  std::string  reason;
-  RelaxBackend chosen = RelaxBackend::CPU;
-  const bool   steady = parameters.Solver == itk::BilateralDepthRelaxSolver::Steady;
-  auto         filter = CreateRelaxFilter(
-    steady ? RelaxBackend::CPU : parameters.Backend, parameters.OpenCLDevice, notice, &chosen, &reason);
-  if (steady && parameters.Backend == RelaxBackend::OpenCL)
-  {
-    notice = SteadySolverOnCPUNotice(parameters.Backend);
-  }
-  if (steady && parameters.Backend != RelaxBackend::CPU)
-  {
-    reason = SteadySolverOnCPUReason(parameters.Backend);
-  }
+  const RelaxFilterChoice choice =
+    vr::ChooseRelaxFilter(parameters.Backend, parameters.Solver, parameters.OpenCLDevice);
+  RelaxFilterType::Pointer filter = choice.Filter ? choice.Filter : RelaxFilterType::New();
   if (backendReason != nullptr)
   {
-    *backendReason = reason;
+    *backendReason = choice.Reason;
   }
-  if (!notice.empty())
+  if (!choice.Notice.empty())
   {
-    warnings.push_back(notice);
+    warnings.push_back(choice.Notice);
   }
   if (backendUsed != nullptr)
   {
-    *backendUsed = ToString(chosen);
+    *backendUsed = ToString(choice.Backend);
   }
   filter->SetInput(depth);
   filter->SetFixedMask(mask);

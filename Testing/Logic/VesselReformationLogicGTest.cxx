@@ -605,6 +605,76 @@ TEST(RelaxBackendChoice, AutoTakesOpenCLOnlyOnAGPUOrAnAccelerator)
   EXPECT_EQ(asked, "1:2");
 }
 
+// The one backend decision (vr::ChooseRelaxFilter), with the OpenCL filter's maker replaced: every rule and every
+// message, without a device.
+TEST(RelaxBackendChoice, OneDecisionForEverySolverBackendAndDevice)
+{
+  const vr::RelaxFilterType::Pointer openCLFilter = vr::RelaxFilterType::New(); // stands for a device's filter
+  int                                made = 0;
+  auto                               makes = [&](const std::string &, std::string &) -> vr::RelaxFilterType::Pointer
+  {
+    ++made;
+    return openCLFilter;
+  };
+  auto fails = [&](const std::string &, std::string & whyNot) -> vr::RelaxFilterType::Pointer
+  {
+    ++made;
+    whyNot = "the kernel did not build";
+    return nullptr;
+  };
+  using Solver = itk::BilateralDepthRelaxSolver;
+  // cpu: the CPU, nothing asked of OpenCL.
+  auto choice = vr::ChooseRelaxFilter(vr::RelaxBackend::CPU, Solver::Jacobi, "", makes, DeviceOfType("GPU"));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::CPU);
+  EXPECT_FALSE(choice.Filter);
+  EXPECT_EQ(choice.Reason, "cpu requested");
+  EXPECT_TRUE(choice.Notice.empty());
+  EXPECT_EQ(made, 0);
+  // The steady solver has no OpenCL kernel: the CPU; asked for OpenCL by name, the user hears it.
+  choice = vr::ChooseRelaxFilter(vr::RelaxBackend::OpenCL, Solver::Steady, "", makes, DeviceOfType("GPU"));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::CPU);
+  EXPECT_EQ(choice.Reason, "opencl: the steady solver has no OpenCL kernel, so the CPU");
+  EXPECT_EQ(choice.Notice, "relax backend opencl: the steady solver has no OpenCL kernel; relaxing on the CPU instead");
+  choice = vr::ChooseRelaxFilter(vr::RelaxBackend::Auto, Solver::Steady, "", makes, DeviceOfType("GPU"));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::CPU);
+  EXPECT_EQ(choice.Reason, "auto: the steady solver has no OpenCL kernel, so the CPU");
+  EXPECT_TRUE(choice.Notice.empty());
+  EXPECT_EQ(made, 0);
+  // auto on a GPU: the filter made for it.
+  choice = vr::ChooseRelaxFilter(vr::RelaxBackend::Auto, Solver::Jacobi, "", makes, DeviceOfType("GPU"));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::OpenCL);
+  EXPECT_EQ(choice.Filter, openCLFilter);
+  EXPECT_EQ(choice.Reason, "auto: OpenCL on 0:0 stub device (stub platform, GPU), a GPU");
+  EXPECT_EQ(made, 1);
+  // auto on a GPU whose kernel fails: the CPU, and the user hears why.
+  choice = vr::ChooseRelaxFilter(vr::RelaxBackend::Auto, Solver::Jacobi, "", fails, DeviceOfType("GPU"));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::CPU);
+  EXPECT_FALSE(choice.Filter);
+  EXPECT_EQ(choice.Notice,
+            "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: the kernel did not build");
+  // auto without a device: the CPU with the same notice, nothing made.
+  made = 0;
+  choice = vr::ChooseRelaxFilter(vr::RelaxBackend::Auto, Solver::Jacobi, "", makes, DeviceOfType(""));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::CPU);
+  EXPECT_EQ(
+    choice.Notice,
+    "relax backend auto: OpenCL is not usable, relaxing on the CPU instead. Reason: no OpenCL platform is installed");
+  EXPECT_EQ(made, 0);
+  // opencl: the filter, or an error naming why there is none.
+  choice = vr::ChooseRelaxFilter(vr::RelaxBackend::OpenCL, Solver::Jacobi, "", makes, DeviceOfType("CPU"));
+  EXPECT_EQ(choice.Backend, vr::RelaxBackend::OpenCL);
+  EXPECT_EQ(choice.Reason, "opencl requested");
+  try
+  {
+    vr::ChooseRelaxFilter(vr::RelaxBackend::OpenCL, Solver::Jacobi, "", fails, DeviceOfType("GPU"));
+    ADD_FAILURE() << "opencl without a usable device must throw";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_STREQ(error.what(), "relax backend opencl: no usable OpenCL device: the kernel did not build");
+  }
+}
+
 // The logic reports its choice and the reason in its outputs; a CPU device is a choice, not a warning.
 TEST_F(VesselReformationLogicTest, AutoOnACPUDeviceRelaxesOnTheCPUAndSaysWhy)
 {
