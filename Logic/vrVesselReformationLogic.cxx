@@ -4,6 +4,8 @@
 #include "vrCenterlineVolumeFit.h"
 
 #include "vrImageGrid.h"
+#include "vrMemoryBudget.h"
+#include "vrStageMonitor.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRDepthImageFilter.h"
@@ -18,16 +20,11 @@
 #include <vtkPolyData.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <climits>
 #include <limits>
 #include <cmath>
-#include <fstream>
-#include <iomanip>
 #include <map>
 #include <sstream>
-#include <unistd.h>
 
 namespace vr
 {
@@ -41,26 +38,6 @@ double
 SecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string
-Gibibytes(double bytes)
-{
-  std::ostringstream text;
-  text << std::setprecision(3) << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
-  return text.str();
-}
-
-/** Turns a filter's itk::ExceptionObject into the one error type the logic reports (an abort into Cancelled). */
-[[noreturn]] void
-RethrowFilterError(const std::string & stage, const itk::ExceptionObject & error)
-{
-  if (dynamic_cast<const itk::ProcessAborted *>(&error) != nullptr)
-  {
-    // The filter says how far it got ("aborted after 2801 of 200000 iterations").
-    throw Cancelled(stage + ": cancelled (" + error.GetDescription() + ")");
-  }
-  throw InputError(stage + ": " + error.GetDescription());
 }
 
 static_assert(ReformationParameters::DefaultJumpThreshold == RelaxFilterType::DefaultJumpThreshold,
@@ -85,21 +62,6 @@ ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & par
 }
 } // namespace
 
-/** Whether updating \a output will run its source (defined below). */
-static bool
-WillRun(itk::DataObject * output);
-
-/** One stage of the pipeline as the logic watches it: how often its filter ran, how long the latest run took, and
- * where its progress falls in the whole update. */
-struct StageWatch
-{
-  unsigned int      Runs{ 0 };
-  Clock::time_point Start;
-  double            Seconds{ 0.0 };
-  double            From{ 0.0 };
-  double            To{ 1.0 };
-};
-
 struct VesselReformationLogic::Internals
 {
   vtkSmartPointer<VolumeNode>     VolumeNodeInput;
@@ -108,7 +70,6 @@ struct VesselReformationLogic::Internals
   CenterlineExtractionParameters  ExtractionParameters;
   ReformationParameters           Parameters;
   bool                            SurfaceEnabled{ true };
-  ProgressCallback                Progress;
   WarningCallback                 Warn;
 
   // The inputs as ITK sees them, converted again only when a node changes.
@@ -148,21 +109,14 @@ struct VesselReformationLogic::Internals
   ResampleFilterType::Pointer                     UnfilteredResample = ResampleFilterType::New();
   ResampleFilterType::Pointer                     RelaxedResample = ResampleFilterType::New();
 
-  StageWatch ExtractionWatch;
-  StageWatch DepthWatch;
-  StageWatch RelaxWatch;
-  StageWatch UnfilteredWatch;
-  StageWatch RelaxedWatch;
-  bool       SurfaceValid{ false };
-  bool       HasCPR{ false };
+  detail::StageMonitor Monitor; // counts, times, progress, abort
+  bool                 SurfaceValid{ false };
+  bool                 HasCPR{ false };
   /** The relax filter whose output Outputs.RelaxedDepth copies. */
   const RelaxFilterType * RelaxedDepthFrom{ nullptr };
   /** The stage counts when the output nodes were last made: a stage that ran since (also in an update that was
    * cancelled later) gets its node made anew. */
   StageCounts Refreshed;
-
-  std::atomic<bool> Running{ false };
-  std::atomic<bool> AbortRequested{ false };
 
   std::string InputWarning;
   std::string SegmentationWarning;
@@ -174,40 +128,13 @@ struct VesselReformationLogic::Internals
 
   Internals()
   {
-    Watch(Extraction, ExtractionWatch, "centerlines");
-    Watch(Depth, DepthWatch, "depth");
-    Watch(CPURelax, RelaxWatch, "relax");
-    Watch(UnfilteredResample, UnfilteredWatch, "resample");
-    Watch(RelaxedResample, RelaxedWatch, "resample");
+    Monitor.Watch(Extraction, detail::Stage::Extraction, "centerlines");
+    Monitor.Watch(Depth, detail::Stage::Depth, "depth");
+    Monitor.Watch(CPURelax, detail::Stage::Relax, "relax");
+    Monitor.Watch(UnfilteredResample, detail::Stage::UnfilteredSampling, "resample");
+    Monitor.Watch(RelaxedResample, detail::Stage::RelaxedSampling, "resample");
     RelaxedResample->SetDepth(CPURelax->GetOutput());
     UnfilteredResample->SetDepth(Depth->GetDepthOutput());
-  }
-
-  /** Counts and times \a filter's runs, reports its progress in its stage's share, and raises its abort flag from
-   * within its own progress report when AbortUpdate() asked (the filter's thread, so no race on ITK's flag). */
-  void
-  Watch(itk::ProcessObject * filter, StageWatch & watch, const char * stage)
-  {
-    filter->AddObserver(itk::StartEvent(),
-                        [&watch](const itk::EventObject &)
-                        {
-                          ++watch.Runs;
-                          watch.Start = Clock::now();
-                        });
-    filter->AddObserver(itk::EndEvent(),
-                        [&watch](const itk::EventObject &) { watch.Seconds = SecondsSince(watch.Start); });
-    filter->AddObserver(itk::ProgressEvent(),
-                        [this, filter, &watch, stage](const itk::EventObject &)
-                        {
-                          if (AbortRequested && !filter->GetAbortGenerateData())
-                          {
-                            filter->AbortGenerateDataOn();
-                          }
-                          if (Progress)
-                          {
-                            Progress(watch.From + (watch.To - watch.From) * filter->GetProgress(), stage);
-                          }
-                        });
   }
 
   void
@@ -230,17 +157,13 @@ struct VesselReformationLogic::Internals
   void
   ExtractCenterlines();
   void
-  CheckMemory(const itk::CPRViewGeometry & view) const;
-  void
   ChooseRelaxFilter();
   void
   ConfigurePipeline();
   void
   PlanProgress();
-  void
-  UpdateStage(itk::ProcessObject * filter, const char * stage);
-  void
-  ClearAbortFlags();
+  std::vector<itk::ProcessObject *>
+  Filters() const;
   void
   RefreshOutputs(const StageCounts & now);
 };
@@ -409,8 +332,7 @@ VesselReformationLogic::Internals::CheckSegmentationAgainstVolume()
 void
 VesselReformationLogic::Internals::ExtractCenterlines()
 {
-  ExtractionWatch.From = 0.0;
-  ExtractionWatch.To = 0.0;
+  Monitor.SetShare(detail::Stage::Extraction, 0.0, 0.0);
   if (!SegmentationNodeInput)
   {
     Outputs.ExtractedCenterlines = nullptr;
@@ -419,8 +341,8 @@ VesselReformationLogic::Internals::ExtractCenterlines()
   }
   ConfigureCenterlineExtraction(Extraction, SegmentationMask, SegmentationName(), ExtractionParameters);
   // The extraction takes a fixed share of the progress bar when it runs; the other stages share the rest.
-  ExtractionWatch.To = WillRun(Extraction->GetOutput()) ? 0.3 : 0.0;
-  const unsigned int runsBefore = ExtractionWatch.Runs;
+  Monitor.SetShare(detail::Stage::Extraction, 0.0, detail::WillRun(Extraction->GetOutput()) ? 0.3 : 0.0);
+  const unsigned int runsBefore = Monitor.GetRuns(detail::Stage::Extraction);
   try
   {
     Extraction->Update();
@@ -433,12 +355,13 @@ VesselReformationLogic::Internals::ExtractCenterlines()
     }
     throw InputError(SegmentationName() + ": " + detail::CondenseITKMessage(error));
   }
-  if (AbortRequested)
+  if (Monitor.IsAbortRequested())
   {
     throw Cancelled("centerlines: cancelled");
   }
-  Outputs.Times.Extraction = ExtractionWatch.Runs != runsBefore ? ExtractionWatch.Seconds : 0.0;
-  if (TreeFromExtraction && TreeExtractionRuns == ExtractionWatch.Runs)
+  const unsigned int runs = Monitor.GetRuns(detail::Stage::Extraction);
+  Outputs.Times.Extraction = runs != runsBefore ? Monitor.GetSeconds(detail::Stage::Extraction) : 0.0;
+  if (TreeFromExtraction && TreeExtractionRuns == runs)
   {
     if (VolumeChanged)
     {
@@ -449,7 +372,7 @@ VesselReformationLogic::Internals::ExtractCenterlines()
   Tree = Extraction->GetCenterlineTree();
   NameBranchesByRegion(Tree, SegmentationValues.GetPointer(), SegmentationRegionNames);
   TreeFromExtraction = true;
-  TreeExtractionRuns = ExtractionWatch.Runs;
+  TreeExtractionRuns = runs;
   ConvertedCenterlineNode = nullptr; // a centerline node set later is converted again
   const std::string & name = SegmentationNodeInput->GetName();
   Outputs.ExtractedCenterlines =
@@ -464,38 +387,6 @@ VesselReformationLogic::Internals::ExtractCenterlines()
     Warning(ExtractionWarning, "");
   }
   CheckTreeAgainstVolume();
-}
-
-void
-VesselReformationLogic::Internals::CheckMemory(const itk::CPRViewGeometry & view) const
-{
-  const auto &       size = view.GetSize();
-  const bool         sizeGiven = Parameters.ImageSize[0] > 0;
-  std::ostringstream origin;
-  if (sizeGiven)
-  {
-    origin << "view size = " << size[0] << "," << size[1];
-  }
-  else
-  {
-    origin << "the view of " << size[0] << " x " << size[1] << " pixels (pixel spacing " << view.GetSpacing()[0] << ","
-           << view.GetSpacing()[1] << " mm)";
-  }
-  const char * parameter = sizeGiven ? ParameterName::ViewSize : ParameterName::PixelSpacing;
-  if (size[0] > static_cast<itk::SizeValueType>(INT_MAX) || size[1] > static_cast<itk::SizeValueType>(INT_MAX))
-  {
-    throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
-                     parameter);
-  }
-  const double needed = EstimateMemoryInBytes(size);
-  const double available = AvailableMemoryInBytes();
-  if (needed > available)
-  {
-    throw InputError(origin.str() + ": the images would need about " + Gibibytes(needed) + ", more than the " +
-                       Gibibytes(available) +
-                       " of memory available; choose a smaller view size or a larger pixel spacing",
-                     parameter);
-  }
 }
 
 void
@@ -518,7 +409,7 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
     RelaxFilterType::Pointer filter = TryCreateOpenCLRelaxFilter(device, whyNot);
     if (filter)
     {
-      Watch(filter, RelaxWatch, "relax");
+      Monitor.Watch(filter, detail::Stage::Relax, "relax");
       OpenCLRelax[device] = filter;
     }
     return filter;
@@ -561,78 +452,28 @@ VesselReformationLogic::Internals::ConfigurePipeline()
   RelaxedResample->SetDepth(Relax->GetOutput());
 }
 
-/** Whether updating \a output will run its source: ITK's own test in DataObject::UpdateOutputData. */
-static bool
-WillRun(itk::DataObject * output)
-{
-  output->UpdateOutputInformation();
-  output->SetRequestedRegionToLargestPossibleRegion();
-  output->PropagateRequestedRegion();
-  return output->GetUpdateMTime() < output->GetPipelineMTime() || output->GetDataReleased() ||
-         output->RequestedRegionIsOutsideOfTheBufferedRegion();
-}
-
 void
 VesselReformationLogic::Internals::PlanProgress()
 {
-  // Shares of the progress bar for the stages that will run: relaxation dominates unless N is small.
-  const double relaxWeight = 0.05 + 0.6 * std::min(1.0, static_cast<double>(Parameters.Iterations) / 100.0);
-  StageWatch * watches[4] = { &DepthWatch, &RelaxWatch, &UnfilteredWatch, &RelaxedWatch };
-  const bool   runs[4] = { WillRun(Depth->GetDepthOutput()),
-                           WillRun(Relax->GetOutput()),
-                           WillRun(UnfilteredResample->GetOutput()),
-                           WillRun(RelaxedResample->GetOutput()) };
-  const double weights[4] = { 0.1, relaxWeight, 0.1, 0.1 };
-  const bool   surface = SurfaceEnabled && (!SurfaceValid || runs[1] || runs[3]);
-  double       total = surface ? 0.1 : 0.0;
-  for (int k = 0; k < 4; ++k)
-  {
-    total += runs[k] ? weights[k] : 0.0;
-  }
+  const std::array<bool, 4> runs{ detail::WillRun(Depth->GetDepthOutput()),
+                                  detail::WillRun(Relax->GetOutput()),
+                                  detail::WillRun(UnfilteredResample->GetOutput()),
+                                  detail::WillRun(RelaxedResample->GetOutput()) };
+  const bool                surface = SurfaceEnabled && (!SurfaceValid || runs[1] || runs[3]);
   // After the extraction's share, when it ran.
-  const double base = ExtractionWatch.To;
-  double       at = base;
-  for (int k = 0; k < 4; ++k)
-  {
-    const double share = runs[k] && total > 0.0 ? (1.0 - base) * weights[k] / total : 0.0;
-    watches[k]->From = at;
-    watches[k]->To = at + share;
-    at += share;
-  }
+  Monitor.PlanShares(
+    runs, static_cast<unsigned int>(Parameters.Iterations), surface, Monitor.GetShareEnd(detail::Stage::Extraction));
 }
 
-void
-VesselReformationLogic::Internals::UpdateStage(itk::ProcessObject * filter, const char * stage)
+std::vector<itk::ProcessObject *>
+VesselReformationLogic::Internals::Filters() const
 {
-  try
-  {
-    // Whole images, also when the view's size changed since the previous update.
-    filter->UpdateLargestPossibleRegion();
-  }
-  catch (const itk::ExceptionObject & error)
-  {
-    RethrowFilterError(stage, error);
-  }
-  if (AbortRequested)
-  {
-    throw Cancelled(std::string(stage) + ": cancelled");
-  }
-}
-
-void
-VesselReformationLogic::Internals::ClearAbortFlags()
-{
-  AbortRequested = false;
   std::vector<itk::ProcessObject *> filters = { Extraction, Depth, CPURelax, UnfilteredResample, RelaxedResample };
   for (const auto & entry : OpenCLRelax)
   {
     filters.push_back(entry.second);
   }
-  for (itk::ProcessObject * filter : filters)
-  {
-    // An aborted filter's output was never marked generated, so it reruns next time anyway.
-    filter->SetAbortGenerateData(false);
-  }
+  return filters;
 }
 
 void
@@ -746,7 +587,7 @@ VesselReformationLogic::GetSurfaceEnabled() const
 void
 VesselReformationLogic::SetProgressCallback(ProgressCallback callback)
 {
-  m_Internals->Progress = std::move(callback);
+  m_Internals->Monitor.SetProgressCallback(std::move(callback));
 }
 
 void
@@ -783,16 +624,11 @@ VesselReformationLogic::Update()
   {
     d.ExtractionParameters.Validate();
   }
-  d.AbortRequested = false;
-  d.Running = true;
+  d.Monitor.BeginUpdate();
   struct RunningFlag
   {
     Internals & Logic;
-    ~RunningFlag()
-    {
-      Logic.Running = false;
-      Logic.ClearAbortFlags();
-    }
+    ~RunningFlag() { Logic.Monitor.EndUpdate(Logic.Filters()); }
   } running{ d };
 
   d.Outputs.Times = StageTimes();
@@ -815,27 +651,29 @@ VesselReformationLogic::Update()
             << " mm: " << error.GetDescription();
       throw InputError(stage.str(), ParameterName::PixelSpacing);
     }
-    RethrowFilterError("view", error);
+    detail::RethrowFilterError("view", error);
   }
-  d.CheckMemory(d.Depth->GetView());
+  CheckViewFitsInMemory(d.Depth->GetView(), d.Parameters.ImageSize[0] > 0);
   d.PlanProgress();
 
   const StageCounts before = GetStageExecutionCounts();
   // One filter at a time, so that an abort between stages is seen; ITK reruns only what is out of date.
-  d.UpdateStage(d.Depth, "depth");
-  d.UpdateStage(d.Relax, "relaxation");
-  d.UpdateStage(d.UnfilteredResample, "resample");
-  d.UpdateStage(d.RelaxedResample, "resample");
+  d.Monitor.Run(d.Depth, "depth");
+  d.Monitor.Run(d.Relax, "relaxation");
+  d.Monitor.Run(d.UnfilteredResample, "resample");
+  d.Monitor.Run(d.RelaxedResample, "resample");
   d.Counts = GetStageExecutionCounts();
   const bool resampled =
     d.Counts.UnfilteredSamplings != before.UnfilteredSamplings || d.Counts.RelaxedSamplings != before.RelaxedSamplings;
   d.Counts.Resample = before.Resample + (resampled ? 1 : 0);
   // The time of each stage that ran in this update (0 for the others).
-  d.Outputs.Times.Depth = d.Counts.Depth != before.Depth ? d.DepthWatch.Seconds : 0.0;
-  d.Outputs.Times.Relax = d.Counts.Relax != before.Relax ? d.RelaxWatch.Seconds : 0.0;
+  const detail::StageMonitor & monitor = d.Monitor;
+  d.Outputs.Times.Depth = d.Counts.Depth != before.Depth ? monitor.GetSeconds(detail::Stage::Depth) : 0.0;
+  d.Outputs.Times.Relax = d.Counts.Relax != before.Relax ? monitor.GetSeconds(detail::Stage::Relax) : 0.0;
   d.Outputs.Times.Resample =
-    (d.Counts.UnfilteredSamplings != before.UnfilteredSamplings ? d.UnfilteredWatch.Seconds : 0.0) +
-    (d.Counts.RelaxedSamplings != before.RelaxedSamplings ? d.RelaxedWatch.Seconds : 0.0);
+    (d.Counts.UnfilteredSamplings != before.UnfilteredSamplings ? monitor.GetSeconds(detail::Stage::UnfilteredSampling)
+                                                                : 0.0) +
+    (d.Counts.RelaxedSamplings != before.RelaxedSamplings ? monitor.GetSeconds(detail::Stage::RelaxedSampling) : 0.0);
   d.RefreshOutputs(d.Counts);
 
   if (d.SurfaceEnabled && !d.SurfaceValid)
@@ -854,20 +692,14 @@ VesselReformationLogic::Update()
     d.Outputs.Surface = nullptr;
     d.SurfaceValid = false;
   }
-  if (d.Progress)
-  {
-    d.Progress(1.0, "done");
-  }
+  d.Monitor.ReportProgress(1.0, "done");
   return d.Outputs;
 }
 
 void
 VesselReformationLogic::AbortUpdate()
 {
-  if (m_Internals->Running)
-  {
-    m_Internals->AbortRequested = true;
-  }
+  m_Internals->Monitor.RequestAbort();
 }
 
 CenterlineExtractionFilterType *
@@ -909,12 +741,13 @@ VesselReformationLogic::GetOutputs() const
 StageCounts
 VesselReformationLogic::GetStageExecutionCounts() const
 {
-  StageCounts counts = m_Internals->Counts;
-  counts.Extraction = m_Internals->ExtractionWatch.Runs;
-  counts.Depth = m_Internals->DepthWatch.Runs;
-  counts.Relax = m_Internals->RelaxWatch.Runs;
-  counts.UnfilteredSamplings = m_Internals->UnfilteredWatch.Runs;
-  counts.RelaxedSamplings = m_Internals->RelaxedWatch.Runs;
+  StageCounts                  counts = m_Internals->Counts;
+  const detail::StageMonitor & monitor = m_Internals->Monitor;
+  counts.Extraction = monitor.GetRuns(detail::Stage::Extraction);
+  counts.Depth = monitor.GetRuns(detail::Stage::Depth);
+  counts.Relax = monitor.GetRuns(detail::Stage::Relax);
+  counts.UnfilteredSamplings = monitor.GetRuns(detail::Stage::UnfilteredSampling);
+  counts.RelaxedSamplings = monitor.GetRuns(detail::Stage::RelaxedSampling);
   return counts;
 }
 
@@ -1004,7 +837,7 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   }
   catch (const itk::ExceptionObject & error)
   {
-    RethrowFilterError("relaxation", error);
+    detail::RethrowFilterError("relaxation", error);
   }
   DepthImageType::Pointer relaxed = filter->GetOutput();
   relaxed->DisconnectPipeline();
@@ -1013,33 +846,6 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
     progress(1.0, "done");
   }
   return relaxed;
-}
-
-double
-VesselReformationLogic::EstimateMemoryInBytes(const itk::Size<2> & size)
-{
-  // Per pixel: centerline raster 20 B, depth assignment 9, depth filter outputs 9, relaxation output and its
-  // Jacobi buffer 8, two CPR images 8, six output nodes 21, surface points, scalars and two triangles 84.
-  return BytesPerViewPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]);
-}
-
-double
-VesselReformationLogic::AvailableMemoryInBytes()
-{
-  std::ifstream meminfo("/proc/meminfo");
-  std::string   key;
-  double        kibibytes = 0.0;
-  std::string   unit;
-  while (meminfo >> key >> kibibytes >> unit)
-  {
-    if (key == "MemAvailable:")
-    {
-      return kibibytes * 1024.0;
-    }
-  }
-  const long pages = ::sysconf(_SC_AVPHYS_PAGES);
-  const long pageSize = ::sysconf(_SC_PAGESIZE);
-  return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * pageSize : 1e18;
 }
 
 double

@@ -134,9 +134,6 @@ public:
   using DepthFilterType = itk::CPRDepthImageFilter<DepthImageType>;
   using ResampleFilterType = itk::CPRResampleImageFilter<VolumeImageType, DepthImageType, DepthImageType>;
 
-  /** Bytes of memory one view pixel costs across every stage and output (see EstimateMemoryInBytes). */
-  static constexpr double BytesPerViewPixel = 160.0;
-
   VesselReformationLogic();
   ~VesselReformationLogic();
   VesselReformationLogic(const VesselReformationLogic &) = delete;
@@ -269,16 +266,6 @@ public:
                   std::vector<std::string> &    warnings,
                   std::string *                 backendUsed = nullptr,
                   std::string *                 backendReason = nullptr);
-
-  /** \param size a view's size in pixels.
-   * \return the bytes the reformation of that view needs: depth, mask, labels, relaxation buffers, both CPRs,
-   * the output nodes and the surface. */
-  static double
-  EstimateMemoryInBytes(const itk::Size<2> & size);
-  /** \return the memory this process may still allocate, in bytes (MemAvailable of /proc/meminfo, else the
-   * free physical pages). */
-  static double
-  AvailableMemoryInBytes();
 
   /** \param tree centerlines in LPS.
    * \param volume the volume.

@@ -1,0 +1,85 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrMemoryBudget.h"
+
+#include "itkCPRViewGeometry.h"
+#include "vrInputError.h"
+#include "vrParameterName.h"
+
+#include <climits>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+namespace vr
+{
+namespace
+{
+std::string
+Gibibytes(double bytes)
+{
+  std::ostringstream text;
+  text << std::setprecision(3) << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
+  return text.str();
+}
+} // namespace
+
+double
+EstimateReformationBytes(const itk::Size<2> & size)
+{
+  // Per pixel: centerline raster 20 B, depth assignment 9, depth filter outputs 9, relaxation output and its
+  // Jacobi buffer 8, two CPR images 8, six output nodes 21, surface points, scalars and two triangles 84.
+  return BytesPerViewPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]);
+}
+
+double
+AvailableMemoryInBytes()
+{
+  std::ifstream meminfo("/proc/meminfo");
+  std::string   key;
+  double        kibibytes = 0.0;
+  std::string   unit;
+  while (meminfo >> key >> kibibytes >> unit)
+  {
+    if (key == "MemAvailable:")
+    {
+      return kibibytes * 1024.0;
+    }
+  }
+  const long pages = ::sysconf(_SC_AVPHYS_PAGES);
+  const long pageSize = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * pageSize : 1e18;
+}
+
+void
+CheckViewFitsInMemory(const itk::CPRViewGeometry & view, bool sizeGiven)
+{
+  const auto &       size = view.GetSize();
+  std::ostringstream origin;
+  if (sizeGiven)
+  {
+    origin << "view size = " << size[0] << "," << size[1];
+  }
+  else
+  {
+    origin << "the view of " << size[0] << " x " << size[1] << " pixels (pixel spacing " << view.GetSpacing()[0] << ","
+           << view.GetSpacing()[1] << " mm)";
+  }
+  const char * parameter = sizeGiven ? ParameterName::ViewSize : ParameterName::PixelSpacing;
+  if (size[0] > static_cast<itk::SizeValueType>(INT_MAX) || size[1] > static_cast<itk::SizeValueType>(INT_MAX))
+  {
+    throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
+                     parameter);
+  }
+  const double needed = EstimateReformationBytes(size);
+  const double available = AvailableMemoryInBytes();
+  if (needed > available)
+  {
+    throw InputError(origin.str() + ": the images would need about " + Gibibytes(needed) + ", more than the " +
+                       Gibibytes(available) +
+                       " of memory available; choose a smaller view size or a larger pixel spacing",
+                     parameter);
+  }
+}
+} // namespace vr
