@@ -26,11 +26,24 @@ Gibibytes(double bytes)
 } // namespace
 
 double
-EstimateReformationBytes(const itk::Size<2> & size)
+EstimateReformationBytes(const itk::Size<2> & size, itk::BilateralDepthRelaxSolver solver, bool surface)
 {
-  // Per pixel: centerline raster 20 B, depth assignment 9, depth filter outputs 9, relaxation output and its
-  // Jacobi buffer 8, two CPR images 8, six output nodes 21, surface points, scalars and two triangles 84.
-  return BytesPerViewPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]);
+  // Bytes per view pixel at the peak of an update, measured as the growth of the peak resident memory
+  // (Testing/Tools/MeasureReformationMemory, the same at 256 x 512, 512 x 1024 and 1024 x 2048 within 2 %):
+  // - every update: the centerline raster, the depth assignment, the depth filter's outputs, the relaxed depth and
+  //   the Jacobi passes' second buffer, both CPR images and the output nodes of all of them: 92;
+  // - the steady solver's workspace instead of the Jacobi buffer (its multigrid levels, regions and CG vectors): 74;
+  // - the cut surface: points, scalars and two triangles a pixel: 84.
+  double perPixel = 92.0;
+  if (solver == itk::BilateralDepthRelaxSolver::Steady)
+  {
+    perPixel += 74.0;
+  }
+  if (surface)
+  {
+    perPixel += 84.0;
+  }
+  return perPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]);
 }
 
 double
@@ -53,7 +66,10 @@ AvailableMemoryInBytes()
 }
 
 void
-CheckViewFitsInMemory(const itk::CPRViewGeometry & view, bool sizeGiven)
+CheckViewFitsInMemory(const itk::CPRViewGeometry &   view,
+                      bool                           sizeGiven,
+                      itk::BilateralDepthRelaxSolver solver,
+                      bool                           surface)
 {
   const auto &       size = view.GetSize();
   std::ostringstream origin;
@@ -72,7 +88,7 @@ CheckViewFitsInMemory(const itk::CPRViewGeometry & view, bool sizeGiven)
     throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
                      parameter);
   }
-  const double needed = EstimateReformationBytes(size);
+  const double needed = EstimateReformationBytes(size, solver, surface);
   const double available = AvailableMemoryInBytes();
   if (needed > available)
   {
