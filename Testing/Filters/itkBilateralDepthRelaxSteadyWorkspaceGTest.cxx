@@ -119,7 +119,7 @@ CountSolve(unsigned int width, unsigned int height, unsigned int threads)
 } // namespace
 
 // The documented figure (the header's "about 94 bytes per pixel at 512 x 1024") and the function agree with what a
-// workspace holds, within 10 %; a solve allocates little beyond it (thread team, a dense coarsest system).
+// workspace holds, within 10 %; a solve allocates little beyond it (its thread team).
 TEST(BilateralDepthRelaxSteadyWorkspace, WorkspaceBytesMatchTheAllocatedBytes)
 {
   for (const auto & size : { std::pair<unsigned int, unsigned int>{ 512, 1024 }, { 256, 768 }, { 97, 61 } })
