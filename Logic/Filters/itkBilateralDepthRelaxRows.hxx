@@ -5,6 +5,7 @@
 #ifndef itkBilateralDepthRelaxRows_hxx
 #define itkBilateralDepthRelaxRows_hxx
 
+#include "itkBilateralDepthRelaxRangeWeight.h"
 #include "itkBilateralDepthRelaxRows.h"
 
 #include <cstddef>
@@ -22,22 +23,10 @@ namespace detail::BilateralDepthRelaxRows
 {
 namespace
 {
-/** 2^f for |f| <= 1/2: degree-5 minimax polynomial, relative error 7.5e-8 (2.3e-7 after float rounding). */
-template<typename TFloat>
-VR_ALWAYS_INLINE TFloat
-TwoToTheFraction(TFloat f)
-{
-  TFloat p = f * 1.327647198e-3f + 9.675541334e-3f;
-  p = p * f + 5.550713274e-2f;
-  p = p * f + 2.402211972e-1f;
-  p = p * f + 6.931469671e-1f;
-  return p * f + 1.000000072f;
-}
-
 /** 2^u for u = -a log2(e) x^2, that is R = exp(-a x^2), and 0 for u < -126, that is a x^2 > -ln(FLT_MIN) (the
  * filter's underflow rule; -log2(FLT_MIN) is exactly 126). u = n + f with n an integer and |f| <= 1/2 (f exact);
- * 2^f by a degree-5 minimax polynomial (relative error 7.5e-8, 2.3e-7 after float rounding); 2^n built in the
- * exponent bits, a normal float since n >= -126 on the kept range. */
+ * 2^f by TwoToTheFraction (itkBilateralDepthRelaxRangeWeight.h, the steady solver's too); 2^n built in the exponent
+ * bits, a normal float since n >= -126 on the kept range. */
 template<typename TFloat, typename TBits>
 VR_ALWAYS_INLINE TFloat
 PowerOfTwoFromBits(TFloat u)

@@ -90,8 +90,8 @@ public:
     double Residual{ 0.0 };
   };
 
-  /** Buffers kept from one solve to the next (about 62 bytes per pixel): reusing one spares allocating and first
-   * touching them. One solve at a time per workspace. */
+  /** Buffers kept from one solve to the next (about 94 bytes per pixel at 512 x 1024; GetWorkspaceBytes says how
+   * many for a size): reusing one spares allocating and first touching them. One solve at a time per workspace. */
   class Workspace
   {
   public:
@@ -124,6 +124,13 @@ public:
         unsigned int             threads = 1,
         const ProgressCallback & progress = ProgressCallback(),
         Workspace *              workspace = nullptr);
+
+  /** The bytes a solve of a \a width x \a height map with \a threads threads allocates (its workspace): 56 per
+   * padded pixel for the depths and the finest grid's vectors, 12 for its operator, 64 per point of each coarser
+   * level (about a third as many points in all), and rows. The floating regions add 48 bytes for each run of pixels
+   * beyond one per row that vanishing weights split a row into. */
+  static std::size_t
+  GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads = 1);
 
   /** The most outer iterations a solve may take. */
   static constexpr unsigned int MaximumOuterIterations = 1000;

@@ -1,0 +1,147 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "itkBilateralDepthRelaxSteadyOuterLoop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace itk::detail::BilateralDepthRelaxSteady
+{
+OuterLoop::Report
+OuterLoop::Run(double tolerance, const ProgressCallback & progress)
+{
+  m_Report = Report();
+  m_Signature = m_Field.ComputeWeights();
+  bool changed = false;
+  m_Report.FloatingPixels = m_Field.ClassifyRegions(changed);
+  if (m_Report.FloatingPixels > 0)
+  {
+    m_Signature = m_Field.ComputeWeights();
+  }
+  m_Rebuild = true;
+  m_Newton = false;
+  double previous = std::numeric_limits<double>::infinity();
+  for (unsigned int outer = 0;; ++outer)
+  {
+    if (outer > 0)
+    {
+      UpdateWeightsAndRegions();
+    }
+    // The Hessian while Newton steps go on; an outer iteration that turns to them below assembles it then.
+    const double residual = m_Field.Assemble(m_Newton);
+    m_Report.Residual = residual;
+    m_Report.OuterIterations = outer;
+    if (outer == 0)
+    {
+      m_First = residual;
+      m_Done = 0.0;
+    }
+    if (progress)
+    {
+      progress(Progress(residual, tolerance));
+    }
+    if (residual <= tolerance)
+    {
+      break;
+    }
+    if (outer == MaximumOuterIterations)
+    {
+      throw std::runtime_error("BilateralDepthRelaxSteadySolver: the residual is still " + std::to_string(residual) +
+                               " mm after " + std::to_string(outer) + " outer iterations");
+    }
+    if (m_Rebuild)
+    {
+      m_Multigrid.Build();
+      ++m_Report.HierarchyBuilds;
+      m_Rebuild = false;
+    }
+    // Newton steps once lagged weights have slowed down, for as long as they are taken.
+    const bool hessianAssembled = m_Newton;
+    m_Newton = !m_Field.Isotropic && (m_Newton || residual > NewtonAfterReduction * previous);
+    previous = residual;
+    if (m_Newton && !hessianAssembled)
+    {
+      m_Field.Assemble(true);
+    }
+    Step(std::max(InnerReduction * residual, 0.5 * tolerance));
+    m_Rebuild = m_Correction.GetLastCycles() > RebuildAfterCycles;
+  }
+  m_Report.Cycles = m_Correction.GetCycles();
+  return m_Report;
+}
+
+void
+OuterLoop::UpdateWeightsAndRegions()
+{
+  const std::uint64_t next = m_Field.ComputeWeights();
+  if (next == m_Signature)
+  {
+    return;
+  }
+  m_Signature = next;
+  bool changed = false;
+  m_Report.FloatingPixels = m_Field.ClassifyRegions(changed);
+  if (changed)
+  {
+    // Floating regions took their mean, or former ones joined anchored regions: new weights, new hierarchy.
+    m_Signature = m_Field.ComputeWeights();
+    m_Rebuild = true;
+  }
+}
+
+double
+OuterLoop::Progress(double residual, double tolerance)
+{
+  // The residual need not fall at every outer iteration; the progress never goes back.
+  const double fraction =
+    residual <= tolerance ? 1.0 : std::clamp(std::log(m_First / residual) / std::log(m_First / tolerance), 0.0, 1.0);
+  m_Done = std::max(m_Done, fraction);
+  return m_Done;
+}
+
+void
+OuterLoop::Step(double target)
+{
+  if (!m_Newton)
+  {
+    m_Correction.Solve(target, false);
+    m_Field.ApplyCorrection(1.0f);
+  }
+  else if (m_Correction.Solve(target, true) && m_Field.EnergyChange(1.0f) <= 0.0)
+  {
+    m_Field.ApplyCorrection(1.0f);
+  }
+  else
+  {
+    m_Newton = false;
+    SearchStep(target);
+  }
+}
+
+void
+OuterLoop::SearchStep(double target)
+{
+  float        curvatureStep = 0.0f;
+  const double curvatureChange =
+    m_Correction.MetNegativeCurvature() ? m_Correction.SearchNegativeCurvature(curvatureStep) : 0.0;
+  if (curvatureStep != 0.0f)
+  {
+    m_Field.CopyRows(m_Field.Delta, m_Field.Saved);
+  }
+  m_Field.Assemble(false);
+  m_Correction.Solve(target, false);
+  float        laggedStep = 1.0f;
+  const double laggedChange = m_Correction.SearchLaggedStep(laggedStep);
+  if (curvatureStep != 0.0f && curvatureChange < laggedChange)
+  {
+    m_Field.CopyRows(m_Field.Saved, m_Field.Delta);
+    m_Field.ApplyCorrection(curvatureStep);
+  }
+  else
+  {
+    m_Field.ApplyCorrection(laggedStep);
+  }
+}
+} // namespace itk::detail::BilateralDepthRelaxSteady

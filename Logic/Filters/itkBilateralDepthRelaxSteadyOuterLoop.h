@@ -1,0 +1,89 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The steady solver's outer loop: lagged-weights (reweighting) steps while they halve the residual, then Newton steps
+// on the energy's own curvature while they lower the energy, with line searches where they do not. Internal
+// (namespace itk::detail), not installed; see itkBilateralDepthRelaxSteadySolver.h for the method.
+#ifndef itkBilateralDepthRelaxSteadyOuterLoop_h
+#define itkBilateralDepthRelaxSteadyOuterLoop_h
+
+#include "itkBilateralDepthRelaxSteadyCorrection.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+namespace itk::detail::BilateralDepthRelaxSteady
+{
+/** Outer iterations on a loaded Field until its residual falls below a tolerance. */
+class OuterLoop
+{
+public:
+  /** What the iterations did (BilateralDepthRelaxSteadySolver::Report's fields). */
+  struct Report
+  {
+    unsigned int OuterIterations{ 0 };
+    unsigned int Cycles{ 0 };
+    unsigned int HierarchyBuilds{ 0 };
+    std::size_t  FloatingPixels{ 0 };
+    double       Residual{ 0.0 };
+  };
+  using ProgressCallback = std::function<void(double fraction)>;
+
+  /** The most outer iterations (BilateralDepthRelaxSteadySolver::MaximumOuterIterations). */
+  static constexpr unsigned int MaximumOuterIterations = 1000;
+
+  /** Each outer iteration's conjugate gradients stop once the residual has fallen this much. */
+  static constexpr double InnerReduction = 0.1;
+
+  /** More than this many V-cycles in one outer iteration rebuild the hierarchy from the current weights before the
+   * next. */
+  static constexpr unsigned int RebuildAfterCycles = 4;
+
+  /** Outer iterations take Newton steps from the first one whose residual has not fallen below this fraction of the
+   * previous one. */
+  static constexpr double NewtonAfterReduction = 0.5;
+
+  OuterLoop(Field & field, Multigrid & multigrid, Correction & correction)
+    : m_Field(field)
+    , m_Multigrid(multigrid)
+    , m_Correction(correction)
+  {
+  }
+
+  /** Iterates until the residual is at most \a tolerance; calls \a progress (when set) after each outer iteration.
+   * Throws std::runtime_error after MaximumOuterIterations. */
+  Report
+  Run(double tolerance, const ProgressCallback & progress);
+
+private:
+  /** The weights at the current depths and, where the pattern of vanishing ones changed, the regions again; sets
+   * m_Rebuild when the activity changed. */
+  void
+  UpdateWeightsAndRegions();
+
+  /** The fraction of the way done, from the logarithm of the residual, never going back. */
+  double
+  Progress(double residual, double tolerance);
+
+  /** One outer iteration's step towards \a target (max |r| / C): a lagged-weights step, or a Newton step when
+   * m_Newton says so and it lowers the energy, else a line search. Updates m_Newton. */
+  void
+  Step(double target);
+
+  /** The better of a step along the direction of negative curvature the last Newton solve met and a stretched
+   * lagged-weights step (the Newton step was not taken). */
+  void
+  SearchStep(double target);
+
+  Field &       m_Field;
+  Multigrid &   m_Multigrid;
+  Correction &  m_Correction;
+  Report        m_Report;
+  std::uint64_t m_Signature{ 0 };
+  bool          m_Rebuild{ true };
+  bool          m_Newton{ false };
+  double        m_First{ 0.0 };
+  double        m_Done{ 0.0 };
+};
+} // namespace itk::detail::BilateralDepthRelaxSteady
+
+#endif

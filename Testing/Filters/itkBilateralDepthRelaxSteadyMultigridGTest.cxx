@@ -1,0 +1,350 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The steady solver's black-box multigrid as an operator of its own, in the manner of RTK's operator tests: the
+// Galerkin coarse operator against the dense product P^T A P, restriction against the transpose of prolongation (both
+// read out column by column through the multigrid's own Prolong and Restrict), and a V-cycle contracting the error
+// of the finest problem, measured against a dense solve.
+#include "itkBilateralDepthRelaxSteadyMultigrid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+namespace
+{
+namespace Steady = itk::detail::BilateralDepthRelaxSteady;
+
+using Dense = std::vector<std::vector<double>>;
+
+/** A finest level of \a width x \a height as the solver assembles it: random weights in [lightest, 1] on every edge, a
+ * fraction \a cuts of them \a cutWeight instead (0: a weight that vanished across a depth jump), some points fixed
+ * (inactive, C = 0, no couplings; their weights still add to their neighbours' C as Dirichlet values). */
+struct Problem
+{
+  Steady::BandBuffers      BandBuffers;
+  Steady::MultigridBuffers MultigridBuffers;
+  std::vector<float>       X, B;
+  Steady::Bands            Bands;
+  Steady::Multigrid        Multigrid;
+
+  Problem(long         width,
+          long         height,
+          unsigned int seed,
+          double       cuts = 0.1,
+          float        cutWeight = 0.0f,
+          unsigned int threads = 1,
+          float        lightest = 0.05f)
+    : X(Steady::PaddedSize(width, height), 0.0f)
+    , B(Steady::PaddedSize(width, height), 0.0f)
+    , Bands(BandBuffers, threads, height, Steady::PaddedStride(width))
+    , Multigrid(MultigridBuffers, Bands, width, height)
+  {
+    Steady::Level & l = Multigrid.Finest();
+    l.X = X.data();
+    l.B = B.data();
+    std::mt19937                          generator(seed);
+    std::uniform_real_distribution<float> weight(lightest, 1.0f);
+    std::bernoulli_distribution           cut(cuts);
+    std::bernoulli_distribution           fixed(0.05);
+    std::vector<float>                    right(l.Size(), 0.0f), up(l.Size(), 0.0f), active(l.Size(), 0.0f);
+    for (long y = 0; y < height; ++y)
+    {
+      for (long x = 0; x < width; ++x)
+      {
+        const long  p = l.At(x, y);
+        const float toRight = cut(generator) ? cutWeight : weight(generator);
+        const float toAbove = cut(generator) ? cutWeight : weight(generator);
+        right[p] = x + 1 < width ? toRight : 0.0f;
+        up[p] = y + 1 < height ? toAbove : 0.0f;
+        active[p] = fixed(generator) ? 0.0f : 1.0f;
+      }
+    }
+    const long s = l.Stride;
+    for (long y = 0; y < height; ++y)
+    {
+      for (long x = 0; x < width; ++x)
+      {
+        const long p = l.At(x, y);
+        l.C[p] = (right[p] + right[p - 1] + up[p] + up[p - s]) * active[p];
+        l.E[p] = right[p] * active[p] * active[p + 1];
+        l.N[p] = up[p] * active[p] * active[p + s];
+      }
+    }
+  }
+
+  /** Level \a k's points in order: (x, y) -> y * Width + x. */
+  static long
+  Index(const Steady::Level & l, long x, long y)
+  {
+    return y * l.Width + x;
+  }
+};
+
+/** The dense matrix of level \a l's stencil, read from its storage as Level documents it. */
+Dense
+DenseOperator(const Steady::Level & l)
+{
+  const long n = l.Width * l.Height;
+  Dense      a(n, std::vector<double>(n, 0.0));
+  auto       couple = [&](long x, long y, long qx, long qy, float w)
+  {
+    if (qx >= 0 && qx < l.Width && qy >= 0 && qy < l.Height)
+    {
+      a[Problem::Index(l, x, y)][Problem::Index(l, qx, qy)] -= w;
+      a[Problem::Index(l, qx, qy)][Problem::Index(l, x, y)] -= w;
+    }
+  };
+  for (long y = 0; y < l.Height; ++y)
+  {
+    for (long x = 0; x < l.Width; ++x)
+    {
+      const long p = l.At(x, y);
+      a[Problem::Index(l, x, y)][Problem::Index(l, x, y)] += l.C[p];
+      couple(x, y, x + 1, y, l.E[p]);
+      couple(x, y, x, y + 1, l.N[p]);
+      if (l.NinePoint)
+      {
+        couple(x, y, x + 1, y + 1, l.NE[p]);
+        couple(x, y, x - 1, y + 1, l.NW[p]);
+      }
+    }
+  }
+  return a;
+}
+
+/** P from level k + 1 to level k, column by column: X_k = 0, X_{k+1} = a unit vector, Prolong. */
+Dense
+DenseProlongation(Problem & problem, std::size_t k)
+{
+  auto &                   levels = problem.MultigridBuffers.Levels;
+  Steady::Level &          f = levels[k];
+  Steady::Level &          c = levels[k + 1];
+  const long               n = f.Width * f.Height;
+  const long               m = c.Width * c.Height;
+  Dense                    p(n, std::vector<double>(m, 0.0));
+  const std::vector<float> keepX(f.X, f.X + f.Size());
+  for (long J = 0; J < c.Height; ++J)
+  {
+    for (long I = 0; I < c.Width; ++I)
+    {
+      std::fill(f.X, f.X + f.Size(), 0.0f);
+      std::fill(c.X, c.X + c.Size(), 0.0f);
+      c.X[c.At(I, J)] = 1.0f;
+      problem.Multigrid.Prolong(k);
+      for (long y = 0; y < f.Height; ++y)
+      {
+        for (long x = 0; x < f.Width; ++x)
+        {
+          p[Problem::Index(f, x, y)][Problem::Index(c, I, J)] = f.X[f.At(x, y)];
+        }
+      }
+    }
+  }
+  std::copy(keepX.begin(), keepX.end(), f.X);
+  return p;
+}
+
+Dense
+TransposeTimes(const Dense & p, const Dense & a, const Dense & q)
+{
+  const std::size_t n = p.size();
+  const std::size_t m = p[0].size();
+  Dense             aq(n, std::vector<double>(m, 0.0));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t k = 0; k < n; ++k)
+      if (a[i][k] != 0.0)
+        for (std::size_t j = 0; j < m; ++j)
+          aq[i][j] += a[i][k] * q[k][j];
+  Dense result(m, std::vector<double>(m, 0.0));
+  for (std::size_t i = 0; i < m; ++i)
+    for (std::size_t k = 0; k < n; ++k)
+      if (p[k][i] != 0.0)
+        for (std::size_t j = 0; j < m; ++j)
+          result[i][j] += p[k][i] * aq[k][j];
+  return result;
+}
+
+void
+ExpectGalerkin(Problem & problem, std::size_t k)
+{
+  const auto & levels = problem.MultigridBuffers.Levels;
+  const Dense  p = DenseProlongation(problem, k);
+  const Dense  expected = TransposeTimes(p, DenseOperator(levels[k]), p);
+  const Dense  coarse = DenseOperator(levels[k + 1]);
+  double       largest = 0.0;
+  for (const auto & row : expected)
+    for (const double value : row)
+      largest = std::max(largest, std::abs(value));
+  ASSERT_GT(largest, 0.0);
+  std::size_t nonZero = 0;
+  for (std::size_t i = 0; i < expected.size(); ++i)
+  {
+    for (std::size_t j = 0; j < expected.size(); ++j)
+    {
+      // Float storage of double sums; a diagonal that cancels to <= 0 is stored as 0 (an inactive point).
+      const double reference = i == j && expected[i][j] <= 1e-6 * largest ? 0.0 : expected[i][j];
+      EXPECT_NEAR(coarse[i][j], reference, 1e-5 * largest) << "level " << k + 1 << " entry (" << i << ", " << j << ")";
+      nonZero += reference != 0.0 && i != j;
+    }
+  }
+  EXPECT_GT(nonZero, expected.size()) << "a 9-point stencil couples each point to several";
+}
+
+/** Solves a x = b by Gaussian elimination with partial pivoting (a is non-singular here). */
+std::vector<double>
+DenseSolve(Dense a, std::vector<double> b)
+{
+  const std::size_t n = b.size();
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    std::size_t pivot = k;
+    for (std::size_t i = k + 1; i < n; ++i)
+      if (std::abs(a[i][k]) > std::abs(a[pivot][k]))
+        pivot = i;
+    std::swap(a[k], a[pivot]);
+    std::swap(b[k], b[pivot]);
+    for (std::size_t i = k + 1; i < n; ++i)
+    {
+      const double factor = a[i][k] / a[k][k];
+      for (std::size_t j = k; j < n; ++j)
+        a[i][j] -= factor * a[k][j];
+      b[i] -= factor * b[k];
+    }
+  }
+  std::vector<double> x(n, 0.0);
+  for (std::size_t i = n; i-- > 0;)
+  {
+    double value = b[i];
+    for (std::size_t j = i + 1; j < n; ++j)
+      value -= a[i][j] * x[j];
+    x[i] = value / a[i][i];
+  }
+  return x;
+}
+} // namespace
+
+// A_c = P^T A P from the 5-point finest level to the first coarse level, and from that 9-point level to the next.
+TEST(BilateralDepthRelaxSteadyMultigrid, GalerkinCoarseOperatorIsPTransposeAP)
+{
+  for (const unsigned int seed : { 1u, 2u })
+  {
+    Problem problem(23, 19, seed);
+    problem.Multigrid.Build();
+    ASSERT_GE(problem.Multigrid.GetLevelCount(), 3u);
+    ExpectGalerkin(problem, 0);
+    ExpectGalerkin(problem, 1);
+  }
+}
+
+// Restrict with X = 0 gives B_c = P^T B_f: a unit right-hand side at fine point p gives column p of P^T, which must be
+// row p of P (read out through Prolong).
+TEST(BilateralDepthRelaxSteadyMultigrid, RestrictionIsTheTransposeOfProlongation)
+{
+  Problem problem(21, 17, 3);
+  problem.Multigrid.Build();
+  auto & levels = problem.MultigridBuffers.Levels;
+  for (std::size_t k = 0; k + 1 < problem.Multigrid.GetLevelCount(); ++k)
+  {
+    Steady::Level & f = levels[k];
+    Steady::Level & c = levels[k + 1];
+    const Dense     p = DenseProlongation(problem, k);
+    double          largest = 0.0;
+    std::fill(f.X, f.X + f.Size(), 0.0f);
+    for (long y = 0; y < f.Height; ++y)
+    {
+      for (long x = 0; x < f.Width; ++x)
+      {
+        std::fill(f.B, f.B + f.Size(), 0.0f);
+        f.B[f.At(x, y)] = 1.0f;
+        problem.Multigrid.Restrict(k);
+        for (long J = 0; J < c.Height; ++J)
+        {
+          for (long I = 0; I < c.Width; ++I)
+          {
+            const double expected = p[Problem::Index(f, x, y)][Problem::Index(c, I, J)];
+            largest = std::max(largest, expected);
+            ASSERT_FLOAT_EQ(c.B[c.At(I, J)], static_cast<float>(expected))
+              << "level " << k << " point (" << x << ", " << y << "), coarse (" << I << ", " << J << ")";
+          }
+        }
+      }
+    }
+    EXPECT_GT(largest, 0.0) << "level " << k << ": P is not empty";
+  }
+}
+
+// x <- x + M^-1 (b - A x) with one V-cycle as M^-1: the error in the energy norm falls by a factor each cycle: on
+// equal weights (the Laplacian: to a quarter of the error or less), on weights that vary
+// twentyfold from edge to edge, and with a tenth of the edges a thousand times weaker still (depth jumps), where the
+// interpolation must follow the weights. Every active region touches a fixed pixel, so A is not singular.
+TEST(BilateralDepthRelaxSteadyMultigrid, VCycleContractsTheError)
+{
+  struct Case
+  {
+    double       Cuts;
+    float        CutWeight;
+    unsigned int Threads;
+    float        Lightest;
+    double       Factor;
+  };
+  for (const Case & c : { Case{ 0.0, 0.0f, 1, 1.0f, 0.3 },
+                          Case{ 0.0, 0.0f, 1, 0.05f, 0.6 },
+                          Case{ 0.1, 1e-3f, 1, 0.05f, 0.75 },
+                          Case{ 0.1, 1e-3f, 3, 0.05f, 0.75 } })
+  {
+    const unsigned int               threads = c.Threads;
+    Problem                          problem(37, 29, 4, c.Cuts, c.CutWeight, threads, c.Lightest);
+    Steady::Level &                  l = problem.Multigrid.Finest();
+    const Dense                      a = DenseOperator(l);
+    const long                       n = l.Width * l.Height;
+    std::mt19937                     generator(7);
+    std::normal_distribution<double> normal;
+    std::vector<double>              b(n, 0.0);
+    for (long y = 0; y < l.Height; ++y)
+      for (long x = 0; x < l.Width; ++x)
+        b[Problem::Index(l, x, y)] = l.C[l.At(x, y)] > 0.0f ? normal(generator) : 0.0;
+    // The inactive points' rows are 0: solve on the active ones, whose x the cycle keeps 0 elsewhere.
+    Dense active = a;
+    for (long i = 0; i < n; ++i)
+      if (a[i][i] == 0.0)
+        active[i][i] = 1.0;
+    const std::vector<double> solution = DenseSolve(active, b);
+    problem.Multigrid.Build();
+    std::vector<double> x(n, 0.0);
+    auto                energyError = [&]()
+    {
+      double sum = 0.0;
+      for (long i = 0; i < n; ++i)
+        for (long j = 0; j < n; ++j)
+          sum += (x[i] - solution[i]) * a[i][j] * (x[j] - solution[j]);
+      return std::sqrt(sum);
+    };
+    double error = energyError();
+    for (int cycle = 0; cycle < 4; ++cycle)
+    {
+      for (long y = 0; y < l.Height; ++y)
+      {
+        for (long xi = 0; xi < l.Width; ++xi)
+        {
+          const long i = Problem::Index(l, xi, y);
+          double     r = b[i];
+          for (long j = 0; j < n; ++j)
+            r -= a[i][j] * x[j];
+          l.B[l.At(xi, y)] = static_cast<float>(r);
+        }
+      }
+      problem.Multigrid.Cycle();
+      for (long y = 0; y < l.Height; ++y)
+        for (long xi = 0; xi < l.Width; ++xi)
+          x[Problem::Index(l, xi, y)] += l.X[l.At(xi, y)];
+      const double next = energyError();
+      EXPECT_LT(next, c.Factor * error) << threads << " threads, cycle " << cycle;
+      std::cout << "weights from " << c.Lightest << ", cuts " << c.Cuts << ", " << threads << " threads, cycle "
+                << cycle << ": error in the energy norm " << next << ", " << next / error << " of the previous"
+                << std::endl;
+      error = next;
+    }
+  }
+}

@@ -1,0 +1,154 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The steady solver's grid, bands and row kernels alone: the range weight against std::exp and its underflow rule,
+// a row's weights and their signature, the operator and residual rows against the stencil written out, and the
+// bands' sums, which must not depend on the team's size.
+#include "itkBilateralDepthRelaxRangeWeight.h"
+#include "itkBilateralDepthRelaxSteadyGrid.h"
+#include "itkBilateralDepthRelaxSteadyRows.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cfloat>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+namespace Steady = itk::detail::BilateralDepthRelaxSteady;
+
+constexpr double Anisotropy = 1.0 / 9.0;
+
+float
+ScaleOf(double anisotropy)
+{
+  return static_cast<float>(std::sqrt(anisotropy / std::log(2.0)));
+}
+} // namespace
+
+// R(x) = exp(-a x^2) where a x^2 <= -ln(FLT_MIN) (about 87.34), exactly 0 beyond (the filter's underflow rule).
+// The polynomial's error is 3e-7 relative; forming u = -(scale x)^2 in float (scale, the product and the square
+// each rounded) moves u by up to about 3e-7 |u|, so R by 3e-7 |u| ln 2 relative.
+TEST(BilateralDepthRelaxSteadyRows, RangeWeightIsTheGaussianAndVanishesBeyondTheUnderflow)
+{
+  const float  scale = ScaleOf(Anisotropy);
+  const double limit = std::sqrt(-std::log(static_cast<double>(FLT_MIN)) / Anisotropy);
+  for (double x = -40.0; x <= 40.0; x += 0.01)
+  {
+    const float  weight = itk::detail::RangeWeight(static_cast<float>(x), scale);
+    const double exact = std::exp(-Anisotropy * static_cast<float>(x) * static_cast<float>(x));
+    if (std::abs(x) < limit - 0.01)
+    {
+      const double u = Anisotropy * x * x / std::log(2.0);
+      EXPECT_NEAR(weight, exact, (3e-7 + 3e-7 * u * std::log(2.0)) * exact) << "x = " << x;
+    }
+    else if (std::abs(x) > limit + 0.01)
+    {
+      EXPECT_EQ(weight, 0.0f) << "x = " << x;
+    }
+  }
+  EXPECT_FLOAT_EQ(itk::detail::RangeWeight(0.0f, scale), 1.0f); // 1.000000072 rounded, one ulp above 1
+}
+
+// Weights to the right and to the row below; the last column has no right edge; a missing row below gives none; an
+// isotropic row weighs every edge 1. The signature counts the vanishing edges and sums their columns (2x + 1 right,
+// 2x + 2 down).
+TEST(BilateralDepthRelaxSteadyRows, WeightRowAndItsSignature)
+{
+  const long          width = 5;
+  std::vector<double> d{ 0.0, 0.0, 50.0, 50.0, 50.0 };
+  std::vector<double> below{ 0.0, 1.0, 50.0, 0.0, 50.0 };
+  std::vector<float>  right(width, -1.0f), down(width, -1.0f);
+  const float         scale = ScaleOf(Anisotropy);
+  const auto signature = Steady::WeightRow(right.data(), down.data(), d.data(), below.data(), scale, false, width);
+  EXPECT_FLOAT_EQ(right[0], 1.0f);
+  EXPECT_EQ(right[1], 0.0f) << "a 50 mm jump";
+  EXPECT_FLOAT_EQ(right[2], 1.0f);
+  EXPECT_EQ(right[4], 0.0f) << "no edge beyond the last column";
+  EXPECT_NEAR(down[1], std::exp(-Anisotropy), 3e-7);
+  EXPECT_EQ(down[3], 0.0f);
+  // Vanishing: right edge at x = 1 (column sum 3), down at x = 3 (8).
+  EXPECT_EQ(signature, (std::uint64_t{ 2 } << 32) + 3 + 8);
+  Steady::WeightRow(right.data(), down.data(), d.data(), nullptr, scale, true, width);
+  EXPECT_EQ(right, (std::vector<float>{ 1.0f, 1.0f, 1.0f, 1.0f, 0.0f }));
+  EXPECT_EQ(down, std::vector<float>(width, 0.0f));
+}
+
+// A v and b - A v on a 5-point row, against the stencil (A v)_p = C_p v_p - sum_q w_pq v_q written out.
+TEST(BilateralDepthRelaxSteadyRows, OperatorAndResidualRowsFollowTheStencil)
+{
+  const long                            width = 7;
+  const long                            stride = Steady::PaddedStride(width);
+  std::mt19937                          generator(3);
+  std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+  std::vector<float> v(3 * stride, 0.0f), c(3 * stride), e(3 * stride, 0.0f), n(3 * stride), b(3 * stride);
+  for (long k = 0; k < 3 * stride; ++k)
+  {
+    v[k] = value(generator);
+    c[k] = 4.0f + value(generator);
+    e[k] = value(generator);
+    n[k] = value(generator);
+    b[k] = value(generator);
+  }
+  const long p = stride + 1; // (0, 1): the middle row, one ghost column on the left
+  e[p - 1] = 0.0f;           // no coupling to the ghost column
+  e[p + width - 1] = 0.0f;   // nor beyond the last column
+  std::vector<float> product(width), residual(width);
+  Steady::ApplyRow5(product.data(), &v[p], &v[p + stride], &v[p - stride], &c[p], &e[p], &n[p], &n[p - stride], width);
+  Steady::ResidualRow5(
+    residual.data(), &v[p], &v[p + stride], &v[p - stride], &b[p], &c[p], &e[p], &n[p], &n[p - stride], width);
+  for (long x = 0; x < width; ++x)
+  {
+    const long   q = p + x;
+    const double expected = static_cast<double>(c[q]) * v[q] - static_cast<double>(e[q]) * v[q + 1] -
+                            static_cast<double>(e[q - 1]) * v[q - 1] - static_cast<double>(n[q]) * v[q + stride] -
+                            static_cast<double>(n[q - stride]) * v[q - stride];
+    EXPECT_NEAR(product[x], expected, 1e-5) << x;
+    EXPECT_NEAR(residual[x], b[q] - expected, 1e-5) << x;
+  }
+}
+
+// ForRows hands each row to exactly one band; SumRows gives the same bits whatever the team's size (rows summed
+// alone, then added in row order), and its RowDot sums a row in a fixed order of lanes.
+TEST(BilateralDepthRelaxSteadyRows, BandsCoverEveryRowOnceAndSumTheSameForAnyTeam)
+{
+  const long                            height = 203;
+  const long                            width = 37;
+  const long                            stride = Steady::PaddedStride(width);
+  std::mt19937                          generator(11);
+  std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+  std::vector<float>                    a(stride * height), b(stride * height);
+  for (auto & x : a)
+    x = value(generator);
+  for (auto & x : b)
+    x = value(generator);
+  double reference = 0.0;
+  for (const unsigned int threads : { 1u, 2u, 3u, 7u, 16u })
+  {
+    Steady::BandBuffers           buffers;
+    Steady::Bands                 bands(buffers, threads, height, stride);
+    std::vector<std::atomic<int>> visits(height);
+    bands.ForRows(height,
+                  true,
+                  [&](long y0, long y1)
+                  {
+                    for (long y = y0; y < y1; ++y)
+                      ++visits[static_cast<std::size_t>(y)];
+                  });
+    for (long y = 0; y < height; ++y)
+      ASSERT_EQ(visits[static_cast<std::size_t>(y)].load(), 1) << threads << " threads, row " << y;
+    const double sum =
+      bands.SumRows([&](long y, float *) { return Steady::RowDot(&a[y * stride], &b[y * stride], width); });
+    if (threads == 1)
+    {
+      reference = sum;
+      double plain = 0.0;
+      for (long y = 0; y < height; ++y)
+        for (long x = 0; x < width; ++x)
+          plain += static_cast<double>(a[y * stride + x]) * b[y * stride + x];
+      EXPECT_NEAR(sum, plain, 1e-9);
+    }
+    EXPECT_EQ(sum, reference) << threads << " threads";
+  }
+}
