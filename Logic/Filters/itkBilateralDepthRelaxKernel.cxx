@@ -232,8 +232,8 @@ public:
       m_Ring = std::make_unique<AlignedBuffer<float>>((passes - 1) * RingRows * 2 * m_Stride + RowAlignment);
       m_RingPasses = passes - 1;
     }
-    m_NextRow.resize(std::max<std::size_t>(m_NextRow.size(), passes));
-    m_Started.resize(std::max<std::size_t>(m_Started.size(), passes));
+    NextRow.resize(std::max<std::size_t>(NextRow.size(), passes));
+    Started.resize(std::max<std::size_t>(Started.size(), passes));
   }
 
   /** The edges of pass \a pass (0-based) of a block. */
@@ -251,8 +251,8 @@ public:
   }
 
   /** Per pass of the block being run: the next row to relax, and whether its edges above were set up. */
-  std::vector<std::size_t> m_NextRow;
-  std::vector<char>        m_Started;
+  std::vector<std::size_t> NextRow;
+  std::vector<char>        Started;
 
 private:
   std::size_t                                 m_Stride;
@@ -284,7 +284,7 @@ RelaxBlock(const RowKernels & kernels,
 {
   const std::size_t height = grid.Height;
   const std::size_t stride = grid.Stride;
-  // Pass p (0-based) relaxes rows [First(p), End(p)).
+  // Pass p (0-based) relaxes rows [first(p), end(p)).
   auto first = [&](unsigned int p) { return rowBegin - std::min<std::size_t>(rowBegin, passes - 1 - p); };
   auto end = [&](unsigned int p) { return std::min(height, rowEnd + (passes - 1 - p)); };
   auto input = [&](unsigned int p, std::size_t y) -> const float *
@@ -294,15 +294,15 @@ RelaxBlock(const RowKernels & kernels,
   // The first row of its ring that pass p still reads (the row above its first, to set up its edges).
   auto oldestNeeded = [&](unsigned int p)
   {
-    const std::size_t y = scratch.m_NextRow[p];
-    return scratch.m_Started[p] || y == 0 ? y : y - 1;
+    const std::size_t y = scratch.NextRow[p];
+    return scratch.Started[p] || y == 0 ? y : y - 1;
   };
   for (unsigned int p = 0; p < passes; ++p)
   {
-    scratch.m_NextRow[p] = first(p);
-    scratch.m_Started[p] = 0;
+    scratch.NextRow[p] = first(p);
+    scratch.Started[p] = 0;
   }
-  while (scratch.m_NextRow[passes - 1] < rowEnd)
+  while (scratch.NextRow[passes - 1] < rowEnd)
   {
     if (stopped())
     {
@@ -312,29 +312,29 @@ RelaxBlock(const RowKernels & kernels,
     bool relaxedARow = false;
     for (unsigned int p = 0; p < passes; ++p)
     {
-      const std::size_t y = scratch.m_NextRow[p];
+      const std::size_t y = scratch.NextRow[p];
       if (y == end(p))
       {
         continue;
       }
       // Its input: the previous pass must have relaxed rows y and y + 1.
-      if (p > 0 && scratch.m_NextRow[p - 1] <= std::min(y + 1, height - 1))
+      if (p > 0 && scratch.NextRow[p - 1] <= std::min(y + 1, height - 1))
       {
         continue;
       }
       // Its ring: row y replaces row y - RingRows, which the next pass must no longer need.
-      if (p + 1 < passes && scratch.m_NextRow[p + 1] < end(p + 1) && y >= oldestNeeded(p + 1) + RingRows)
+      if (p + 1 < passes && scratch.NextRow[p + 1] < end(p + 1) && y >= oldestNeeded(p + 1) + RingRows)
       {
         continue;
       }
       RowScratch & rows = scratch.Rows(p);
-      if (!scratch.m_Started[p])
+      if (!scratch.Started[p])
       {
         kernels.Start(grid, y > 0 ? input(p, y - 1) : nullptr, input(p, y), y, rows);
-        scratch.m_Started[p] = 1;
+        scratch.Started[p] = 1;
       }
       kernels.Row(grid, input(p, y), y + 1 < height ? input(p, y + 1) : nullptr, y, output(p, y), rows);
-      scratch.m_NextRow[p] = y + 1;
+      scratch.NextRow[p] = y + 1;
       relaxedARow = true;
       if (y + 1 == end(p))
       {
