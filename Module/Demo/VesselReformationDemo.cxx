@@ -190,9 +190,10 @@ RunDemo(int argc, char * argv[])
     selection.OwnerLabels = false;
     vr::WriteOutputs(outputs, selection, output, Window, Level);
 
-    const std::string  unfilteredTitle = vr::UnfilteredSettingsText;
-    const std::string  middleName = thorax ? "paper's bilateral" : "isotropic";
-    const std::string  middleTitle = middleName + " (" + middleSettings + ")";
+    const std::string unfilteredTitle = vr::UnfilteredSettingsText;
+    const std::string middleName = thorax ? "paper's bilateral" : "isotropic";
+    // "paper" alone above the thoracic CPR: with the settings, "paper's bilateral" would run into the next title.
+    const std::string  middleTitle = (thorax ? std::string("paper") : middleName) + " (" + middleSettings + ")";
     const std::string  bilateralTitle = "bilateral (" + bilateralSettings + ")";
     std::ostringstream caption;
     caption << "Synthetic " << (thorax ? "thoracic" : "run-off") << " CTA, mpCPR at " << angle
