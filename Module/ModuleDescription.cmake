@@ -1,6 +1,6 @@
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # The module description: the one source of truth for both command-line modules' XML
-# (Resources/VesselReformation.xml.in, Resources/BilateralDepthRelax.xml.in) and for vrModuleDescription.h, which
+# (Module/<name>/<name>.xml.in, beside each module's code) and for vrModuleDescription.h, which
 # platforms and widgets include.
 # Plain text only: the values are pasted into XML, so no <, > or &.
 

@@ -2,6 +2,7 @@
 #include "vrCPRView.h"
 
 #include "vrBranchColors.h"
+#include "vrFilterSettingsText.h"
 #include "vrOpenGLRenderer.h"
 
 #include <QEvent>
@@ -87,13 +88,6 @@ Format(double value, int decimals)
   return shown;
 }
 
-std::string
-TrimNumber(double value)
-{
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 } // namespace
 
 /** One image of the comparison (filtered or unfiltered) with its overlays. */
@@ -416,25 +410,15 @@ CPRView::UpdatePanes()
 
   if (hasImage)
   {
-    const auto & parameters = m_Result->Parameters;
     // Two short lines, so that the caption fits under the image in the side-by-side comparison too.
-    // The range kernel as it was given (J in mm, or the paper's a), and the solver: Jacobi with w and N, or the
-    // steady state, where neither applies.
-    const std::string kernel =
-      parameters.Anisotropy
-        ? "a " + TrimNumber(*parameters.Anisotropy) + " mm^-2"
-        : "J " + TrimNumber(parameters.JumpThreshold.value_or(ReformationParameters::DefaultJumpThreshold)) + " mm";
-    std::string filtered = parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
-                             ? "bilateral: " + kernel + "\nsteady solver"
-                             : "bilateral: " + kernel + ", w " + TrimNumber(parameters.Relaxation) + "\n" +
-                                 std::to_string(parameters.Iterations) + " iterations";
+    std::string filtered = "bilateral: " + DescribeFilterSettings(m_Result->Parameters, "\n");
     if (m_Comparison == CPRComparison::Split)
     {
       // One caption for both halves: two captions side by side under half-images overlap.
-      filtered = "left: unfiltered (w = 0); right: " + filtered;
+      filtered = std::string("left: ") + UnfilteredSettingsText + "; right: " + filtered;
     }
     m_Filtered->Caption->SetInput(filtered.c_str());
-    m_Unfiltered->Caption->SetInput("unfiltered (w = 0)");
+    m_Unfiltered->Caption->SetInput(UnfilteredSettingsText);
     m_Unfiltered->Caption->SetVisibility(showUnfiltered && m_Comparison != CPRComparison::Split);
     // Below the image, where no corner annotation sits.
     const double below = (m_FrameSize[1] + 0.5) * m_FrameSpacing[1];
@@ -555,6 +539,13 @@ QString
 CPRView::GetPreviewLabel() const
 {
   return m_PreviewText->GetVisibility() ? QString::fromUtf8(m_PreviewText->GetInput()) : QString();
+}
+
+QString
+CPRView::GetCaption(bool unfiltered) const
+{
+  const char * text = (unfiltered ? m_Unfiltered : m_Filtered)->Caption->GetInput();
+  return text ? QString::fromUtf8(text) : QString();
 }
 
 void

@@ -172,6 +172,10 @@ public:
   /** \return the preview label on screen ("preview (1/2 resolution)"), or empty when the image is a full one. */
   QString
   GetPreviewLabel() const;
+  /** \return the caption under the filtered (or unfiltered) image as drawn: the filter settings in the words of
+   * vr::DescribeFilterSettings. */
+  QString
+  GetCaption(bool unfiltered) const;
   /** \return seconds the latest vtkRenderWindow::Render() of a new image took. */
   double
   GetLastRenderSeconds() const

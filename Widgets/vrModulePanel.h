@@ -5,6 +5,7 @@
 #include "vrCPRView.h"
 #include "vrReformationController.h"
 #include "vrIntensityWindow.h"
+#include "vrOutputWriter.h"
 #include "vrReformationParameters.h"
 
 #include <QWidget>
@@ -39,20 +40,6 @@ constexpr WindowLevelPreset SoftTissuePreset{ "Soft tissue", 400.0, 40.0 };
 /** The preset whose window spans the volume's 1st to 99th intensity percentile (SetPercentileWindow): the default
  * for volumes without HU, whose intensities have no fixed scale (MR angiography). */
 constexpr const char * PercentilePresetName = "1–99 %";
-
-/** Which outputs "Save outputs" writes.
- * \ingroup VesselReformation
- */
-struct OutputSelection
-{
-  bool CPR{ true };
-  bool CPRPNG{ true };
-  bool UnfilteredCPR{ true };
-  bool DepthMaps{ true };
-  bool FixedMask{ true };
-  bool OwnerLabels{ true };
-  bool CutSurface{ true };
-};
 
 /** \class ModulePanel
  * \brief The module's parameter panel (layout in Resources/UI/vrModulePanel.ui): inputs, view, filter, display and

@@ -7,10 +7,10 @@
 
 #include "itkCTAPhantom.h"
 #include "vrFigure.h"
-#include "vrImageIO.h"
-#include "vrSurfaceIO.h"
+#include "vrFilterSettingsText.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
+#include "vrOutputWriter.h"
 #include "vrVesselReformationLogic.h"
 
 #include <CLI/CLI.hpp>
@@ -42,22 +42,6 @@ struct Result
   DepthImage::Pointer Depth;
   DepthImage::Pointer CPR;
 };
-
-/** The range kernel as the parameters give it: "a = 0.5 mm^-2", "J = 3 mm". */
-std::string
-Kernel(const vr::ReformationParameters & parameters)
-{
-  std::ostringstream stream;
-  if (parameters.Anisotropy)
-  {
-    stream << "a = " << *parameters.Anisotropy << " mm^-2";
-  }
-  else
-  {
-    stream << "J = " << parameters.JumpThreshold.value_or(vr::ReformationParameters::DefaultJumpThreshold) << " mm";
-  }
-  return stream.str();
-}
 
 /** Where each phantom's seams are what the eye should see: a detail rectangle, in fractions of the image. */
 struct DetailRegion
@@ -164,11 +148,8 @@ RunDemo(int argc, char * argv[])
       logic.SetParameters(parameters);
       const auto   before = logic.GetStageExecutionCounts();
       const auto & outputs = logic.Update();
-      std::cout << "  " << what << " relaxation (w = 1, " << Kernel(parameters) << ", "
-                << (parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
-                      ? std::string("steady solver")
-                      : std::to_string(iterations) + " iterations")
-                << ", " << outputs.RelaxBackendUsed << "):" << std::endl;
+      std::cout << "  " << what << " relaxation (" << vr::DescribeFilterSettings(parameters) << ", "
+                << outputs.RelaxBackendUsed << "):" << std::endl;
       std::cout << "    backend    " << outputs.RelaxBackendUsed << ": " << outputs.RelaxBackendReason << std::endl;
       PrintStages(outputs, before, logic.GetStageExecutionCounts());
       return Result{ vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth),
@@ -177,9 +158,9 @@ RunDemo(int argc, char * argv[])
     const double middleAnisotropy = thorax ? 0.5 : 0.0;
     const Result middle = run(middleAnisotropy, thorax ? "paper's bilateral" : "isotropic");
     parameters.Anisotropy = middleAnisotropy;
-    const std::string middleKernel = Kernel(parameters);
+    const std::string middleSettings = vr::DescribeFilterSettings(parameters);
     const Result      bilateral = run(std::nullopt, "bilateral"); // a new kernel reruns relax and resample only
-    const std::string bilateralKernel = Kernel(parameters);
+    const std::string bilateralSettings = vr::DescribeFilterSettings(parameters);
     const auto &      outputs = logic.GetOutputs();
     const Result      unfiltered{ vr::ConvertVolumeNodeToDepthImage(outputs.Depth),
                              vr::ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR) };
@@ -201,23 +182,22 @@ RunDemo(int argc, char * argv[])
     vr::WriteRGBPNG(bilateralCPR, path("cpr-filtered.png"));
     vr::WriteRGBPNG(unfilteredDepth, path("depth-unfiltered.png"));
     vr::WriteRGBPNG(bilateralDepth, path("depth-filtered.png"));
-    vr::WriteImage2D(unfiltered.Depth, path("depth.nrrd"));
-    vr::WriteImage2D(bilateral.Depth, path("depth-relaxed.nrrd"));
-    vr::WriteImage2D(bilateral.CPR, path("cpr.nrrd"));
-    vr::WriteImage2D(unfiltered.CPR, path("cpr-unfiltered.nrrd"));
-    // As 3D Slicer writes models (LPS, the space recorded in the file), so Slicer loads it in place.
-    vr::WriteSurface(outputs.Surface, path("cut-surface.vtp"), vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
+    // The images and the cut surface of the last run (its unfiltered images are every run's), through the one writer
+    // of a reformation's outputs: all or nothing, the surface in LPS as 3D Slicer writes models.
+    vr::OutputSelection selection;
+    selection.CPRPNG = false; // the figures above are the pictures
+    selection.FixedMask = false;
+    selection.OwnerLabels = false;
+    vr::WriteOutputs(outputs, selection, output, Window, Level);
 
-    const std::string  unfilteredTitle = "unfiltered (w = 0)";
-    const std::string  middleName = thorax ? "paper's bilateral" : "isotropic";
-    const std::string  middleTitle = middleName + " (w = 1, " + middleKernel + ")";
-    const std::string  bilateralTitle = "bilateral (w = 1, " + bilateralKernel + ")";
+    const std::string unfilteredTitle = vr::UnfilteredSettingsText;
+    const std::string middleName = thorax ? "paper's bilateral" : "isotropic";
+    // "paper" alone above the thoracic CPR: with the settings, "paper's bilateral" would run into the next title.
+    const std::string  middleTitle = (thorax ? std::string("paper") : middleName) + " (" + middleSettings + ")";
+    const std::string  bilateralTitle = "bilateral (" + bilateralSettings + ")";
     std::ostringstream caption;
-    caption << "Synthetic " << (thorax ? "thoracic" : "run-off") << " CTA, mpCPR at " << angle << " degrees, "
-            << (parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
-                  ? std::string("steady solver")
-                  : std::to_string(iterations) + " iterations")
-            << ". Top: CPR (W " << Window << " / L " << Level << " HU). Bottom: depth map."
+    caption << "Synthetic " << (thorax ? "thoracic" : "run-off") << " CTA, mpCPR at " << angle
+            << " degrees. Top: CPR (W " << Window << " / L " << Level << " HU). Bottom: depth map."
             << (thorax ? " Detail CPR: W 400 / L 40 HU." : "");
     // A detail, magnified, with the depth in a tight colour range: there the small seams are what the eye sees. On
     // the run-off phantom the patient's left thigh and knee (the screen's right half); on the thorax the arch and

@@ -7,21 +7,19 @@
 #include "vrCLIRelaxParameters.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
-#include "vrImageIO.h"
-#include "vrSurfaceIO.h"
+#include "vrFilterSettingsText.h"
 #include "vrInputError.h"
 #include "vrModuleExport.h"
 #include "vrNodeConversion.h"
 #include "vrParameterName.h"
 #include "vrRotationSeries.h"
-#include "vrStagedOutputs.h"
+#include "vrOutputWriter.h"
 #include "vrVesselReformationLogic.h"
 #include "vrVolumeIO.h"
 
 #include <filesystem>
-#include <functional>
 #include <cmath>
-#include <map>
+#include <utility>
 #include <memory>
 #include <iomanip>
 #include <iostream>
@@ -52,6 +50,18 @@ const vr::CLIParameterMap ParameterFlags = {
   { vr::ParameterName::Window, "window" },
   { vr::ParameterName::Level, "level" },
   { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
+};
+
+/** This module's output parameters and the outputs they name. */
+const std::pair<const char *, vr::ReformationOutput> OutputFlags[] = {
+  { "outputCPR", vr::ReformationOutput::CPR },
+  { "outputDepth", vr::ReformationOutput::Depth },
+  { "outputRelaxedDepth", vr::ReformationOutput::RelaxedDepth },
+  { "outputMask", vr::ReformationOutput::FixedMask },
+  { "outputLabels", vr::ReformationOutput::OwnerLabels },
+  { "outputUnfilteredCPR", vr::ReformationOutput::UnfilteredCPR },
+  { "outputSurface", vr::ReformationOutput::CutSurface },
+  { "outputPNG", vr::ReformationOutput::CPRPNG },
 };
 
 std::string
@@ -105,20 +115,12 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     vr::ParseCoordinateSpace(arguments.String("centerlineSpace"), "--centerlineSpace");
 
   // Every output path is checked before the work, and nothing lands until all are written.
-  vr::StagedOutputs                  staged;
-  std::map<std::string, std::size_t> outputs;
-  for (const char * name : { "outputCPR",
-                             "outputDepth",
-                             "outputRelaxedDepth",
-                             "outputMask",
-                             "outputLabels",
-                             "outputUnfilteredCPR",
-                             "outputSurface",
-                             "outputPNG" })
+  vr::OutputWriter writer;
+  for (const auto & [name, output] : OutputFlags)
   {
     if (arguments.Given(name))
     {
-      outputs[name] = staged.Add(arguments.String(name), arguments.Spelling(name));
+      writer.Add(output, arguments.String(name), arguments.Spelling(name));
     }
   }
 
@@ -192,7 +194,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     source = report.Format + ", " + vr::ToString(report.FileSpace);
   }
   logic.SetParameters(parameters);
-  logic.SetSurfaceEnabled(outputs.count("outputSurface") != 0);
+  logic.SetSurfaceEnabled(writer.Has(vr::ReformationOutput::CutSurface));
   logic.SetWarningCallback(
     [&progress, &arguments](const std::string & message, const std::string & parameter)
     {
@@ -212,42 +214,10 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   // A copy: the rotation series updates the logic again.
   const vr::ReformationOutputs results = logic.Update();
 
-  const auto write = [&](const char * name, const std::function<void(const std::string &)> & writer)
-  {
-    if (outputs.count(name) != 0)
-    {
-      staged.Write(outputs.at(name), writer);
-    }
-  };
-  write("outputCPR",
-        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.CPR), path); });
-  write("outputDepth",
-        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.Depth), path); });
-  write("outputRelaxedDepth",
-        [&](const std::string & path)
-        { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.RelaxedDepth), path); });
-  write("outputMask",
-        [&](const std::string & path) { vr::WriteImage2D(vr::ConvertVolumeNodeToMaskImage(results.FixedMask), path); });
-  write("outputLabels",
-        [&](const std::string & path)
-        { vr::WriteImage2D(vr::ConvertVolumeNodeToLabelImage(results.OwnerLabels), path); });
-  write("outputUnfilteredCPR",
-        [&](const std::string & path)
-        { vr::WriteImage2D(vr::ConvertVolumeNodeToDepthImage(results.UnfilteredCPR), path); });
-  write("outputSurface",
-        [&](const std::string & path)
-        {
-          // As 3D Slicer writes models: LPS, the space recorded in the file.
-          vr::WriteSurface(results.Surface, path, vr::CoordinateSpace::RAS, vr::CoordinateSpace::LPS);
-        });
-  write("outputPNG",
-        [&](const std::string & path)
-        {
-          double window = 0.0;
-          double level = 0.0;
-          logic.GetDisplayWindowLevel(window, level);
-          vr::WriteWindowedPNG(vr::ConvertVolumeNodeToDepthImage(results.CPR), window, level, path);
-        });
+  double window = 0.0;
+  double level = 0.0;
+  logic.GetDisplayWindowLevel(window, level);
+  writer.Write(results, window, level);
   vr::RotationSeriesResult rotation;
   if (series)
   {
@@ -261,7 +231,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
                                return !progress.AbortRequested();
                              });
   }
-  staged.CommitAll();
+  writer.CommitAll();
   if (series)
   {
     series->Commit();
@@ -293,11 +263,8 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
           << (fromSegmentation ? ", centerline extraction " : "")
           << (fromSegmentation ? std::to_string(std::lround(1e3 * times.Extraction)) : std::string()) << ", depth "
           << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", "
-          << (parameters.Solver == itk::BilateralDepthRelaxSolver::Steady
-                ? std::string("steady solver")
-                : std::to_string(parameters.Iterations) + " iterations")
-          << "), resample " << 1e3 * times.Resample << ", surface " << 1e3 * times.Surface
-          << "; relax backend: " << results.RelaxBackendReason;
+          << vr::DescribeFilterSettings(parameters) << "), resample " << 1e3 * times.Resample << ", surface "
+          << 1e3 * times.Surface << "; relax backend: " << results.RelaxBackendReason;
   progress.Print(std::cout, summary.str());
 }
 } // namespace

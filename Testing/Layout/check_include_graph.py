@@ -10,8 +10,9 @@ through others. And each layer may include only the layers below it:
     Common   -> Common                Filters -> Filters           Phantoms -> Phantoms, Filters
     Nodes    -> Nodes, Filters, Common                               OpenCL   -> OpenCL, Filters, Common
     IO       -> IO, Nodes, Filters, Common
-    Logic    -> Logic, IO, Nodes, Filters, Common, OpenCL
+    Logic    -> Logic, IO, Nodes, Filters, Common, Phantoms, OpenCL
     Widgets  -> Widgets, Logic, IO, Nodes, Filters, Common, Phantoms, OpenCL   (nothing below includes Widgets)
+    Applications/VesselReformationViewer -> itself, Widgets and everything below (nothing includes the application)
 
 Usage: check_include_graph.py ROOT      check the tree at ROOT; exit 1 naming every cycle and violation
        check_include_graph.py --self-test  show that a made-up cycle and a made-up violation are found
@@ -30,11 +31,14 @@ ALLOWED = {
     'Logic/Nodes': {'Logic/Nodes', 'Logic/Filters', 'Logic/Common'},
     'OpenCL': {'OpenCL', 'Logic/Filters', 'Logic/Common'},
     'Logic/IO': {'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common'},
-    'Logic': {'Logic', 'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'OpenCL'},
+    'Logic': {'Logic', 'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'Logic/Phantoms', 'OpenCL'},
     'Widgets': {'Widgets', 'Logic', 'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'Logic/Phantoms',
                 'OpenCL'},
+    'Applications/VesselReformationViewer': {'Applications/VesselReformationViewer', 'Widgets', 'Logic', 'Logic/IO',
+                                             'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'Logic/Phantoms',
+                                             'OpenCL'},
 }
-SCANNED = ('Logic', 'OpenCL', 'Module', 'Widgets', 'Testing')
+SCANNED = ('Logic', 'OpenCL', 'Module', 'Widgets', 'Applications', 'Testing')
 
 
 def unit_of(path):
@@ -158,7 +162,14 @@ def self_test():
         write('Logic/Filters/itkB.cxx', '#include "vrLogic.h"\n')
         problems, _ = check(root)
         assert any('Logic/Filters/itkB.cxx includes Logic/vrLogic.h' in p for p in problems), problems
-    print('self-test: a made-up include cycle and a made-up layering violation were both found')
+        # A module widget that includes the viewer's window: the widgets must stand without the application.
+        write('Applications/VesselReformationViewer/vrWindow.h', '#include "vrPanel.h"\n')
+        write('Widgets/vrPanel.h', '')
+        write('Widgets/vrPanel.cxx', '#include "vrWindow.h"\n')
+        problems, _ = check(root)
+        assert any('Widgets/vrPanel.cxx includes Applications/VesselReformationViewer/vrWindow.h' in p
+                   for p in problems), problems
+    print('self-test: a made-up include cycle and two made-up layering violations were found')
     return 0
 
 

@@ -5,6 +5,7 @@
 
 #include "vrCLIProgress.h"
 #include "vrCenterlineIO.h"
+#include "vrFilterSettingsText.h"
 #include "vrImageIO.h"
 #include "vrModuleDescription.h"
 #include "vrReformationParameters.h"
@@ -352,8 +353,9 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
 
   // Inside a parameter, CTK's schema (paramType and its extensions) fixes the order: name, longflag or index,
-  // description, label, default, channel, then the type's own elements or constraints. docs/design.md 3.8 had label before
-  // description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the whole schema with xmllint.
+  // description, label, default, channel, then the type's own elements or constraints. docs/design.md 3.8 had label
+  // before description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the whole schema with
+  // xmllint.
   const std::map<std::string, int> rank = { { "name", 0 },        { "longflag", 1 }, { "index", 1 },
                                             { "description", 2 }, { "label", 3 },    { "default", 4 },
                                             { "channel", 5 },     { "element", 6 },  { "constraints", 6 } };
@@ -542,7 +544,8 @@ TEST(ModuleFlags, PositionalArgumentsAndDefaultsAreDESIGNs)
   EXPECT_EQ(byName["inputCenterlines"].Index, "1");
   EXPECT_EQ(byName["outputCPR"].Index, "2");
   EXPECT_EQ(byName["outputCPR"].Channel, "output");
-  // docs/design.md: w = 1, 500 Jacobi iterations, scanline, linear; issue 13: the range kernel unset in the XML (neither
+  // docs/design.md: w = 1, 500 Jacobi iterations, scanline, linear; issue 13: the range kernel unset in the XML
+  // (neither
   // --jumpThreshold nor --anisotropy is passed unless the user gives it) and J = 3 mm in the parameter object.
   const vr::ReformationParameters defaults;
   EXPECT_EQ(std::stod(byName["relaxation"].Default), 1.0);
@@ -1068,6 +1071,49 @@ TEST(VesselReformationModule, ReportsProgressInSlicersFormat)
   ASSERT_GE(fractions.size(), 3u);
   EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
   EXPECT_EQ(fractions.back(), 1.0);
+}
+
+// The summary states the relaxation's settings in the one wording every caption uses (vr::DescribeFilterSettings),
+// worked out here by hand from the flags: the kernel as given, then w and N, or the steady solver.
+TEST(VesselReformationModule, SummaryStatesTheFilterSettingsAsEveryCaptionDoes)
+{
+  const fs::path  folder = TestFolder();
+  const RunResult jacobi = RunProgram({ ReformationExecutable,
+                                        "--up",
+                                        "auto",
+                                        "--jumpThreshold",
+                                        "2",
+                                        "--relaxation",
+                                        "0.5",
+                                        "--iterations",
+                                        "20",
+                                        "--backend",
+                                        "cpu",
+                                        (DataFolder / "aorta.mha").string(),
+                                        (DataFolder / "aorta-centerline.vtp").string(),
+                                        (folder / "jacobi.nrrd").string() });
+  ASSERT_EQ(jacobi.ExitCode, 0) << jacobi.Err;
+  EXPECT_TRUE(Contains(jacobi.Out, "(cpu, J = 2 mm, w = 0.5, 20 iterations)")) << jacobi.Out;
+  vr::ReformationParameters parameters;
+  parameters.JumpThreshold = 2.0;
+  parameters.Relaxation = 0.5;
+  parameters.Iterations = 20;
+  EXPECT_TRUE(Contains(jacobi.Out, "(cpu, " + vr::DescribeFilterSettings(parameters) + ")")) << jacobi.Out;
+
+  const RunResult steady = RunProgram({ ReformationExecutable,
+                                        "--up",
+                                        "auto",
+                                        "--anisotropy",
+                                        "0.25",
+                                        "--solver",
+                                        "steady",
+                                        "--backend",
+                                        "cpu",
+                                        (DataFolder / "aorta.mha").string(),
+                                        (DataFolder / "aorta-centerline.vtp").string(),
+                                        (folder / "steady.nrrd").string() });
+  ASSERT_EQ(steady.ExitCode, 0) << steady.Err;
+  EXPECT_TRUE(Contains(steady.Out, "(cpu, a = 0.25 mm^-2, steady solver)")) << steady.Out;
 }
 
 TEST(CLIProgress, DrawsABarOnATerminal)

@@ -14,6 +14,7 @@
 #include "vrNodeConversion.h"
 #include "vrOpenGLRenderer.h"
 #include "vrInputError.h"
+#include "vrFilterSettingsText.h"
 #include "vrOutputWriter.h"
 #include "vrSurfacePreview.h"
 #include "vrTestFiles.h"
@@ -36,6 +37,10 @@
 
 #include <vtkCellData.h>
 #include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkStringArray.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkImageData.h>
 #include <vtkPolyData.h>
 
@@ -1179,6 +1184,11 @@ TEST_F(WidgetsTest, TheFilterSectionsRangeKernelAndSolverReachTheLogic)
   EXPECT_EQ(*shown->Parameters.JumpThreshold, 2.0);
   EXPECT_FALSE(shown->Parameters.Anisotropy.has_value());
   EXPECT_EQ(shown->Parameters.EffectiveAnisotropy(), 0.25);
+  // The caption under the image: the one description of the settings (vr::DescribeFilterSettings), on two lines.
+  const CPRView & view = *Window().GetCPRView();
+  EXPECT_EQ(view.GetCaption(false).toStdString(), "bilateral: J = 2 mm, w = 1\n200 iterations");
+  EXPECT_EQ(view.GetCaption(false).toStdString(), "bilateral: " + DescribeFilterSettings(shown->Parameters, "\n"));
+  EXPECT_EQ(view.GetCaption(true).toStdString(), "unfiltered (w = 0)");
   ReformationParameters quarter = TestParameters(StartAngle);
   quarter.Anisotropy = 0.25;
   const ReformationOutputs atQuarter = ReferenceOutputs(SmallPhantomInputs(), quarter);
@@ -1210,6 +1220,8 @@ TEST_F(WidgetsTest, TheFilterSectionsRangeKernelAndSolverReachTheLogic)
   const ReformationOutputs steadyReference = ReferenceOutputs(SmallPhantomInputs(), steady);
   ExpectShows(Window(), steadyReference.CPR);
   EXPECT_NE(NodePixels(steadyReference.CPR), atHalf) << "200 Jacobi passes are not the fixed point";
+  EXPECT_EQ(view.GetCaption(false).toStdString(), "bilateral: a = 0.5 mm^-2\nsteady solver");
+  EXPECT_EQ(view.GetCaption(false).toStdString(), "bilateral: " + DescribeFilterSettings(shown->Parameters, "\n"));
 
   // The backend the logic chose, and why, under the backend choice.
   ASSERT_FALSE(shown->Outputs.RelaxBackendReason.empty());
@@ -1257,6 +1269,30 @@ TEST_F(WidgetsTest, SavesTheOutputsOnScreenAllOrNothing)
   const auto saved = ReadDepthImage(folder.File("cpr.nrrd"));
   const auto shown = NodePixels(Window().GetCPRView()->GetResult()->Outputs.CPR);
   EXPECT_EQ(std::vector<float>(saved->GetBufferPointer(), saved->GetBufferPointer() + shown.size()), shown);
+  // The cut surface as 3D Slicer writes models, like the module's and the demo's: LPS with "SPACE" = "LPS" in the
+  // file, read here with VTK's own reader and no conversion of ours. The logic's surface is RAS: each point of the file
+  // is the point on screen with x and y negated.
+  const auto latest = Controller().GetLatestResult(); // the result that brought the surface (SaveOutputs)
+  ASSERT_TRUE(latest && latest->Outputs.Surface);
+  vtkPolyData *                surface = latest->Outputs.Surface;
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName(folder.File("cut-surface.vtp").c_str());
+  reader->Update();
+  vtkPolyData * file = reader->GetOutput();
+  auto *        space = vtkStringArray::SafeDownCast(file->GetFieldData()->GetAbstractArray("SPACE"));
+  ASSERT_NE(space, nullptr) << "no SPACE marker in cut-surface.vtp";
+  EXPECT_EQ(space->GetValue(0), "LPS");
+  ASSERT_EQ(file->GetNumberOfPoints(), surface->GetNumberOfPoints());
+  for (vtkIdType k : { vtkIdType{ 0 }, surface->GetNumberOfPoints() / 3, surface->GetNumberOfPoints() - 1 })
+  {
+    double ras[3];
+    double lps[3];
+    surface->GetPoint(k, ras);
+    file->GetPoint(k, lps);
+    EXPECT_FLOAT_EQ(lps[0], -ras[0]) << "point " << k;
+    EXPECT_FLOAT_EQ(lps[1], -ras[1]) << "point " << k;
+    EXPECT_FLOAT_EQ(lps[2], ras[2]) << "point " << k;
+  }
 
   int errors = 0;
   QObject::connect(&Window(), &ViewerWindow::errorShown, &Window(), [&] { ++errors; });

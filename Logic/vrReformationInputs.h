@@ -15,9 +15,10 @@
 namespace vr
 {
 /** \class ReformationInputs
- * \brief What the viewer reforms: a volume node and a centerline node as a platform hands them to the logic, or a
- * volume node and a vessel segmentation node whose centerlines the logic extracts; and what the views show of them
- * (the tree the logic converts the centerlines to, branch names, a description).
+ * \brief What a host of the module widgets (the viewer) reforms: a volume node and a centerline node as a platform
+ * hands them to the logic, or a volume node and a vessel segmentation node whose centerlines the logic extracts; and
+ * what the views show of them (the tree the logic converts the centerlines to, branch names, a description). No Qt:
+ * the state a host keeps, in the logic's layer.
  *
  * Made once per opened file or phantom, on the controller's worker thread, and never changed afterwards: results
  * share it, so the overlays of an image always belong to the data it was computed from.

@@ -1062,10 +1062,17 @@ ViewerWindow::SaveOutputs(const QString & folder)
   {
     result = shown;
   }
+  const OutputSelection selection = m_Panel->GetOutputSelection();
+  if (selection.CutSurface && !result->Outputs.Surface)
+  {
+    ShowError(tr("Cannot save outputs"),
+              tr("cut-surface.vtp: the cut surface of this view is still being computed; save again in a moment"));
+    return false;
+  }
   try
   {
-    const auto paths = WriteOutputs(*result,
-                                    m_Panel->GetOutputSelection(),
+    const auto paths = WriteOutputs(result->Outputs,
+                                    selection,
                                     folder.toStdString(),
                                     m_Panel->GetWindowSpinBox()->value(),
                                     m_Panel->GetLevelSpinBox()->value());

@@ -1,0 +1,164 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#include "vrOutputWriter.h"
+
+#include "vrImageIO.h"
+#include "vrInputError.h"
+#include "vrNodeConversion.h"
+#include "vrSurfaceIO.h"
+
+#include <filesystem>
+
+namespace vr
+{
+const char *
+OutputFileName(ReformationOutput output)
+{
+  switch (output)
+  {
+    case ReformationOutput::CPR:
+      return "cpr.nrrd";
+    case ReformationOutput::CPRPNG:
+      return "cpr.png";
+    case ReformationOutput::UnfilteredCPR:
+      return "cpr-unfiltered.nrrd";
+    case ReformationOutput::Depth:
+      return "depth.nrrd";
+    case ReformationOutput::RelaxedDepth:
+      return "depth-relaxed.nrrd";
+    case ReformationOutput::FixedMask:
+      return "mask.nrrd";
+    case ReformationOutput::OwnerLabels:
+      return "labels.nrrd";
+    case ReformationOutput::CutSurface:
+      return "cut-surface.vtp";
+  }
+  return "";
+}
+
+void
+OutputWriter::Add(ReformationOutput output, const std::string & path, const std::string & flag)
+{
+  if (Has(output))
+  {
+    throw InputError(flag + ": " + OutputFileName(output) + " is already reserved as " + path);
+  }
+  const std::size_t handle = m_Staged.Add(path, flag);
+  m_Reserved.push_back({ output, handle, path, flag });
+}
+
+bool
+OutputWriter::Has(ReformationOutput output) const
+{
+  for (const Reserved & reserved : m_Reserved)
+  {
+    if (reserved.Output == output)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::vector<std::string>
+OutputWriter::Paths() const
+{
+  std::vector<std::string> paths;
+  for (const Reserved & reserved : m_Reserved)
+  {
+    paths.push_back(reserved.Path);
+  }
+  return paths;
+}
+
+void
+OutputWriter::Write(const ReformationOutputs & outputs, double window, double level)
+{
+  // Checked before anything is staged, so that a missing output costs no writing.
+  for (const Reserved & reserved : m_Reserved)
+  {
+    if (reserved.Output == ReformationOutput::CutSurface && !outputs.Surface)
+    {
+      throw InputError(reserved.Flag + " (" + reserved.Path + "): no cut surface was computed for these outputs");
+    }
+  }
+  for (const Reserved & reserved : m_Reserved)
+  {
+    m_Staged.Write(reserved.Handle,
+                   [&](const std::string & path)
+                   {
+                     switch (reserved.Output)
+                     {
+                       case ReformationOutput::CPR:
+                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.CPR), path);
+                         break;
+                       case ReformationOutput::CPRPNG:
+                         WriteWindowedPNG(ConvertVolumeNodeToDepthImage(outputs.CPR), window, level, path);
+                         break;
+                       case ReformationOutput::UnfilteredCPR:
+                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR), path);
+                         break;
+                       case ReformationOutput::Depth:
+                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.Depth), path);
+                         break;
+                       case ReformationOutput::RelaxedDepth:
+                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth), path);
+                         break;
+                       case ReformationOutput::FixedMask:
+                         WriteImage2D(ConvertVolumeNodeToMaskImage(outputs.FixedMask), path);
+                         break;
+                       case ReformationOutput::OwnerLabels:
+                         WriteImage2D(ConvertVolumeNodeToLabelImage(outputs.OwnerLabels), path);
+                         break;
+                       case ReformationOutput::CutSurface:
+                         // As 3D Slicer writes models: LPS, the space recorded in the file, so Slicer loads it in
+                         // place. The logic's surface is RAS.
+                         WriteSurface(outputs.Surface, path, CoordinateSpace::RAS, CoordinateSpace::LPS);
+                         break;
+                     }
+                   });
+  }
+}
+
+void
+OutputWriter::CommitAll()
+{
+  m_Staged.CommitAll();
+}
+
+std::vector<std::string>
+WriteOutputs(const ReformationOutputs & outputs,
+             const OutputSelection &    selection,
+             const std::string &        folder,
+             double                     window,
+             double                     level)
+{
+  std::vector<ReformationOutput> chosen;
+  const auto                     choose = [&chosen](bool selected, ReformationOutput output)
+  {
+    if (selected)
+    {
+      chosen.push_back(output);
+    }
+  };
+  choose(selection.CPR, ReformationOutput::CPR);
+  choose(selection.CPRPNG, ReformationOutput::CPRPNG);
+  choose(selection.UnfilteredCPR, ReformationOutput::UnfilteredCPR);
+  choose(selection.DepthMaps, ReformationOutput::Depth);
+  choose(selection.DepthMaps, ReformationOutput::RelaxedDepth);
+  choose(selection.FixedMask, ReformationOutput::FixedMask);
+  choose(selection.OwnerLabels, ReformationOutput::OwnerLabels);
+  choose(selection.CutSurface, ReformationOutput::CutSurface);
+  if (chosen.empty())
+  {
+    throw InputError("save outputs: no output is checked");
+  }
+  OutputWriter writer;
+  for (const ReformationOutput output : chosen)
+  {
+    writer.Add(output, (std::filesystem::path(folder) / OutputFileName(output)).string(), OutputFileName(output));
+  }
+  writer.Write(outputs, window, level);
+  writer.CommitAll();
+  return writer.Paths();
+}
+} // namespace vr

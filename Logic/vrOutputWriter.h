@@ -1,0 +1,110 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrOutputWriter_h
+#define vrOutputWriter_h
+
+#include "vrStagedOutputs.h"
+#include "vrVesselReformationLogic.h"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace vr
+{
+/** The files a reformation can write, one each. */
+enum class ReformationOutput
+{
+  CPR,           ///< the relaxed CPR image (NRRD or any ITK 2D format)
+  CPRPNG,        ///< the relaxed CPR through window and level, 8-bit greyscale PNG
+  UnfilteredCPR, ///< the CPR on the unrelaxed depth map
+  Depth,         ///< the depth map before relaxation (mm)
+  RelaxedDepth,  ///< the relaxed depth map (mm)
+  FixedMask,     ///< the pixels the relaxation keeps fixed
+  OwnerLabels,   ///< the branch that owns each pixel
+  CutSurface     ///< the cut surface (.vtp or .vtk), LPS with the space recorded, as 3D Slicer writes models
+};
+
+/** \return the name an output has in a folder of outputs ("cpr.nrrd", "cut-surface.vtp", ...). */
+const char *
+OutputFileName(ReformationOutput output);
+
+/** Which outputs to write into a folder (WriteOutputs).
+ * \ingroup VesselReformation
+ */
+struct OutputSelection
+{
+  bool CPR{ true };
+  bool CPRPNG{ true };
+  bool UnfilteredCPR{ true };
+  /** Both depth maps: before and after relaxation. */
+  bool DepthMaps{ true };
+  bool FixedMask{ true };
+  bool OwnerLabels{ true };
+  bool CutSurface{ true };
+};
+
+/** \class OutputWriter
+ * \brief The one writer of a reformation's outputs (the command-line module, the viewer and the demo use it), all or
+ * nothing through vr::StagedOutputs (docs/design.md section 5).
+ *
+ * Each output is reserved first, before the work, so that a bad path fails at once; Write() then writes every
+ * reserved output into the staging folder and CommitAll() publishes them together. Until CommitAll() nothing appears
+ * and existing files of the same names are left as they were. The cut surface is written in LPS with "SPACE" recorded
+ * in the file, as 3D Slicer writes models (vr::WriteSurface), from the logic's RAS surface.
+ * \ingroup VesselReformation
+ */
+class OutputWriter
+{
+public:
+  /** Reserves \a output at \a path (vr::StagedOutputs::Add: the folder is checked now).
+   * \param flag how the caller names it in messages ("--outputDepth", "cpr.png").
+   * Throws vr::InputError naming the flag; an output reserved twice is an error as well. */
+  void
+  Add(ReformationOutput output, const std::string & path, const std::string & flag);
+
+  /** \return whether \a output is reserved. */
+  bool
+  Has(ReformationOutput output) const;
+
+  /** \return the final paths of the reserved outputs, in the order they were reserved. */
+  std::vector<std::string>
+  Paths() const;
+
+  /** Writes every reserved output of \a outputs into the staging folder. The PNG goes through \a window (> 0) and
+   * \a level. Throws vr::InputError naming the flag and the path, or saying which output \a outputs lacks (the cut
+   * surface when it was not computed); nothing is published then. */
+  void
+  Write(const ReformationOutputs & outputs, double window, double level);
+
+  /** Publishes every written output together (vr::StagedOutputs::CommitAll). */
+  void
+  CommitAll();
+
+private:
+  struct Reserved
+  {
+    ReformationOutput Output;
+    std::size_t       Handle;
+    std::string       Path;
+    std::string       Flag;
+  };
+  StagedOutputs         m_Staged;
+  std::vector<Reserved> m_Reserved;
+};
+
+/** Writes the outputs \a selection asks for into \a folder under their OutputFileName()s, all or nothing.
+ * \param outputs the logic's outputs; their cut surface is needed when \a selection asks for it.
+ * \param selection which outputs.
+ * \param folder an existing folder.
+ * \param window the PNG's window width (> 0, intensity unit).
+ * \param level the PNG's level.
+ * \return the paths written. Throws vr::InputError naming the file or what is missing; then nothing is written. */
+std::vector<std::string>
+WriteOutputs(const ReformationOutputs & outputs,
+             const OutputSelection &    selection,
+             const std::string &        folder,
+             double                     window,
+             double                     level);
+} // namespace vr
+
+#endif
