@@ -94,7 +94,9 @@ Measure(const fs::path & png)
 }
 
 /** Runs the viewer with \a arguments and --screenshot \a png, expects a clean exit and a window-sized picture (1600
- * pixels wide) of more than 2000 colours and a grey deviation above 20, prints what it measured and leaves it in
+ * pixels wide) of more than 1500 colours (a flat or empty window has tens; without multisampling, which the views
+ * leave off on Xvfb's software renderer, the smallest picture here, the VMTK aorta's, has about 1900) and a grey
+ * deviation above 20, prints what it measured and leaves it in
  * \a facts. Call it through ASSERT_NO_FATAL_FAILURE: a crash or a failed run ends the test. */
 void
 TakeScreenshot(std::vector<std::string> arguments, const fs::path & png, PictureFacts & facts)
@@ -107,7 +109,7 @@ TakeScreenshot(std::vector<std::string> arguments, const fs::path & png, Picture
   ASSERT_TRUE(fs::exists(png));
   facts = Measure(png);
   EXPECT_EQ(facts.Width, 1600);
-  EXPECT_GT(facts.Colours, 2000u) << "a CPR, overlays, a shaded 3D view and text";
+  EXPECT_GT(facts.Colours, 1500u) << "a CPR, overlays, a shaded 3D view and text";
   EXPECT_GT(facts.GreyDeviation, 20.0);
   std::cout << "colours " << facts.Colours << ", grey deviation " << facts.GreyDeviation << ", bright share "
             << facts.BrightShare << std::endl;

@@ -1,0 +1,329 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The viewer window's opening of files: volumes, centerlines, segmentations, phantoms, the recent files and undo.
+#include "vrViewerWindow.h"
+
+#include "itkCTAPhantom.h"
+#include "vrInputError.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStatusBar>
+
+namespace vr
+{
+namespace
+{
+/** The file dialogs' filters: the formats the volume and centerline readers take. */
+QString
+VolumeFileFilter()
+{
+  return ViewerWindow::tr("Volumes (*.nrrd *.nhdr *.nii *.nii.gz *.mha *.mhd);;All files (*)");
+}
+
+QString
+CenterlineFileFilter()
+{
+  return ViewerWindow::tr("Centerlines (*.vtp *.vtk *.mrk.json *.json *.tre *.csv);;All files (*)");
+}
+} // namespace
+
+void
+ViewerWindow::LoadPhantom(const QString & name, double spacing)
+{
+  const std::string phantom = name.toStdString();
+  m_Controller->LoadInputs([phantom, spacing] { return MakePhantomInputs(phantom, spacing); },
+                           tr("the %1 phantom").arg(name));
+}
+
+void
+ViewerWindow::OpenFiles(const QString & volume, const QString & centerlines)
+{
+  const std::string volumePath = volume.toStdString();
+  const std::string centerlinePath = centerlines.toStdString();
+  RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), { QFileInfo(centerlines).absoluteFilePath() }, false });
+  m_Controller->LoadInputs([volumePath, centerlinePath]
+                           { return MakeInputs(ReadVolumeNode(volumePath), ReadCenterlineNode(centerlinePath)); },
+                           tr("%1 and %2").arg(QFileInfo(volume).fileName(), QFileInfo(centerlines).fileName()));
+}
+
+void
+ViewerWindow::OpenVolume(const QString & path)
+{
+  auto current = m_Controller->GetInputs();
+  if (!current)
+  {
+    ShowError(tr("Cannot open %1").arg(path), tr("Open the centerlines as well: the viewer needs both."));
+    return;
+  }
+  const std::string volumePath = path.toStdString();
+  m_Controller->LoadInputs(
+    [volumePath, current]
+    {
+      if (current->Segmentation)
+      {
+        // The segmentation stays: the logic extracts its centerlines again against the new volume.
+        ReformationInputs inputs = MakeSegmentationInputs(ReadVolumeNode(volumePath), current->Segmentation);
+        inputs.CenterlineSource = current->CenterlineSource;
+        return inputs;
+      }
+      ReformationInputs inputs = MakeInputs(ReadVolumeNode(volumePath), current->Centerlines);
+      inputs.CenterlineSource = current->CenterlineSource;
+      return inputs;
+    },
+    QFileInfo(path).fileName(),
+    PanelParameters());
+}
+
+void
+ViewerWindow::OpenCenterlines(const QString & path)
+{
+  auto current = m_Controller->GetInputs();
+  if (!current)
+  {
+    ShowError(tr("Cannot open %1").arg(path), tr("Open a volume as well: the viewer needs both."));
+    return;
+  }
+  const std::string centerlinePath = path.toStdString();
+  m_Controller->LoadInputs(
+    [centerlinePath, current]
+    {
+      ReformationInputs inputs = MakeInputs(current->Volume, ReadCenterlineNode(centerlinePath));
+      inputs.VolumeSource = current->VolumeSource;
+      inputs.IsPhantom = current->IsPhantom;
+      return inputs;
+    },
+    QFileInfo(path).fileName());
+}
+
+std::optional<ReformationParameters>
+ViewerWindow::PanelParameters() const
+{
+  try
+  {
+    return m_Panel->GetParameters();
+  }
+  catch (const InputError &)
+  {
+    return std::nullopt;
+  }
+}
+
+void
+ViewerWindow::OpenSegmentation(const QStringList & paths)
+{
+  auto current = m_Controller->GetInputs();
+  if (!current)
+  {
+    ShowError(tr("Cannot open %1").arg(paths.join(QStringLiteral(", "))),
+              tr("Open a volume as well: the viewer needs both."));
+    return;
+  }
+  std::vector<std::string> files;
+  QStringList              names;
+  for (const QString & path : paths)
+  {
+    files.push_back(path.toStdString());
+    names << QFileInfo(path).fileName();
+  }
+  m_Controller->LoadInputs(
+    [files, current]
+    {
+      std::vector<std::string> warnings;
+      std::vector<std::string> descriptions;
+      ReformationInputs        inputs =
+        MakeSegmentationInputs(current->Volume, ReadSegmentationNode(files, warnings, descriptions));
+      inputs.VolumeSource = current->VolumeSource;
+      inputs.IsPhantom = current->IsPhantom;
+      inputs.PhantomName = current->PhantomName;
+      inputs.Warnings = warnings;
+      return inputs;
+    },
+    names.join(QStringLiteral(", ")),
+    PanelParameters());
+}
+
+void
+ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringList & segmentation)
+{
+  const std::string        volumePath = volume.toStdString();
+  std::vector<std::string> files;
+  QStringList              names;
+  for (const QString & path : segmentation)
+  {
+    files.push_back(path.toStdString());
+    names << QFileInfo(path).fileName();
+  }
+  QStringList absolute;
+  for (const QString & path : segmentation)
+  {
+    absolute << QFileInfo(path).absoluteFilePath();
+  }
+  RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), absolute, true });
+  m_Controller->LoadInputs(
+    [volumePath, files]
+    {
+      std::vector<std::string> warnings;
+      std::vector<std::string> descriptions;
+      auto                     volumeNode = ReadVolumeNode(volumePath);
+      ReformationInputs        inputs =
+        MakeSegmentationInputs(volumeNode, ReadSegmentationNode(files, warnings, descriptions));
+      inputs.Warnings = warnings;
+      return inputs;
+    },
+    tr("%1 and %2").arg(QFileInfo(volume).fileName(), names.join(QStringLiteral(", "))),
+    PanelParameters());
+}
+
+QString
+ViewerWindow::StartFolder() const
+{
+  return m_Settings ? m_Settings->LastFolder() : QString();
+}
+
+void
+ViewerWindow::RememberWhenLoaded(const ViewerSettings::RecentEntry & entry)
+{
+  m_PendingRecent = entry;
+}
+
+void
+ViewerWindow::FillRecentMenu()
+{
+  m_RecentMenu->clear();
+  const auto entries = m_Settings ? m_Settings->Recent() : std::vector<ViewerSettings::RecentEntry>();
+  for (int k = 0; k < static_cast<int>(entries.size()); ++k)
+  {
+    QStringList names;
+    for (const QString & path : entries[k].Centerlines)
+    {
+      names << QFileInfo(path).fileName();
+    }
+    QAction * action =
+      m_RecentMenu->addAction(QStringLiteral("&%1 %2 + %3")
+                                .arg(k + 1)
+                                .arg(QFileInfo(entries[k].Volume).fileName(), names.join(QStringLiteral(", "))),
+                              this,
+                              [this, k] { OpenRecent(k); });
+    action->setToolTip(entries[k].Volume + QStringLiteral(" + ") + entries[k].Centerlines.join(QStringLiteral(", ")));
+  }
+  if (entries.empty())
+  {
+    m_RecentMenu->addAction(tr("(nothing opened yet)"))->setEnabled(false);
+  }
+}
+
+void
+ViewerWindow::OpenRecent(int index)
+{
+  const auto entries = m_Settings ? m_Settings->Recent() : std::vector<ViewerSettings::RecentEntry>();
+  if (index < 0 || index >= static_cast<int>(entries.size()))
+  {
+    return;
+  }
+  const auto & entry = entries[static_cast<std::size_t>(index)];
+  if (entry.Segmentation)
+  {
+    OpenFilesWithSegmentation(entry.Volume, entry.Centerlines);
+  }
+  else
+  {
+    OpenFiles(entry.Volume, entry.Centerlines.front());
+  }
+}
+
+void
+ViewerWindow::ChooseAndOpenVolumeAndCenterlines()
+{
+  const QString volume =
+    QFileDialog::getOpenFileName(this, tr("Open a volume (then its centerlines)"), StartFolder(), VolumeFileFilter());
+  if (volume.isEmpty())
+  {
+    return;
+  }
+  const QString centerlines =
+    QFileDialog::getOpenFileName(this,
+                                 tr("Open the centerlines of %1").arg(QFileInfo(volume).fileName()),
+                                 QFileInfo(volume).absolutePath(),
+                                 CenterlineFileFilter());
+  if (centerlines.isEmpty())
+  {
+    return;
+  }
+  if (m_Settings)
+  {
+    m_Settings->RememberFolderOf(centerlines);
+  }
+  OpenFiles(volume, centerlines);
+}
+
+void
+ViewerWindow::UndoOpen()
+{
+  if (m_UndoInputs.empty())
+  {
+    return;
+  }
+  const std::shared_ptr<const ReformationInputs> previous = m_UndoInputs.back();
+  m_UndoInputs.pop_back();
+  m_UndoOpen->setEnabled(!m_UndoInputs.empty());
+  m_Undoing = true;
+  m_Controller->LoadInputs(
+    [previous] { return *previous; },
+    tr("the previous inputs (%1)").arg(QFileInfo(QString::fromStdString(previous->VolumeSource)).fileName()),
+    PanelParameters());
+}
+
+void
+ViewerWindow::ChooseAndOpenVolume(bool dicomFolder)
+{
+  const QString path = dicomFolder
+                         ? QFileDialog::getExistingDirectory(this, tr("Open a DICOM series folder"), StartFolder())
+                         : QFileDialog::getOpenFileName(this, tr("Open a volume"), StartFolder(), VolumeFileFilter());
+  if (!path.isEmpty())
+  {
+    if (m_Settings)
+    {
+      m_Settings->RememberFolderOf(path);
+    }
+    OpenVolume(path);
+  }
+}
+
+void
+ViewerWindow::ChooseAndOpenCenterlines()
+{
+  const QString path =
+    QFileDialog::getOpenFileName(this, tr("Open centerlines"), StartFolder(), CenterlineFileFilter());
+  if (!path.isEmpty())
+  {
+    if (m_Settings)
+    {
+      m_Settings->RememberFolderOf(path);
+    }
+    OpenCenterlines(path);
+  }
+}
+
+void
+ViewerWindow::ChooseAndOpenSegmentation()
+{
+  const QStringList paths = QFileDialog::getOpenFileNames(
+    this,
+    tr("Open a vessel segmentation (several files are combined)"),
+    StartFolder(),
+    tr("Segmentations: label maps, masks, level sets (*.nii *.nii.gz *.nrrd *.nhdr *.mha *.mhd);;All files (*)"));
+  if (!paths.isEmpty())
+  {
+    if (m_Settings)
+    {
+      m_Settings->RememberFolderOf(paths.front());
+    }
+    OpenSegmentation(paths);
+  }
+}
+} // namespace vr
