@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkCPRDepthImageFilter.h"
 
+#include "itkCPRDepthComputation.h"
+
 #include "itkCPRCenterlineRasterizer.h"
 #include "itkCPRDepthAssignment.h"
 

@@ -3,51 +3,14 @@
 #define itkCPRDepthImageFilter_h
 
 #include "itkCPRDepthMode.h"
+#include "itkCPRDepthWorkspace.h"
 #include "itkCPRViewGeometry.h"
 #include "itkCenterlineTree.h"
 #include "itkImage.h"
 #include "itkImageSource.h"
 
-#include <functional>
-#include <memory>
-
 namespace itk
 {
-namespace detail
-{
-/** The depth filter's work buffers (the centerline raster and the depth assignment), kept between updates so that
- * a new angle allocates nothing. Defined in itkCPRDepthImageFilter.cxx. */
-struct CPRDepthWorkspace;
-struct CPRDepthWorkspaceDeleter
-{
-  void
-  operator()(CPRDepthWorkspace * workspace) const;
-};
-using CPRDepthWorkspacePointer = std::unique_ptr<CPRDepthWorkspace, CPRDepthWorkspaceDeleter>;
-
-/** Row-major W x H results of ComputeCPRDepth, owned by the workspace.
- * \ingroup VesselReformation
- */
-struct CPRDepthResult
-{
-  const float *         Depth;
-  const unsigned char * Fixed;
-  const uint32_t *      Owner;
-};
-
-/** Rasterises \a tree into \a view (centerline pixels, docs/design.md 3.4 step 1), then assigns every pixel its depth,
- * owner and fixed flag by \a mode; \a rasterized is called in between. Creates \a workspace when null. The
- * non-template work of every CPRDepthImageFilter, compiled once. */
-CPRDepthResult
-ComputeCPRDepth(const CenterlineTree &        tree,
-                const CPRViewGeometry &       view,
-                CPRDepthMode                  mode,
-                bool                          fixLumen,
-                MultiThreaderBase *           threader,
-                CPRDepthWorkspacePointer &    workspace,
-                const std::function<void()> & rasterized);
-} // namespace detail
-
 /** \class CPRDepthImageFilter
  * \brief Computes the multipath CPR depth map of a centerline tree for a view (docs/design.md 3.4).
  *

@@ -4,6 +4,8 @@
 
 #include "itkCPRDepthImageFilter.h"
 
+#include "itkCPRDepthComputation.h"
+
 #include <algorithm>
 
 namespace itk
