@@ -135,6 +135,25 @@ ReformationParameters::EffectiveAnisotropy() const
   return 1.0 / (J * J);
 }
 
+static_assert(ReformationParameters::DefaultJumpThreshold == RelaxFilterType::DefaultJumpThreshold,
+              "the parameters' default jump threshold is the filter's");
+
+void
+ReformationParameters::ConfigureRelaxFilter(RelaxFilterType * filter) const
+{
+  filter->SetRelaxation(Relaxation);
+  if (Anisotropy)
+  {
+    filter->SetAnisotropy(*Anisotropy);
+  }
+  else
+  {
+    filter->SetJumpThreshold(JumpThreshold ? *JumpThreshold : DefaultJumpThreshold);
+  }
+  filter->SetNumberOfIterations(static_cast<unsigned int>(Iterations));
+  filter->SetSolver(Solver);
+}
+
 itk::CPRViewSpecification
 ReformationParameters::ToViewSpecification() const
 {

@@ -100,6 +100,11 @@ struct ReformationParameters
   /** \return the view part as itk::CPRDepthImageFilter takes it (default margin). */
   itk::CPRViewSpecification
   ToViewSpecification() const;
+
+  /** Sets the relaxation part on \a filter: w, the range kernel (J or a, as given; J's default when neither), N and
+   * the solver. The one place the logic's relax parameters reach a relax filter. */
+  void
+  ConfigureRelaxFilter(RelaxFilterType * filter) const;
 };
 
 /** The rotation axis as a user writes it: "S" (or I, A, P, L, R), "x,y,z" in LPS, or "auto".

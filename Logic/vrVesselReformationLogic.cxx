@@ -40,26 +40,6 @@ SecondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-static_assert(ReformationParameters::DefaultJumpThreshold == RelaxFilterType::DefaultJumpThreshold,
-              "the logic's default jump threshold is the filter's");
-
-/** Sets w, the range kernel (J or a, as the parameters give it), N and the solver on \a filter. */
-void
-ConfigureRelaxFilter(RelaxFilterType * filter, const ReformationParameters & parameters)
-{
-  filter->SetRelaxation(parameters.Relaxation);
-  if (parameters.Anisotropy)
-  {
-    filter->SetAnisotropy(*parameters.Anisotropy);
-  }
-  else
-  {
-    filter->SetJumpThreshold(parameters.JumpThreshold ? *parameters.JumpThreshold
-                                                      : ReformationParameters::DefaultJumpThreshold);
-  }
-  filter->SetNumberOfIterations(static_cast<unsigned int>(parameters.Iterations));
-  filter->SetSolver(parameters.Solver);
-}
 } // namespace
 
 struct VesselReformationLogic::Internals
@@ -439,7 +419,7 @@ VesselReformationLogic::Internals::ConfigurePipeline()
   ChooseRelaxFilter();
   Relax->SetInput(Depth->GetDepthOutput());
   Relax->SetFixedMask(Depth->GetFixedMaskOutput());
-  ConfigureRelaxFilter(Relax, Parameters);
+  Parameters.ConfigureRelaxFilter(Relax);
 
   for (ResampleFilterType * resample : { UnfilteredResample.GetPointer(), RelaxedResample.GetPointer() })
   {
@@ -824,7 +804,7 @@ VesselReformationLogic::RelaxDepthImage(const DepthImageType *        depth,
   }
   filter->SetInput(depth);
   filter->SetFixedMask(mask);
-  ConfigureRelaxFilter(filter, parameters);
+  parameters.ConfigureRelaxFilter(filter);
   if (progress)
   {
     RelaxFilterType * raw = filter;
