@@ -354,7 +354,7 @@ LLVMFuzzerTestOneInput(const std::uint8_t * data, std::size_t size)
   std::vector<std::string> names;
   for (std::size_t k = 0; k < files.size(); ++k)
   {
-    char name[16];
+    char name[24];
     std::snprintf(name, sizeof(name), "IM%04zu.dcm", k + 1);
     names.push_back((folder / name).string());
     std::ofstream(names.back(), std::ios::binary)
