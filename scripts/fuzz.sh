@@ -19,9 +19,11 @@
 # so that every build replays it.
 #
 # "all" prints one row per harness: executions, coverage (libFuzzer's cov: edges and ft: features at the end),
-# the working corpus (files), findings; then merges each working corpus into Testing/Fuzz/corpus/<READER>/ with
-# -merge=1 on edge coverage only (-use_counters=0), so that only inputs reaching new code are added (tens, not
-# thousands) and CI replays them (Testing/Fuzz/CMakeLists.txt: one test per corpus file). Review and commit them.
+# the working corpus (files), findings; then merges each working corpus into Testing/Fuzz/corpus/<READER>/:
+# libFuzzer's -merge=1 (edge coverage, -use_counters=0) runs every input, and of those reaching edges the seeds do
+# not, the ones reaching the most new edges are added, at most VR_FUZZ_MERGE_CAP (20) per harness and round, so that
+# the committed corpus stays tens of files and CI replays it (Testing/Fuzz/CMakeLists.txt: a test per corpus file).
+# Review and commit them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -lt 2 ]; then
@@ -58,6 +60,7 @@ fi
 cmake --build "$build" --target "${selected[@]/#/vrFuzz_}" vrReadDicomSeries
 jobs=${VR_FUZZ_JOBS:-$(($(nproc) / 2))}
 ((jobs >= 1)) || jobs=1
+cap=${VR_FUZZ_MERGE_CAP:-20}
 
 # The flags one harness runs with. Each input is written to a file and read back by the real reader: 64 KiB covers
 # every seed. An input that takes more than 10 s or 2 GiB is a finding (a hang, or an allocation a header asked
@@ -110,9 +113,9 @@ for reader in "${selected[@]}"; do
   fi
   after=$(find "$work" -maxdepth 1 \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l)
   findings=$((after - before))
-  # libFuzzer's final statistics (summed over the processes) and its last status line (the largest coverage seen).
+  # libFuzzer's final statistics (summed over the processes) and its last status line with the largest coverage.
   executions=$(cat "${logs[@]}" | sed -n 's/^stat::number_of_executed_units: *//p' | awk '{s += $1} END {print s + 0}')
-  coverage=$(cat "${logs[@]}" | grep -o 'cov: [0-9]* ft: [0-9]*' | awk '$2 > c {c = $2; f = $4} END {print c + 0 " / " f + 0}')
+  coverage=$(cat "${logs[@]}" | grep -o 'cov: [0-9]* ft: [0-9]*' | awk '$2 >= c {c = $2; f = $4} END {print c + 0 " / " f + 0}')
   corpus=$(find "$work/corpus" -type f | wc -l)
   if ((findings > 0 || status != 0)); then
     failed=1
@@ -128,14 +131,48 @@ echo "| --- | ---: | ---: | ---: | ---: | ---: |"
 printf '%s\n' "${rows[@]}"
 
 echo
-echo "Merging each working corpus into Testing/Fuzz/corpus/<reader>/ (edge coverage only):"
+echo "Merging each working corpus into Testing/Fuzz/corpus/<reader>/ (at most $cap inputs each, by new edges):"
 for reader in "${selected[@]}"; do
   work="$build/fuzz/$reader"
   seeds="$root/Testing/Fuzz/corpus/$reader"
-  count=$(find "$seeds" -type f | wc -l)
+  scratch=$(mktemp -d)
+  # libFuzzer's merge runs every input once and records the edges each reaches in its control file; the selection
+  # below is ours, so that the committed corpus stays small.
   # shellcheck disable=SC2046
-  (cd "$work" && "../../bin/vrFuzz_$reader" -merge=1 -use_counters=0 $(flags_of "$reader") "$seeds" corpus \
-    > merge.log 2>&1) || echo "  $reader: the merge failed, see $work/merge.log"
-  echo "  $reader: $count seed files, $(($(find "$seeds" -type f | wc -l) - count)) added"
+  (cd "$work" && "../../bin/vrFuzz_$reader" -merge=1 -use_counters=0 -merge_control_file="$scratch/control" \
+    $(flags_of "$reader") "$scratch" "$seeds" corpus > merge.log 2>&1) || echo "  $reader: the merge failed, see $work/merge.log"
+  python3 - "$scratch/control" "$seeds" "$work" "$cap" "$reader" <<'PY' || echo "  $reader: no merge (no control file?)"
+import hashlib, os, shutil, sys
+control, seeds, work, cap, reader = sys.argv[1], sys.argv[2], sys.argv[3], int(sys.argv[4]), sys.argv[5]
+lines = open(control).read().split('\n')
+count = int(lines[0])
+files = lines[2:2 + count]
+edges = {}
+for line in lines[2 + count:]:
+    words = line.split()
+    if len(words) >= 2 and words[0] == 'COV':
+        edges[int(words[1])] = set(words[2:])
+def path(k):
+    return files[k] if os.path.isabs(files[k]) else os.path.join(work, files[k])
+is_seed = [os.path.dirname(os.path.abspath(path(k))) == os.path.abspath(seeds) for k in range(count)]
+covered = set().union(*(edges.get(k, set()) for k in range(count) if is_seed[k]))
+candidates = [k for k in range(count) if not is_seed[k] and k in edges]
+total = len(set().union(covered, *(edges[k] for k in candidates)) - covered)
+added = 0
+gained = 0
+while added < cap:
+    best = max(candidates, default=None, key=lambda k: (len(edges[k] - covered), -os.path.getsize(path(k))))
+    if best is None or not edges[best] - covered:
+        break
+    gained += len(edges[best] - covered)
+    covered |= edges[best]
+    candidates.remove(best)
+    data = open(path(best), 'rb').read()
+    shutil.copyfile(path(best), os.path.join(seeds, hashlib.sha1(data).hexdigest()))
+    added += 1
+print(f"  {reader}: {sum(is_seed)} seed files; {added} added, reaching {gained} of the {total} edges the working "
+      f"corpus reaches beyond the seeds")
+PY
+  rm -rf "$scratch"
 done
 exit $failed
