@@ -23,7 +23,7 @@
 # libFuzzer's -merge=1 (edge coverage, -use_counters=0) runs every input, and of those reaching edges the seeds do
 # not, the ones reaching the most new edges are added, at most VR_FUZZ_MERGE_CAP (20) per harness and round, so that
 # the committed corpus stays tens of files and CI replays it (Testing/Fuzz/CMakeLists.txt: a test per corpus file).
-# Review and commit them.
+# They are named fuzz-<SHA-1>: mostly invalid files, unlike the named seeds. Review and commit them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ $# -lt 2 ]; then
@@ -168,7 +168,7 @@ while added < cap:
     covered |= edges[best]
     candidates.remove(best)
     data = open(path(best), 'rb').read()
-    shutil.copyfile(path(best), os.path.join(seeds, hashlib.sha1(data).hexdigest()))
+    shutil.copyfile(path(best), os.path.join(seeds, 'fuzz-' + hashlib.sha1(data).hexdigest()))
     added += 1
 print(f"  {reader}: {sum(is_seed)} seed files; {added} added, reaching {gained} of the {total} edges the working "
       f"corpus reaches beyond the seeds")
