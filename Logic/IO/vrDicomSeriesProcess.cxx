@@ -15,12 +15,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 extern char ** environ;
@@ -141,13 +146,17 @@ SignalName(int signal)
 }
 
 /** Runs \a helper with \a arguments, its standard output and error into \a messages; returns waitpid's status, or
- * -1 (errno kept in \a spawnError) when it could not be started. */
+ * -1 (errno kept in \a spawnError) when it could not be started. A helper still running after \a timeoutSeconds is
+ * killed (SIGKILL) and \a timedOut set. */
 int
 RunHelper(const std::string &              helper,
           const std::vector<std::string> & arguments,
           const fs::path &                 messages,
-          int &                            spawnError)
+          double                           timeoutSeconds,
+          int &                            spawnError,
+          bool &                           timedOut)
 {
+  timedOut = false;
   std::vector<char *> argv;
   argv.push_back(const_cast<char *>(helper.c_str()));
   for (const std::string & argument : arguments)
@@ -167,18 +176,70 @@ RunHelper(const std::string &              helper,
   {
     return -1;
   }
-  int status = 0;
-  while (::waitpid(child, &status, 0) < 0)
+  // Polled rather than waited for, so that a hang (GDCM in a loop on a corrupt length, a stalled network folder) ends
+  // at the bound: after 1 ms at first, doubling to every 50 ms, so that a quick read is not slowed down.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
+  auto       pause = std::chrono::milliseconds(1);
+  int        status = 0;
+  for (;;)
   {
-    if (errno != EINTR)
+    const pid_t done = ::waitpid(child, &status, WNOHANG);
+    if (done == child)
+    {
+      return status;
+    }
+    if (done < 0 && errno != EINTR)
     {
       spawnError = errno;
       return -1;
     }
+    if (std::chrono::steady_clock::now() >= deadline)
+    {
+      timedOut = true;
+      ::kill(child, SIGKILL);
+      while (::waitpid(child, &status, 0) < 0 && errno == EINTR)
+      {
+      }
+      return status;
+    }
+    std::this_thread::sleep_for(pause);
+    pause = std::min(pause * 2, std::chrono::milliseconds(50));
   }
-  return status;
+}
+
+/** The regular files directly in \a folder, as the helper lists them. */
+std::size_t
+CountFiles(const std::string & folder)
+{
+  std::size_t     count = 0;
+  std::error_code error;
+  for (const auto & entry : fs::directory_iterator(folder, error))
+  {
+    if (entry.is_regular_file(error))
+    {
+      ++count;
+    }
+  }
+  return count;
 }
 } // namespace
+
+double
+DicomSeriesTimeoutSeconds(std::size_t fileCount)
+{
+  if (const char * configured = std::getenv("VR_DICOM_SERIES_TIMEOUT"))
+  {
+    char *       end = nullptr;
+    const double seconds = std::strtod(configured, &end);
+    if (end == configured || *end != '\0' || !std::isfinite(seconds) || seconds <= 0.0)
+    {
+      throw InputError("VR_DICOM_SERIES_TIMEOUT is \"" + std::string(configured) +
+                       "\"; it must be a positive number of seconds (the bound on reading a DICOM series)");
+    }
+    return seconds;
+  }
+  return 60.0 + 0.25 * static_cast<double>(fileCount);
+}
 
 std::string
 DicomSeriesReaderPath()
@@ -236,11 +297,23 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
   {
     throw InputError(where + ": cannot read DICOM: no temporary folder could be made for the reader process");
   }
-  const fs::path output = scratch.Path() / "series.mha";
-  const fs::path progress = scratch.Path() / "progress.txt";
-  const fs::path messages = scratch.Path() / "messages.txt";
-  int            spawnError = 0;
-  const int      status = RunHelper(helper, { folder, output.string(), progress.string() }, messages, spawnError);
+  const fs::path    output = scratch.Path() / "series.mha";
+  const fs::path    progress = scratch.Path() / "progress.txt";
+  const fs::path    messages = scratch.Path() / "messages.txt";
+  const std::size_t fileCount = CountFiles(folder);
+  double            timeout = 0.0;
+  try
+  {
+    timeout = DicomSeriesTimeoutSeconds(fileCount);
+  }
+  catch (const InputError & error)
+  {
+    throw InputError(where + ": " + error.what());
+  }
+  int       spawnError = 0;
+  bool      timedOut = false;
+  const int status =
+    RunHelper(helper, { folder, output.string(), progress.string() }, messages, timeout, spawnError, timedOut);
   if (status < 0)
   {
     throw InputError(where + ": cannot start the DICOM reader process " + helper + ": " + std::strerror(spawnError));
@@ -269,6 +342,16 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
       errorLine = k;
       break;
     }
+  }
+  if (timedOut)
+  {
+    std::ostringstream bound;
+    bound << timeout << " s";
+    const std::string doing = step.empty() ? "reading the file " + lastFile : step;
+    throw InputError(where + ": the DICOM reader process did not finish within " + bound.str() + " (for " +
+                     std::to_string(fileCount) + (fileCount == 1 ? " file" : " files") +
+                     "; VR_DICOM_SERIES_TIMEOUT may set another bound) and was stopped while " + doing +
+                     "; the series is not read");
   }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 1 && errorLine < lines.size())
   {

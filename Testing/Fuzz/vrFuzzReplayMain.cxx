@@ -11,9 +11,24 @@
 #include <iterator>
 #include <vector>
 
+// The custom mutators' fallback: never called in a replay, but the harnesses that have one refer to it.
+extern "C" std::size_t
+LLVMFuzzerMutate(std::uint8_t *, std::size_t size, std::size_t)
+{
+  return size;
+}
+
+// A harness's set-up (libFuzzer calls it once before the first input), where the harness has one.
+extern "C" __attribute__((weak)) int
+LLVMFuzzerInitialize(int * argc, char *** argv);
+
 int
 main(int argc, char * argv[])
 {
+  if (LLVMFuzzerInitialize != nullptr)
+  {
+    LLVMFuzzerInitialize(&argc, &argv);
+  }
   std::vector<std::filesystem::path> inputs;
   for (int k = 1; k < argc; ++k)
   {

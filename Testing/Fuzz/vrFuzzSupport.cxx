@@ -1,6 +1,9 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrFuzzSupport.h"
 
+#include "vrInputError.h"
+#include "vrVolumeIO.h"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -38,16 +41,49 @@ public:
 private:
   std::filesystem::path m_Path;
 };
+
+const InputFolder &
+TheInputFolder()
+{
+  static const InputFolder folder;
+  return folder;
+}
 } // namespace
+
+std::string
+InputFolder()
+{
+  return TheInputFolder().Path().string();
+}
 
 std::string
 WriteInput(const std::uint8_t * data, std::size_t size, const std::string & extension)
 {
-  static const InputFolder folder;
-  const std::string        path = (folder.Path() / ("input" + extension)).string();
-  std::ofstream            output(path, std::ios::binary | std::ios::trunc);
+  const std::string path = (TheInputFolder().Path() / ("input" + extension)).string();
+  std::ofstream     output(path, std::ios::binary | std::ios::trunc);
   output.write(reinterpret_cast<const char *>(data), static_cast<std::streamsize>(size));
   output.close();
   return path;
+}
+
+void
+ReadVolumeOfBoundedSize(const std::string & path)
+{
+  try
+  {
+    const itk::ImageIOBase::Pointer io = InspectVolumeFile(path);
+    std::uint64_t                   voxels = 1;
+    for (unsigned int d = 0; d < io->GetNumberOfDimensions(); ++d)
+    {
+      voxels *= io->GetDimensions(d); // each at most MaximumVolumeVoxels in all, checked above: no overflow
+    }
+    if (voxels <= (std::uint64_t{ 1 } << 22))
+    {
+      ReadVolume(path);
+    }
+  }
+  catch (const InputError &)
+  {
+  }
 }
 } // namespace vr::fuzz

@@ -25,6 +25,7 @@
 #include <vtkStringArray.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -113,7 +114,9 @@ ExpectSamePolyData(vtkPolyData * ours, vtkPolyData * reference, const std::strin
     double b[3];
     ours->GetPoint(p, a);
     reference->GetPoint(p, b);
-    differences += a[0] != b[0] || a[1] != b[1] || a[2] != b[2] ? 1 : 0;
+    // NaN read as NaN is the same reading (a fuzzed file's point can be one; the centerline checks refuse it later).
+    const auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
+    differences += same(a[0], b[0]) && same(a[1], b[1]) && same(a[2], b[2]) ? 0 : 1;
   }
   EXPECT_EQ(differences, 0) << where << ": points differ";
   EXPECT_EQ(ours->GetNumberOfVerts() + ours->GetNumberOfPolys() + ours->GetNumberOfStrips(), 0) << where;
@@ -165,17 +168,33 @@ CorpusFolder()
 
 TEST(LegacyVTKReader, EveryValidCorpusFileReadsAsVTKReadsIt)
 {
+  // The named seeds are valid and must be read; the inputs fuzzing added (fuzz-<SHA-1>, scripts/fuzz.sh) are mostly
+  // not, and are compared with VTK's reading where ours accepts them.
   int files = 0;
+  int fuzzed = 0;
   for (const auto & entry : std::filesystem::directory_iterator(CorpusFolder()))
   {
-    if (entry.path().filename().string().rfind("crash-", 0) == 0)
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("crash-", 0) == 0)
     {
       continue;
+    }
+    if (name.rfind("fuzz-", 0) == 0)
+    {
+      try
+      {
+        vr::detail::ReadLegacyVTKPolyData(entry.path().string(), "centerline file " + entry.path().string());
+      }
+      catch (const vr::InputError &)
+      {
+        continue;
+      }
+      ++fuzzed;
     }
     ExpectSameAsVTK(entry.path().string());
     ++files;
   }
-  EXPECT_GE(files, 4);
+  EXPECT_GE(files - fuzzed, 4);
 }
 
 TEST(LegacyVTKReader, WhatTheCenterlineWriterWritesReadsAsVTKReadsIt)

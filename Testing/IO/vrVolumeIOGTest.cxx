@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Volume reader and writer (issue 3): ITK formats keep geometry and values, a DICOM folder is read as the series
 // with the most files, and bad volumes are input errors that name the file.
+#include "vrDicomSeriesProcess.h"
 #include "vrInputError.h"
 #include "vrTestFiles.h"
 #include "vrVolumeIO.h"
@@ -18,6 +19,7 @@
 
 #include <cstdlib>
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -337,6 +339,45 @@ TEST(BadVolumeInput, AMissingDICOMReaderProcessIsSaidSo)
   EXPECT_MESSAGE_HAS(message, folder.Path().string());
   EXPECT_MESSAGE_HAS(message, "vrReadDicomSeries was not found");
   EXPECT_EQ(vr::ReadVolume(folder.Path().string())->GetLargestPossibleRegion().GetSize()[2], 3u);
+}
+
+TEST(BadVolumeInput, AHangingDICOMReaderProcessIsStoppedAtTheBound)
+{
+  // The bound by hand: 60 s plus a quarter second per file.
+  ::unsetenv("VR_DICOM_SERIES_TIMEOUT");
+  EXPECT_DOUBLE_EQ(vr::detail::DicomSeriesTimeoutSeconds(0), 60.0);
+  EXPECT_DOUBLE_EQ(vr::detail::DicomSeriesTimeoutSeconds(500), 185.0);
+
+  // A stand-in reader that says which file it opens and then hangs (as GDCM in a loop would): with a bound of 1 s,
+  // the read fails after about a second, naming the folder and that file, instead of waiting for ever.
+  vr::test::ScopedTemporaryFolder folder;
+  const std::string               series = folder.File("series");
+  std::filesystem::create_directories(series);
+  WriteDicomSeries(MakeDicomVolume(3), series, "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+  const std::string reader = folder.File("hanging-reader.sh");
+  vr::test::WriteTextFile(reader, "#!/bin/sh\necho \"file $1/IM-stuck.dcm\" >> \"$3\"\nexec sleep 600\n");
+  std::filesystem::permissions(reader, std::filesystem::perms::owner_all);
+  ::setenv("VR_DICOM_SERIES_READER", reader.c_str(), 1);
+  ::setenv("VR_DICOM_SERIES_TIMEOUT", "1", 1);
+  const auto        start = std::chrono::steady_clock::now();
+  const std::string message = InputErrorOf([&] { vr::ReadVolume(series); });
+  const double      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GE(seconds, 1.0);
+  EXPECT_LT(seconds, 30.0);
+  EXPECT_MESSAGE_HAS(message, "volume folder " + series);
+  EXPECT_MESSAGE_HAS(message, "did not finish within 1 s (for 3 files");
+  EXPECT_MESSAGE_HAS(message, "reading the file " + series + "/IM-stuck.dcm");
+
+  // A bound that is not a positive number is said to be wrong, by the variable's name.
+  ::setenv("VR_DICOM_SERIES_TIMEOUT", "-5", 1);
+  const std::string wrongBound = InputErrorOf([&] { vr::ReadVolume(series); });
+  EXPECT_MESSAGE_HAS(wrongBound, "volume folder " + series);
+  EXPECT_MESSAGE_HAS(wrongBound, "VR_DICOM_SERIES_TIMEOUT is \"-5\"");
+  ::unsetenv("VR_DICOM_SERIES_TIMEOUT");
+  ::unsetenv("VR_DICOM_SERIES_READER");
+
+  // The real reader is well within the default bound.
+  EXPECT_EQ(vr::ReadVolume(series)->GetLargestPossibleRegion().GetSize()[2], 3u);
 }
 
 TEST(BadVolumeOutput, AFailedWriteLeavesTheExistingFile)
