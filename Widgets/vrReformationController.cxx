@@ -248,10 +248,9 @@ ReformationController::ChooseFactorLocked() const
 }
 
 void
-ReformationController::RecordTime(unsigned int factor, double seconds)
+ReformationController::RecordTimeLocked(unsigned int factor, double seconds)
 {
-  std::lock_guard<std::mutex> lock(m_Mutex);
-  auto &                      times = m_Times[FactorIndex(factor)];
+  auto & times = m_Times[FactorIndex(factor)];
   times.push_back(seconds);
   if (times.size() > RecentTimes)
   {
@@ -308,6 +307,13 @@ ReformationController::ImageShown(std::uint64_t requestId)
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
     m_ShownId = std::max(m_ShownId, requestId);
+    if (m_AwaitingDisplay && m_AwaitingDisplay->RequestId == requestId)
+    {
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_AwaitingDisplay->Start).count();
+      RecordTimeLocked(m_AwaitingDisplay->Factor, seconds);
+      m_AwaitingDisplay.reset();
+    }
   }
   m_Wake.notify_all();
 }
@@ -618,8 +624,18 @@ ReformationController::Update(const Job &                   job,
       result->PreviewSeconds = std::chrono::duration<double>(Clock::now() - previewStart).count();
       if (result->StagesRun.Depth > 0)
       {
-        // A new view (an angle step): what the next step's choice of preview factor is made from.
-        RecordTime(factor, result->UpdateSeconds + result->PreviewSeconds);
+        // A new view (an angle step): what the next step's choice of preview factor is made from. Where the view
+        // reports its images on screen, the time runs until then (the drawing is part of each frame the user sees);
+        // else it is the worker's part alone.
+        std::lock_guard<std::mutex> lock(m_Mutex);
+        if (m_SurfaceWaitsForDisplay)
+        {
+          m_AwaitingDisplay = DisplayTiming{ job.Id, factor, start };
+        }
+        else
+        {
+          RecordTimeLocked(factor, result->UpdateSeconds + result->PreviewSeconds);
+        }
       }
     }
     std::lock_guard<std::mutex> lock(m_Mutex);

@@ -271,9 +271,10 @@ private:
   /** The factor for an Interactive step now (the forced one, or the adaptive choice). Under m_Mutex. */
   unsigned int
   ChooseFactorLocked() const;
-  /** Keeps the time of an update at \a factor whose view changed. */
+  /** Keeps the time of an update at \a factor whose view changed (until its image was on screen where the view
+   * reports that, ImageShown()). Under m_Mutex. */
   void
-  RecordTime(unsigned int factor, double seconds);
+  RecordTimeLocked(unsigned int factor, double seconds);
   /** The pause after an Interactive step ended: the full-resolution update when the step was a preview. GUI thread. */
   void
   Refine();
@@ -311,13 +312,21 @@ private:
   double       m_FrameBudget{ 0.05 };
   /** Recent update times at each of vr::PreviewFactors, newest last. */
   std::array<std::vector<double>, PreviewFactors.size()> m_Times;
-  bool                                                   m_Quit{ false };
-  std::uint64_t                                          m_NextId{ 1 };
-  StageCounts                                            m_Counts;
-  RequestStatistics                                      m_Statistics;
-  bool                                                   m_SurfaceWaitsForDisplay{ false };
-  double                                                 m_SurfaceWaitSeconds{ 1.0 };
-  std::uint64_t                                          m_ShownId{ 0 };
+  /** An angle step whose time runs until ImageShown() reports its image on screen. */
+  struct DisplayTiming
+  {
+    std::uint64_t                         RequestId{ 0 };
+    unsigned int                          Factor{ 1 };
+    std::chrono::steady_clock::time_point Start;
+  };
+  std::optional<DisplayTiming> m_AwaitingDisplay;
+  bool                         m_Quit{ false };
+  std::uint64_t                m_NextId{ 1 };
+  StageCounts                  m_Counts;
+  RequestStatistics            m_Statistics;
+  bool                         m_SurfaceWaitsForDisplay{ false };
+  double                       m_SurfaceWaitSeconds{ 1.0 };
+  std::uint64_t                m_ShownId{ 0 };
   /** The latest request whose images were handed to the GUI thread. */
   std::uint64_t m_DeliveredId{ 0 };
 
