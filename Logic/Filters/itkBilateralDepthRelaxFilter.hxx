@@ -230,8 +230,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
       this->UpdateProgress(static_cast<float>(done) / iterations);
       this->ThrowIfAborted(done);
     },
-    &m_KernelWorkspace,
-    m_PassesBetweenSynchronizations);
+    &m_KernelWorkspace);
 }
 
 template<typename TImage, typename TMaskImage>
@@ -412,8 +411,6 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Inde
   os << indent << "JumpThresholdWasSet: " << (m_JumpThresholdWasSet ? "yes (J set last)" : "no (a set last)")
      << std::endl;
   os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
-  os << indent << "PassesBetweenSynchronizations: " << m_PassesBetweenSynchronizations
-     << (m_PassesBetweenSynchronizations == 0 ? " (chosen by the kernel)" : "") << std::endl;
   os << indent << "Solver: " << m_Solver << std::endl;
   os << indent << "SteadyTolerance (mm): " << m_SteadyTolerance << std::endl;
   os << indent << "SteadyReport: " << m_SteadyReport.OuterIterations << " outer iterations, " << m_SteadyReport.Cycles

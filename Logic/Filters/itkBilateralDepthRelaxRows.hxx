@@ -328,22 +328,20 @@ VR_ALWAYS_INLINE std::size_t
   return (grid.Width - 1) / V::Lanes * V::Lanes;
 }
 
-/** One Jacobi step of row y (input rows \a row and \a below) into \a out; leaves the edges below the row in
- * scratch.Down*. */
+/** One Jacobi step of row y into \a out; leaves the edges below the row in scratch.Down*. */
 template<typename V, bool HasRowBelow, typename TWeight>
 VR_ALWAYS_INLINE void
 RelaxRow(const RelaxGrid &  grid,
          const TWeight &    weight,
          typename V::Float  lastVectorRightEdges,
-         const float *      row,
-         const float *      below,
+         const float *      current,
          std::size_t        y,
          float *            out,
          const RowScratch & scratch)
 {
   const std::size_t stride = grid.Stride;
-  const RowPointers rows{ row,
-                          below,
+  const RowPointers rows{ current + 2 * y * stride,
+                          current + 2 * (y + 1) * stride,
                           stride,
                           grid.SelfWeight + y * stride,
                           scratch.UpWeight,
@@ -414,31 +412,6 @@ RelaxRowPair(const RelaxGrid &  grid,
                                             lowerLeftFlux);
 }
 
-/** 1 in the lanes of a row's last vector whose column has a right neighbour, 0 elsewhere. */
-template<typename V>
-VR_ALWAYS_INLINE typename V::Float
-LastVectorRightEdges(const RelaxGrid & grid)
-{
-  typename V::Float edges;
-  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
-  {
-    // Only columns left of the last one have a right neighbour.
-    edges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
-  }
-  return edges;
-}
-
-/** The image's first row has no edges above it: weight and flux 0. */
-VR_ALWAYS_INLINE void
-ClearUpEdges(const RelaxGrid & grid, const RowScratch & scratch)
-{
-  for (std::size_t x = 0; x < grid.Stride; ++x)
-  {
-    scratch.UpWeight[x] = 0.0f;
-    scratch.UpFlux[x] = 0.0f;
-  }
-}
-
 /** One Jacobi iteration of rows [rowBegin, rowEnd): reads \a current (all rows), writes those rows of \a next.
  * The edges above the band come from relaxing the row above into a discarded row with the very same code, so
  * a band boundary changes no bit. */
@@ -451,19 +424,21 @@ SweepRows(const RelaxGrid & grid,
           std::size_t       rowEnd,
           RowScratch &      scratch)
 {
-  const TWeight           weight{};
-  const typename V::Float lastVectorRightEdges = LastVectorRightEdges<V>(grid);
-  ClearUpEdges(grid, scratch);
+  const TWeight     weight{};
+  typename V::Float lastVectorRightEdges;
+  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
+  {
+    // Only columns left of the last one have a right neighbour.
+    lastVectorRightEdges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
+  }
+  for (std::size_t x = 0; x < grid.Stride; ++x)
+  {
+    scratch.UpWeight[x] = 0.0f;
+    scratch.UpFlux[x] = 0.0f;
+  }
   if (rowBegin > 0)
   {
-    RelaxRow<V, true>(grid,
-                      weight,
-                      lastVectorRightEdges,
-                      current + 2 * (rowBegin - 1) * grid.Stride,
-                      current + 2 * rowBegin * grid.Stride,
-                      rowBegin - 1,
-                      scratch.DiscardedRow,
-                      scratch);
+    RelaxRow<V, true>(grid, weight, lastVectorRightEdges, current, rowBegin - 1, scratch.DiscardedRow, scratch);
     SwapUpAndDown(scratch);
   }
   // Two rows at a time save loads and stores; a band's rows split into pairs and singles differently for
@@ -483,15 +458,13 @@ SweepRows(const RelaxGrid & grid,
   }
   for (; y < rowEnd; ++y)
   {
-    const float * row = current + 2 * y * grid.Stride;
     if (y + 1 < grid.Height)
     {
-      RelaxRow<V, true>(
-        grid, weight, lastVectorRightEdges, row, row + 2 * grid.Stride, y, next + 2 * y * grid.Stride, scratch);
+      RelaxRow<V, true>(grid, weight, lastVectorRightEdges, current, y, next + 2 * y * grid.Stride, scratch);
     }
     else
     {
-      RelaxRow<V, false>(grid, weight, lastVectorRightEdges, row, nullptr, y, next + 2 * y * grid.Stride, scratch);
+      RelaxRow<V, false>(grid, weight, lastVectorRightEdges, current, y, next + 2 * y * grid.Stride, scratch);
     }
     SwapUpAndDown(scratch);
   }
@@ -513,74 +486,6 @@ SweepRowsWith(const RelaxGrid & grid,
   else
   {
     SweepRows<V, RangeWeight<V>>(grid, current, next, rowBegin, rowEnd, scratch);
-  }
-}
-
-/** StartFunction: the edges above row \a first, as SweepRows computes them for a band starting there. */
-template<typename V, typename TWeight>
-VR_ALWAYS_INLINE void
-StartRows(const RelaxGrid & grid, const float * above, const float * row, std::size_t first, RowScratch & scratch)
-{
-  ClearUpEdges(grid, scratch);
-  if (first > 0)
-  {
-    RelaxRow<V, true>(
-      grid, TWeight{}, LastVectorRightEdges<V>(grid), above, row, first - 1, scratch.DiscardedRow, scratch);
-    SwapUpAndDown(scratch);
-  }
-}
-
-/** RowFunction: one row, as SweepRows relaxes it. */
-template<typename V, typename TWeight>
-VR_ALWAYS_INLINE void
-RelaxOneRow(const RelaxGrid & grid,
-            const float *     row,
-            const float *     below,
-            std::size_t       y,
-            float *           out,
-            RowScratch &      scratch)
-{
-  if (below)
-  {
-    RelaxRow<V, true>(grid, TWeight{}, LastVectorRightEdges<V>(grid), row, below, y, out, scratch);
-  }
-  else
-  {
-    RelaxRow<V, false>(grid, TWeight{}, LastVectorRightEdges<V>(grid), row, nullptr, y, out, scratch);
-  }
-  SwapUpAndDown(scratch);
-}
-
-template<typename V>
-VR_ALWAYS_INLINE void
-StartRowsWith(const RelaxGrid & grid, const float * above, const float * row, std::size_t first, RowScratch & scratch)
-{
-  if (grid.Isotropic)
-  {
-    StartRows<V, IsotropicWeight<V>>(grid, above, row, first, scratch);
-  }
-  else
-  {
-    StartRows<V, RangeWeight<V>>(grid, above, row, first, scratch);
-  }
-}
-
-template<typename V>
-VR_ALWAYS_INLINE void
-RelaxOneRowWith(const RelaxGrid & grid,
-                const float *     row,
-                const float *     below,
-                std::size_t       y,
-                float *           out,
-                RowScratch &      scratch)
-{
-  if (grid.Isotropic)
-  {
-    RelaxOneRow<V, IsotropicWeight<V>>(grid, row, below, y, out, scratch);
-  }
-  else
-  {
-    RelaxOneRow<V, RangeWeight<V>>(grid, row, below, y, out, scratch);
   }
 }
 
