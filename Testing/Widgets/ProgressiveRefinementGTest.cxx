@@ -3,6 +3,7 @@
 // resolution on the phantoms and the VMTK aorta, the choice of the preview factor, and the viewer while the user
 // drags: labelled previews, the logic's full-resolution CPR after the release, and a step aborting a refinement.
 #include "vrWidgetsTestSupport.h"
+#include "vrWindowTestFixture.h"
 
 #include "vrProgressiveRefinement.h"
 #include "vrTestFiles.h"
@@ -25,8 +26,6 @@ namespace
 {
 using namespace vr;
 using namespace vr::test;
-
-constexpr double StartAngle = 30.0;
 
 // ---------------------------------------------------------------------------------------------------------------
 // The rule, by hand.
@@ -248,28 +247,8 @@ TEST(PreviewDepth, TheVMTKAortasPreviewLiesWithinAMillimetreOfTheFullResolution)
 // ---------------------------------------------------------------------------------------------------------------
 // The viewer.
 
-class PreviewWidgetsTest : public ::testing::Test
+class PreviewWidgetsTest : public WindowOnSmallPhantomTest
 {
-protected:
-  void
-  SetUp() override
-  {
-    m_Window = MakeWindowOnSmallPhantom(StartAngle);
-    ASSERT_TRUE(m_Window->GetCPRView()->GetResult()) << m_Window->GetLastError().toStdString();
-  }
-
-  ViewerWindow &
-  Window()
-  {
-    return *m_Window;
-  }
-  ReformationController &
-  Controller()
-  {
-    return *m_Window->GetController();
-  }
-
-  std::unique_ptr<ViewerWindow> m_Window;
 };
 
 /** The CPR view's filtered image equals \a expected bit for bit. */

@@ -2,6 +2,7 @@
 // The widgets and the viewer window, driven as a user would (slider, spin boxes, mouse events) under a virtual X
 // server, checked against an independent run of the module logic on the same nodes.
 #include "vrWidgetsTestSupport.h"
+#include "vrWindowTestFixture.h"
 
 #include "ui_vrModulePanel.h"
 
@@ -56,8 +57,6 @@ namespace
 {
 using namespace vr;
 using namespace vr::test;
-
-constexpr double StartAngle = 30.0;
 
 /** Whole-run stage counts after minus before. */
 struct Runs
@@ -130,28 +129,8 @@ ExpectShows(ViewerWindow & window, VolumeNode * expected)
   EXPECT_LE(worst, 1) << "largest difference between the frame and the logic's CPR through window/level";
 }
 
-class WidgetsTest : public ::testing::Test
+class WidgetsTest : public WindowOnSmallPhantomTest
 {
-protected:
-  void
-  SetUp() override
-  {
-    m_Window = MakeWindowOnSmallPhantom(StartAngle);
-    ASSERT_TRUE(m_Window->GetCPRView()->GetResult()) << m_Window->GetLastError().toStdString();
-  }
-
-  ViewerWindow &
-  Window()
-  {
-    return *m_Window;
-  }
-  ReformationController &
-  Controller()
-  {
-    return *m_Window->GetController();
-  }
-
-  std::unique_ptr<ViewerWindow> m_Window;
 };
 
 TEST_F(WidgetsTest, StartsOnThePhantomAndShowsTheLogicsCPR)
