@@ -2,37 +2,14 @@
 #ifndef itkCPRResampleImageFilter_h
 #define itkCPRResampleImageFilter_h
 
+#include "itkCPRSamplingModes.h"
+#include "itkCPRVolumeSampler.h"
 #include "itkCPRViewGeometry.h"
 #include "itkImage.h"
 #include "itkImageSource.h"
-#include "itkInterpolateImageFunction.h"
 
 namespace itk
 {
-
-/** How the volume is interpolated at the cut surface. */
-enum class CPRInterpolationMode
-{
-  Linear,
-  Nearest,
-  /** Cubic B-spline. */
-  Cubic
-};
-
-/** How the samples of a slab are combined. */
-enum class CPRSlabMode
-{
-  /** Maximum intensity projection. */
-  MIP,
-  /** Minimum intensity projection. */
-  MinIP,
-  Mean
-};
-
-std::ostream &
-operator<<(std::ostream & os, CPRInterpolationMode mode);
-std::ostream &
-operator<<(std::ostream & os, CPRSlabMode mode);
 
 /** \class CPRResampleImageFilter
  * \brief Samples a volume along the cut surface of a CPR depth map (docs/design.md 3.6).
@@ -69,7 +46,6 @@ public:
   using OutputImageType = TOutputImage;
   using OutputPixelType = typename OutputImageType::PixelType;
   using OutputRegionType = typename OutputImageType::RegionType;
-  using InterpolatorType = InterpolateImageFunction<VolumeImageType, double>;
 
   itkNewMacro(Self);
   itkTypeMacro(CPRResampleImageFilter, ImageSource);
@@ -144,34 +120,16 @@ private:
   double               m_SlabThickness{ 0.0 };
   CPRSlabMode          m_SlabMode{ CPRSlabMode::MIP };
 
-  /** Trilinear interpolation straight from the volume's buffer: the same arithmetic, in the same order, as
-   * itk::LinearInterpolateImageFunction (3D), which costs most of a CPR's time through its general interface.
-   * \a index must pass IsInsideBuffer. */
-  double
-  InterpolateLinearly(const ContinuousIndexType & index) const;
-  /** The smallest voxel value, computed again only when the volume (object, buffer or modification time)
-   * changes: rotating the view does not change it. */
-  OutputPixelType
-  VolumeMinimum();
-
-  // Per-update state, set in BeforeThreadedGenerateData.
-  typename InterpolatorType::Pointer          m_Interpolator;
-  const typename VolumeImageType::PixelType * m_VolumeBuffer{ nullptr };
-  typename VolumeImageType::IndexType         m_VolumeBufferStart;
-  typename VolumeImageType::IndexType         m_VolumeBufferEnd;
-  typename VolumeImageType::OffsetValueType   m_VolumeOffsetTable[3]{};
-
-  // VolumeMinimum()'s cache.
-  const VolumeImageType *                     m_MinimumVolume{ nullptr };
-  const typename VolumeImageType::PixelType * m_MinimumBuffer{ nullptr };
-  ModifiedTimeType                            m_MinimumVolumeTime{ 0 };
-  OutputPixelType                             m_CachedVolumeMinimum{};
-  OutputPixelType                             m_OutsideValue{};
-  ContinuousIndexType                         m_IndexAtCenter;
-  Vector<double, 3>                           m_IndexStepPerColumn;
-  Vector<double, 3>                           m_IndexStepPerRow;
-  Vector<double, 3>                           m_IndexStepPerMillimetreDepth;
-  std::vector<double>                         m_SlabOffsets;
+  // Per-update state, set in BeforeThreadedGenerateData: the sampling the path view's filters share.
+  detail::CPRVolumeSampler<VolumeImageType> m_Sampler;
+  // The volume's minimum, kept between updates (rotating the view does not change it).
+  detail::CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
+  OutputPixelType                           m_OutsideValue{};
+  ContinuousIndexType                       m_IndexAtCenter;
+  Vector<double, 3>                         m_IndexStepPerColumn;
+  Vector<double, 3>                         m_IndexStepPerRow;
+  Vector<double, 3>                         m_IndexStepPerMillimetreDepth;
+  std::vector<double>                       m_SlabOffsets;
 };
 
 } // namespace itk
