@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <sstream>
+#include <utility>
 
 namespace itk
 {
@@ -178,22 +179,21 @@ struct MaskAccess
   double
   Sample(double x, double y, double z) const
   {
-    const double fx = std::floor(x);
-    const double fy = std::floor(y);
-    const double fz = std::floor(z);
-    const double tx = x - fx;
-    const double ty = y - fy;
-    const double tz = z - fz;
+
     // Far outside (and NaN): background, before any conversion to an integer.
-    if (!(fx >= -1.0 && fy >= -1.0 && fz >= -1.0 && fx < static_cast<double>(Size[0]) &&
-          fy < static_cast<double>(Size[1]) && fz < static_cast<double>(Size[2])))
+    if (!(x >= -1.0 && y >= -1.0 && z >= -1.0 && x < static_cast<double>(Size[0]) && y < static_cast<double>(Size[1]) &&
+          z < static_cast<double>(Size[2])))
     {
       return 0.0;
     }
-    const long x0 = static_cast<long>(fx);
-    const long y0 = static_cast<long>(fy);
-    const long z0 = static_cast<long>(fz);
-    double     v[8];
+    // floor() of a number >= -1 by truncation, without a call.
+    const long   x0 = static_cast<long>(x + 1.0) - 1;
+    const long   y0 = static_cast<long>(y + 1.0) - 1;
+    const long   z0 = static_cast<long>(z + 1.0) - 1;
+    const double tx = x - static_cast<double>(x0);
+    const double ty = y - static_cast<double>(y0);
+    const double tz = z - static_cast<double>(z0);
+    double       v[8];
     if (x0 >= 0 && y0 >= 0 && z0 >= 0 && x0 + 1 < Size[0] && y0 + 1 < Size[1] && z0 + 1 < Size[2])
     {
       const unsigned char * p = Buffer + x0 + y0 * Stride[1] + z0 * Stride[2];
@@ -267,8 +267,7 @@ public:
     m_Mask.ToIndex(lateral, m_DU, true);
     m_Mask.ToIndex(up, m_DV, true);
 
-    const long start = m_HalfSide * m_Side + m_HalfSide;
-    if (Evaluate(start) < Threshold)
+    if (Evaluate(m_HalfSide, m_HalfSide) < Threshold)
     {
       return result;
     }
@@ -276,17 +275,17 @@ public:
 
     m_Stack.clear();
     m_Boundary.clear();
-    m_Stack.push_back(start);
+    m_Stack.push_back({ m_HalfSide, m_HalfSide });
     std::size_t count = 0;
     bool        clipped = false;
     const long  offsets[4] = { 1, -1, m_Side, -m_Side };
     while (!m_Stack.empty())
     {
-      const long pixel = m_Stack.back();
+      const long column = m_Stack.back().first;
+      const long row = m_Stack.back().second;
       m_Stack.pop_back();
       ++count;
-      const long   column = pixel % m_Side;
-      const long   row = pixel / m_Side;
+      const long   pixel = row * m_Side + column;
       const double value = m_Value[pixel];
       for (unsigned int k = 0; k < 4; ++k)
       {
@@ -308,10 +307,10 @@ public:
           }
           continue;
         }
-        const double neighbourValue = Evaluate(neighbour);
+        const double neighbourValue = Evaluate(neighbourColumn, neighbourRow);
         if (neighbourValue >= Threshold)
         {
-          m_Stack.push_back(neighbour);
+          m_Stack.push_back({ neighbourColumn, neighbourRow });
         }
         else
         {
@@ -349,13 +348,14 @@ public:
 
 private:
   double
-  Evaluate(long pixel)
+  Evaluate(long column, long row)
   {
-    const double column = static_cast<double>(pixel % m_Side - m_HalfSide);
-    const double row = static_cast<double>(pixel / m_Side - m_HalfSide);
-    const double value = m_Mask.Sample(m_Origin[0] + column * m_DU[0] + row * m_DV[0],
-                                       m_Origin[1] + column * m_DU[1] + row * m_DV[1],
-                                       m_Origin[2] + column * m_DU[2] + row * m_DV[2]);
+    const long   pixel = row * m_Side + column;
+    const double i = static_cast<double>(column - m_HalfSide);
+    const double j = static_cast<double>(row - m_HalfSide);
+    const double value = m_Mask.Sample(m_Origin[0] + i * m_DU[0] + j * m_DV[0],
+                                       m_Origin[1] + i * m_DU[1] + j * m_DV[1],
+                                       m_Origin[2] + i * m_DU[2] + j * m_DV[2]);
     m_Stamp[pixel] = m_Generation;
     m_Value[pixel] = static_cast<float>(value);
     return value;
@@ -370,18 +370,18 @@ private:
                            static_cast<double>(row) + t * static_cast<double>(outsideRow - row) });
   }
 
-  const MaskAccess &      m_Mask;
-  double                  m_Step;
-  long                    m_HalfSide;
-  long                    m_Side;
-  std::vector<uint32_t>   m_Stamp;
-  std::vector<float>      m_Value;
-  uint32_t                m_Generation{ 0 };
-  std::vector<long>       m_Stack;
-  std::vector<PlanePoint> m_Boundary;
-  double                  m_Origin[3]{};
-  double                  m_DU[3]{};
-  double                  m_DV[3]{};
+  const MaskAccess &                 m_Mask;
+  double                             m_Step;
+  long                               m_HalfSide;
+  long                               m_Side;
+  std::vector<uint32_t>              m_Stamp;
+  std::vector<float>                 m_Value;
+  uint32_t                           m_Generation{ 0 };
+  std::vector<std::pair<long, long>> m_Stack;
+  std::vector<PlanePoint>            m_Boundary;
+  double                             m_Origin[3]{};
+  double                             m_DU[3]{};
+  double                             m_DV[3]{};
 };
 
 bool
