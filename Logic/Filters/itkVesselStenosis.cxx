@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace itk
@@ -294,51 +295,69 @@ AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions 
   const double spanFirst = summary.ReferenceArcLengths.front();
   const double spanLast = summary.ReferenceArcLengths.back();
 
-  const std::vector<Sample> samples = MeasuredSamples(profile);
-  summary.MeasuredSections = samples.size();
-  std::vector<Sample> inSpan;
-  for (const auto & sample : samples)
+  // The area profile: measured areas, or the circle of the diameter for the centerline-radius source.
+  const bool segmentation = profile.Source == VesselLumenSource::Segmentation;
+  const auto areaOf = [segmentation](const VesselLumenSection & section)
+  { return segmentation ? section.Area : 0.25 * Pi * section.Diameter * section.Diameter; };
+  std::vector<Sample> diameters;
+  std::vector<Sample> areas;
+  std::size_t         inSpan = 0;
+  for (const auto & section : profile.Sections)
   {
-    if (sample.S >= spanFirst && sample.S <= spanLast)
+    if (section.IsMeasured())
     {
-      inSpan.push_back(sample);
+      diameters.push_back({ section.ArcLength, section.Diameter });
+      areas.push_back({ section.ArcLength, areaOf(section) });
+      inSpan += section.ArcLength >= spanFirst && section.ArcLength <= spanLast ? 1 : 0;
     }
   }
-  summary.MeasuredSectionsInSpan = inSpan.size();
-  if (samples.empty() || (spanLast > spanFirst && inSpan.empty()))
+  summary.MeasuredSections = diameters.size();
+  summary.MeasuredSectionsInSpan = inSpan;
+  if (diameters.empty() || (options.Method == VesselReferenceMethod::RobustFit && inSpan == 0))
   {
-    itkGenericExceptionMacro(<< "stenosis: no section between the reference points (" << spanFirst << " to " << spanLast
-                             << " mm) has a measured diameter");
-  }
-
-  // The reference line over the whole path.
-  if (options.Method == VesselReferenceMethod::Interpolated)
-  {
-    std::vector<Sample> points;
-    for (const double s : summary.ReferenceArcLengths)
-    {
-      points.push_back({ s, DiameterAt(samples, s) });
-    }
-    for (auto & section : profile.Sections)
-    {
-      section.ReferenceDiameter = PiecewiseLinear(points, section.ArcLength);
-    }
-  }
-  else
-  {
-    const Line line = RobustLine(inSpan, spanFirst);
-    for (auto & section : profile.Sections)
-    {
-      section.ReferenceDiameter = line.At(section.ArcLength, spanFirst);
-    }
+    itkGenericExceptionMacro(<< "stenosis: no section "
+                             << (diameters.empty() ? "of the path" : "between the reference points")
+                             << " has a measured diameter");
   }
 
-  // MLD and MLA between the first and the last reference point (the path's ends are left out: caps, junctions).
+  // The same reference method on the diameters and on the areas, over the whole path.
+  const auto reference = [&](const std::vector<Sample> & samples, auto assign)
+  {
+    if (options.Method == VesselReferenceMethod::Interpolated)
+    {
+      std::vector<Sample> points;
+      for (const double s : summary.ReferenceArcLengths)
+      {
+        points.push_back({ s, DiameterAt(samples, s) });
+      }
+      for (auto & section : profile.Sections)
+      {
+        assign(section, PiecewiseLinear(points, section.ArcLength));
+      }
+    }
+    else
+    {
+      std::vector<Sample> span;
+      std::copy_if(samples.begin(),
+                   samples.end(),
+                   std::back_inserter(span),
+                   [&](const Sample & sample) { return sample.S >= spanFirst && sample.S <= spanLast; });
+      const Line line = RobustLine(span, spanFirst);
+      for (auto & section : profile.Sections)
+      {
+        assign(section, line.At(section.ArcLength, spanFirst));
+      }
+    }
+  };
+  reference(diameters, [](VesselLumenSection & section, double value) { section.ReferenceDiameter = value; });
+  reference(areas, [](VesselLumenSection & section, double value) { section.ReferenceArea = value; });
+
+  // MLD and MLA over the whole path (docs/lumen-measurement.md).
   const VesselLumenSection * narrowest = nullptr;
   const VesselLumenSection * smallest = nullptr;
   for (const auto & section : profile.Sections)
   {
-    if (!section.IsMeasured() || section.ArcLength < spanFirst || section.ArcLength > spanLast)
+    if (!section.IsMeasured())
     {
       continue;
     }
@@ -346,49 +365,25 @@ AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions 
     {
       narrowest = &section;
     }
-    const double area = profile.Source == VesselLumenSource::Segmentation
-                          ? section.Area
-                          : 0.25 * Pi * section.Diameter * section.Diameter;
-    const double smallestArea = smallest == nullptr ? 0.0
-                                : profile.Source == VesselLumenSource::Segmentation
-                                  ? smallest->Area
-                                  : 0.25 * Pi * smallest->Diameter * smallest->Diameter;
-    if (smallest == nullptr || area < smallestArea)
+    if (smallest == nullptr || areaOf(section) < areaOf(*smallest))
     {
       smallest = &section;
     }
-  }
-  if (narrowest == nullptr)
-  {
-    // A span of one point: the section nearest to it.
-    for (const auto & section : profile.Sections)
-    {
-      if (section.IsMeasured() && (narrowest == nullptr || std::abs(section.ArcLength - spanFirst) <
-                                                             std::abs(narrowest->ArcLength - spanFirst)))
-      {
-        narrowest = &section;
-      }
-    }
-    smallest = narrowest;
   }
   summary.MinimalLumenDiameter = narrowest->Diameter;
   summary.MinimalLumenDiameterArcLength = narrowest->ArcLength;
   summary.MinimalLumenDiameterCenter = narrowest->Center;
   summary.ReferenceDiameter = narrowest->ReferenceDiameter;
-  summary.MinimalLumenArea = profile.Source == VesselLumenSource::Segmentation
-                               ? smallest->Area
-                               : 0.25 * Pi * smallest->Diameter * smallest->Diameter;
+  summary.MinimalLumenArea = areaOf(*smallest);
   summary.MinimalLumenAreaArcLength = smallest->ArcLength;
-  summary.ReferenceDiameterAtMinimalArea = smallest->ReferenceDiameter;
+  summary.ReferenceArea = smallest->ReferenceArea;
   if (summary.ReferenceDiameter > 0.0)
   {
     summary.DiameterStenosisPercent = 100.0 * (1.0 - summary.MinimalLumenDiameter / summary.ReferenceDiameter);
   }
-  if (summary.ReferenceDiameterAtMinimalArea > 0.0)
+  if (summary.ReferenceArea > 0.0)
   {
-    const double referenceArea =
-      0.25 * Pi * summary.ReferenceDiameterAtMinimalArea * summary.ReferenceDiameterAtMinimalArea;
-    summary.AreaStenosisPercent = 100.0 * (1.0 - summary.MinimalLumenArea / referenceArea);
+    summary.AreaStenosisPercent = 100.0 * (1.0 - summary.MinimalLumenArea / summary.ReferenceArea);
   }
   summary.CADRADS = CADRADSClass(summary.DiameterStenosisPercent);
   return summary;

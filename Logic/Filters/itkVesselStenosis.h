@@ -52,10 +52,11 @@ struct VesselStenosisSummary
   VesselReferenceMethod Method{ VesselReferenceMethod::Interpolated };
   /** Arc length from the first section to the last. */
   double PathLength{ 0.0 };
-  /** The reference points used, ascending (the defaults when none were given). MLD and MLA are searched between
-   * the first and the last. */
+  /** The reference points used, ascending (the defaults when none were given). The robust fit uses the profile
+   * between the first and the last. */
   std::vector<double> ReferenceArcLengths;
-  /** Sections measured (a diameter known) between the first and the last reference point, and on the whole path. */
+  /** Sections measured (a diameter known) between the first and the last reference point, and on the whole path
+   * (MLD and MLA are searched on the whole path). */
   std::size_t MeasuredSectionsInSpan{ 0 };
   std::size_t MeasuredSections{ 0 };
   /** Minimal lumen diameter, its arc length and centre (LPS). */
@@ -66,12 +67,13 @@ struct VesselStenosisSummary
    * MLD (no area is measured). */
   double MinimalLumenArea{ NaN };
   double MinimalLumenAreaArcLength{ NaN };
-  /** Reference diameter at the MLD's arc length (RVD), and at the MLA's. */
+  /** Reference diameter at the MLD's arc length (RVD), and the reference area at the MLA's (the same reference
+   * method applied to the area profile). */
   double ReferenceDiameter{ NaN };
-  double ReferenceDiameterAtMinimalArea{ NaN };
+  double ReferenceArea{ NaN };
   /** 100 (1 - MLD / RVD). Negative where the lumen is wider than the reference. */
   double DiameterStenosisPercent{ NaN };
-  /** 100 (1 - MLA / (pi/4 reference diameter^2 at the MLA)). */
+  /** 100 (1 - MLA / reference area at the MLA). */
   double AreaStenosisPercent{ NaN };
   /** The CAD-RADS class of DiameterStenosisPercent (CADRADSClass), -1 when not measured. */
   int CADRADS{ -1 };
@@ -84,11 +86,11 @@ struct VesselStenosisSummary
 int
 CADRADSClass(double diameterStenosisPercent);
 
-/** Fills every section's ReferenceDiameter in \a profile and returns the stenosis summary.
+/** Fills every section's ReferenceDiameter and ReferenceArea in \a profile and returns the stenosis summary.
  * Throws itk::ExceptionObject naming the values when a reference point is not finite or lies outside the path
  * (before the first section's arc length or after the last's), the robust fit gets fewer than two reference
- * points, the path has fewer than two sections or arc lengths that decrease, or no section between the reference
- * points is measured. */
+ * points, the path has fewer than two sections or arc lengths that decrease, or no section is measured (for the
+ * robust fit: none between the first and the last reference point). */
 VesselStenosisSummary
 AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions & options = {});
 

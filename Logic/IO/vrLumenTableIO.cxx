@@ -75,6 +75,7 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
       Cell(output, separator, section.ReferenceDiameter);
       Cell(output, separator, section.Diameter);
       Cell(output, separator, section.InscribedDiameter);
+      Cell(output, separator, section.ReferenceArea);
       Cell(output,
            separator,
            section.ReferenceDiameter > 0.0 ? 100.0 * (1.0 - section.Diameter / section.ReferenceDiameter)

@@ -10,8 +10,9 @@ namespace vr
 {
 /** The lumen table's columns, in order (docs/lumen-measurement.md, "The table"): the section's arc length, its
  * centre in RAS mm (r = -L, a = -P, s = S), the measured area and diameters, the reference diameter, then the
- * profile's diameter, the centerline's 2r, the local % diameter stenosis 100 (1 - d / reference), the source, whether
- * the path point lies inside the segmentation, whether the region was clipped, and the branch id. */
+ * profile's diameter, the centerline's 2r, the reference area, the local % diameter stenosis 100 (1 - d / reference),
+ * the source, whether the path point lies inside the segmentation, whether the region was clipped, and the branch id.
+ */
 constexpr const char * LumenTableColumns[] = { "arc_length_mm",
                                                "r_mm",
                                                "a_mm",
@@ -23,6 +24,7 @@ constexpr const char * LumenTableColumns[] = { "arc_length_mm",
                                                "reference_diameter_mm",
                                                "diameter_mm",
                                                "inscribed_diameter_mm",
+                                               "reference_area_mm2",
                                                "diameter_stenosis_percent",
                                                "source",
                                                "in_segmentation",

@@ -71,8 +71,10 @@ TEST(VesselStenosis, InterpolatedReferenceAtTheDefaultPoints)
   EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameter, 3.5);
   EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 50.0);
   EXPECT_NEAR(summary.DiameterStenosisPercent, 50.0, 1e-10);
-  // Area from the diameter (radius source): 1 - (3.5 / 7)^2 = 75 %.
-  EXPECT_NEAR(summary.AreaStenosisPercent, 75.0, 1e-10);
+  // Areas from the diameters (radius source), their reference interpolated between the areas at 5 and 95 mm:
+  // pi/4 (6.1^2 + (7.9^2 - 6.1^2) / 2) = pi/4 49.81 at 50 mm, so 1 - 3.5^2 / 49.81.
+  EXPECT_NEAR(summary.ReferenceArea, M_PI / 4.0 * 49.81, 1e-10);
+  EXPECT_NEAR(summary.AreaStenosisPercent, 100.0 * (1.0 - 12.25 / 49.81), 1e-10);
   EXPECT_EQ(summary.CADRADS, 3);
   EXPECT_DOUBLE_EQ(summary.PathLength, 100.0);
   EXPECT_EQ(summary.MeasuredSections, 101u);
@@ -109,10 +111,15 @@ TEST(VesselStenosis, InterpolatedReferenceAtGivenPointsBetweenSections)
   EXPECT_NEAR(at(20.0), 4.0, 1e-12);
   EXPECT_NEAR(at(25.0), 4.0 + 5.0 / 8.5 * (8.125 - 4.0), 1e-12);
   EXPECT_NEAR(at(30.0), 8.125, 1e-12);
-  // MLD searched between 12.5 and 28.5 mm: the section at 13 mm, 1.69 mm; its reference 1.565 + 0.5/7.5 * 2.435.
-  EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 13.0);
-  EXPECT_NEAR(summary.MinimalLumenDiameter, 1.69, 1e-12);
-  EXPECT_NEAR(summary.ReferenceDiameter, 1.565 + 0.5 / 7.5 * 2.435, 1e-12);
+  // MLD over the whole path: the section at 10 mm, 1 mm, its reference 1.565 mm (constant before 12.5 mm).
+  EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 10.0);
+  EXPECT_NEAR(summary.MinimalLumenDiameter, 1.0, 1e-12);
+  EXPECT_NEAR(summary.ReferenceDiameter, 1.565, 1e-12);
+  EXPECT_NEAR(summary.DiameterStenosisPercent, 100.0 * (1.0 - 1.0 / 1.565), 1e-10);
+  // Areas (pi/4 d^2, the radius source) interpolated the same way: at 12.5 mm pi/4 (1.44^2 + 1.69^2) / 2.
+  EXPECT_NEAR(summary.MinimalLumenArea, M_PI / 4.0, 1e-12);
+  EXPECT_NEAR(summary.ReferenceArea, M_PI / 4.0 * (1.44 * 1.44 + 1.69 * 1.69) / 2.0, 1e-12);
+  EXPECT_NEAR(summary.AreaStenosisPercent, 100.0 * (1.0 - 2.0 / (1.44 * 1.44 + 1.69 * 1.69)), 1e-10);
 }
 
 TEST(VesselStenosis, UnmeasuredSectionsAreSkippedByTheInterpolation)
@@ -178,7 +185,8 @@ TEST(VesselStenosis, ReferencePointsOutsideThePathAreNamed)
   options.Method = itk::VesselReferenceMethod::Interpolated;
   const auto summary = itk::AnalyseVesselStenosis(profile, options);
   EXPECT_NEAR(profile.Sections.back().ReferenceDiameter, 6.6, 1e-12);
-  EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 30.0);
+  EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 50.0);
+  EXPECT_NEAR(summary.DiameterStenosisPercent, 100.0 * (1.0 - 3.5 / 6.6), 1e-10);
 }
 
 TEST(VesselStenosis, TooShortOrUnmeasuredPathsThrow)

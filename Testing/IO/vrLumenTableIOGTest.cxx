@@ -30,6 +30,7 @@ TwoSections()
   inside.MaximumDiameter = 4.5;
   inside.Diameter = 4.0;
   inside.ReferenceDiameter = 8.0;
+  inside.ReferenceArea = 50.25;
   inside.BranchId = 3;
   itk::VesselLumenSection outside;
   outside.ArcLength = 1.5;
@@ -68,9 +69,9 @@ TEST(LumenTableIO, ColumnsAndRASSigns)
             0u)
     << lines[0];
   // r = -L, a = -P, s = S; local stenosis 100 (1 - 4 / 8) = 50.
-  EXPECT_EQ(lines[1], "0.5,-10,20,30,12.5,4,3.5,4.5,8,4,,50,segmentation,1,0,3");
+  EXPECT_EQ(lines[1], "0.5,-10,20,30,12.5,4,3.5,4.5,8,4,,50.25,50,segmentation,1,0,3");
   // Outside the segmentation: nothing measured, empty cells; its 2r and reference stay.
-  EXPECT_EQ(lines[2], "1.5,1,-2,-3,,,,,7,,6,,segmentation,0,,3");
+  EXPECT_EQ(lines[2], "1.5,1,-2,-3,,,,,7,,6,,,segmentation,0,,3");
   EXPECT_EQ(vr::SplitAndTrim(lines[0], ',').size(), std::size(vr::LumenTableColumns));
 }
 
@@ -86,7 +87,7 @@ TEST(LumenTableIO, TabSeparatedByExtensionAndRadiusSourceLeavesInSegmentationEmp
   const auto lines = Lines(vr::test::ReadTextFile(path));
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].rfind("arc_length_mm\tr_mm\ta_mm\ts_mm\tarea_mm2\t", 0), 0u);
-  EXPECT_EQ(lines[1], "0.5\t-10\t20\t30\t\t4\t3.5\t4.5\t8\t4\t\t50\tcenterline radius\t\t\t3");
+  EXPECT_EQ(lines[1], "0.5\t-10\t20\t30\t\t4\t3.5\t4.5\t8\t4\t\t50.25\t50\tcenterline radius\t\t\t3");
 }
 
 TEST(LumenTableIO, UnknownExtensionWritesNothing)
