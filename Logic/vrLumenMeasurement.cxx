@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrLumenMeasurement.h"
 
+#include "vrCoordinateFrames.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 #include "vrParameterName.h"
@@ -98,5 +99,48 @@ MeasureLumen(const itk::VesselPathSectionList & sections,
     throw InputError(detail::CondenseITKMessage(exception), ParameterName::ReferencePoints);
   }
   return result;
+}
+
+std::vector<std::pair<std::string, std::string>>
+LumenSummaryValues(const LumenMeasurement & measurement)
+{
+  const auto & summary = measurement.Summary;
+  const auto   number = [](double value)
+  {
+    if (std::isnan(value))
+    {
+      return std::string();
+    }
+    std::ostringstream text;
+    text.precision(10);
+    text << value;
+    return text.str();
+  };
+  std::string points;
+  for (const double s : summary.ReferenceArcLengths)
+  {
+    points += (points.empty() ? "" : ",") + number(s);
+  }
+  std::string where;
+  if (!std::isnan(summary.MinimalLumenDiameter))
+  {
+    const auto ras = LPSToRAS(summary.MinimalLumenDiameterCenter);
+    where = number(ras[0]) + "," + number(ras[1]) + "," + number(ras[2]);
+  }
+  return { { "pathLength", number(summary.PathLength) },
+           { "lumenSource", itk::ToString(summary.Source) },
+           { "referenceMethod", itk::ToString(summary.Method) },
+           { "referencePoints", points },
+           { "minimalLumenDiameter", number(summary.MinimalLumenDiameter) },
+           { "minimalLumenDiameterArcLength", number(summary.MinimalLumenDiameterArcLength) },
+           { "minimalLumenDiameterPoint", where },
+           { "minimalLumenArea", number(summary.MinimalLumenArea) },
+           { "minimalLumenAreaArcLength", number(summary.MinimalLumenAreaArcLength) },
+           { "referenceDiameter", number(summary.ReferenceDiameter) },
+           { "referenceArea", number(summary.ReferenceArea) },
+           { "diameterStenosis", number(summary.DiameterStenosisPercent) },
+           { "areaStenosis", number(summary.AreaStenosisPercent) },
+           { "cadRads", summary.CADRADS >= 0 ? std::to_string(summary.CADRADS) : std::string() },
+           { "sectionsOutsideSegmentation", std::to_string(measurement.Profile.SectionsOutsideSegmentation) } };
 }
 } // namespace vr

@@ -6,6 +6,7 @@
 #include "vrSegmentationIO.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vr
@@ -51,6 +52,14 @@ MeasureLumen(const itk::VesselPathSectionList & sections,
              const SegmentationMaskType *       segmentation,
              const std::string &                segmentationName,
              const LumenMeasurementParameters & parameters);
+/** The summary as a command-line module returns it: (name, value) pairs in this order, numbers in mm, mm^2 or %,
+ * an empty value where nothing was measured: pathLength, lumenSource ("segmentation" or "centerline radius"),
+ * referenceMethod ("interpolated" or "robust fit"), referencePoints (arc lengths, comma-separated),
+ * minimalLumenDiameter, minimalLumenDiameterArcLength, minimalLumenDiameterPoint ("r,a,s", RAS mm),
+ * minimalLumenArea, minimalLumenAreaArcLength, referenceDiameter, referenceArea, diameterStenosis, areaStenosis,
+ * cadRads (0 to 5), sectionsOutsideSegmentation. */
+std::vector<std::pair<std::string, std::string>>
+LumenSummaryValues(const LumenMeasurement & measurement);
 } // namespace vr
 
 #endif

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 namespace
 {
@@ -42,6 +43,44 @@ TEST(LumenMeasurement, SaysWhichSourceItUsed)
   EXPECT_EQ(fromRadii.Profile.Source, itk::VesselLumenSource::CenterlineRadius);
   EXPECT_NEAR(fromRadii.Summary.DiameterStenosisPercent, 50.0, 1e-7);
   EXPECT_STREQ(itk::ToString(fromRadii.Profile.Source), "centerline radius");
+}
+
+TEST(LumenMeasurement, SummaryAsReturnedValues)
+{
+  // The radius source on the analytic tube: MLD 4 mm at 40 mm, reference 8 mm, area 4 pi against 16 pi.
+  const auto measured = vr::MeasureLumen(StenosisScene().Sections, nullptr, "", {});
+  const auto values = vr::LumenSummaryValues(measured);
+  const auto value = [&](const std::string & name)
+  {
+    for (const auto & entry : values)
+    {
+      if (entry.first == name)
+      {
+        return entry.second;
+      }
+    }
+    ADD_FAILURE() << "no " << name;
+    return std::string();
+  };
+  ASSERT_EQ(values.size(), 15u);
+  EXPECT_EQ(values.front().first, "pathLength");
+  EXPECT_EQ(value("pathLength"), "80");
+  EXPECT_EQ(value("lumenSource"), "centerline radius");
+  EXPECT_EQ(value("referenceMethod"), "interpolated");
+  EXPECT_EQ(value("referencePoints"), "4,76");
+  EXPECT_EQ(value("minimalLumenDiameter"), "4");
+  EXPECT_EQ(value("minimalLumenDiameterArcLength"), "40");
+  EXPECT_EQ(value("referenceDiameter"), "8");
+  EXPECT_EQ(value("diameterStenosis"), "50");
+  EXPECT_EQ(value("areaStenosis"), "75");
+  EXPECT_EQ(value("cadRads"), "3");
+  EXPECT_EQ(value("sectionsOutsideSegmentation"), "0");
+  // The MLD's centre in RAS: the section at 40 mm, x and y negated.
+  const auto &       center = StenosisScene().Sections[200].Center;
+  std::ostringstream expected;
+  expected.precision(10);
+  expected << -center[0] << ',' << -center[1] << ',' << center[2];
+  EXPECT_EQ(value("minimalLumenDiameterPoint"), expected.str());
 }
 
 TEST(LumenMeasurement, SegmentationThatMissesThePathIsNamed)
