@@ -34,6 +34,10 @@ constexpr const char * VesselLabels = "vessel labels";
 constexpr const char * RootPoint = "root point";
 constexpr const char * RootPointTolerance = "root point tolerance";
 constexpr const char * MinimumBranchLength = "minimum branch length";
+/** The lumen measurement along a vessel path (vr::LumenMeasurementParameters). */
+constexpr const char * ReferencePoints = "reference points";
+constexpr const char * ReferenceMethod = "reference method";
+constexpr const char * LumenSampling = "lumen sampling";
 } // namespace ParameterName
 
 } // namespace vr

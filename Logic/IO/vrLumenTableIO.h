@@ -1,0 +1,47 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrLumenTableIO_h
+#define vrLumenTableIO_h
+
+#include "itkVesselLumenMeasurement.h"
+
+#include <string>
+
+namespace vr
+{
+/** The lumen table's columns, in order (docs/lumen-measurement.md, "The table"): the section's arc length, its
+ * centre in RAS mm (r = -L, a = -P, s = S), the measured area and diameters, the reference diameter, then the
+ * profile's diameter, the centerline's 2r, the reference area, the local % diameter stenosis 100 (1 - d / reference),
+ * the source, whether the path point lies inside the segmentation, whether the region was clipped, and the branch id.
+ */
+constexpr const char * LumenTableColumns[] = { "arc_length_mm",
+                                               "r_mm",
+                                               "a_mm",
+                                               "s_mm",
+                                               "area_mm2",
+                                               "equivalent_diameter_mm",
+                                               "min_diameter_mm",
+                                               "max_diameter_mm",
+                                               "reference_diameter_mm",
+                                               "diameter_mm",
+                                               "inscribed_diameter_mm",
+                                               "reference_area_mm2",
+                                               "diameter_stenosis_percent",
+                                               "source",
+                                               "in_segmentation",
+                                               "region_clipped",
+                                               "branch_id" };
+
+/** The separator a lumen table at \a path is written with: ',' for .csv, '\t' for .tsv (any case). Call it before
+ * the work to fail early. Throws vr::InputError naming \a path for any other extension. */
+char
+LumenTableSeparator(const std::string & path);
+
+/** Writes \a profile as a table, one row per section after a header row (LumenTableColumns), CSV or TSV by the
+ * extension. Empty cells where a value is not measured (NaN: areas without a segmentation, sections outside it).
+ * Atomic (vr::AtomicOutput): on any error nothing appears and an existing file is left as it was. Throws
+ * vr::InputError naming \a path on an unknown extension, a folder that cannot be written, or a failed write. */
+void
+WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path);
+} // namespace vr
+
+#endif
