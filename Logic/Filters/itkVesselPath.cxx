@@ -207,21 +207,12 @@ VesselPath::FromTree(const CenterlineTree & tree, int endBranchId)
     return path;
   }
 
-  std::vector<bool> hasChild(branches.size(), false);
-  for (const int parent : parents)
-  {
-    if (parent >= 0)
-    {
-      hasChild[parent] = true;
-    }
-  }
+  // Every branch's far end is a leaf of the tree: a child joins its parent's polyline anywhere along it, often not
+  // at its end (a trunk that goes on past the vessels leaving it), so the far end of a branch with children is
+  // still an end of the tree.
   VesselPath longest;
   for (std::size_t b = 0; b < branches.size(); ++b)
   {
-    if (hasChild[b])
-    {
-      continue;
-    }
     VesselPath candidate = build(chainTo(static_cast<int>(b)));
     if (candidate.GetLength() > longest.GetLength())
     {

@@ -22,7 +22,8 @@ namespace itk
  * a root: it runs along each ancestor from its start to the point where the next branch of the chain joins it (the
  * nearest point of its polyline, not necessarily its end), then along the chosen branch to its end, so it is
  * continuous across junctions (the gap it bridges there is at most the tolerance). The default path is the longest
- * root-to-leaf path (the first leaf in the tree's order on ties).
+ * path from the root to any branch's far end (the first branch in the tree's order on ties): every far end is an end
+ * of the tree, since a child may join its parent anywhere along it.
  *
  * The path is the polyline through those points: its position and radius are interpolated linearly in s; its tangent
  * at s is the chord from s - h to s + h (clamped to the path), h the median spacing of its points, which is
