@@ -38,6 +38,12 @@ constexpr const char * MinimumBranchLength = "minimum branch length";
 constexpr const char * ReferencePoints = "reference points";
 constexpr const char * ReferenceMethod = "reference method";
 constexpr const char * LumenSampling = "lumen sampling";
+/** The single-vessel reading (vr::VesselPathParameters). */
+constexpr const char * Branch = "branch";
+constexpr const char * PathRange = "path range";
+constexpr const char * Roll = "roll";
+constexpr const char * Width = "width";
+constexpr const char * SectionSpacing = "section spacing";
 } // namespace ParameterName
 
 } // namespace vr

@@ -1,0 +1,199 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// The single-vessel reading in the module logic (issue 21, item 4): what each change reruns, counted on the
+// stages; the pixel-to-patient mapping against the path; errors naming the parameter.
+
+#include "vrInputError.h"
+#include "vrTestFiles.h"
+#include "vrTestImages.h"
+#include "vrTestSegmentations.h"
+#include "vrVesselPathLogic.h"
+
+#include "itkImageRegionIterator.h"
+
+#include <gtest/gtest.h>
+
+namespace
+{
+using vr::test::P;
+using PointType = itk::Point<double, 3>;
+
+/** Two branches: a trunk along +z and a child leaving it at its middle along +x, radii known. */
+itk::CenterlineTree
+TwoBranchTree()
+{
+  itk::CenterlineTree tree;
+  tree.AddBranch(vr::test::TubeBranch(1, vr::test::SegmentPoints(P(0, 0, -30), P(0, 0, 30), 0.5), 3.0));
+  tree.AddBranch(vr::test::TubeBranch(2, vr::test::SegmentPoints(P(0, 0, 0), P(25, 0, 0), 0.5), 2.0));
+  return tree;
+}
+
+struct Scene
+{
+  vr::test::LabelMap::Pointer  Mask;
+  vr::VolumeImageType::Pointer Volume;
+};
+
+Scene
+MakeScene()
+{
+  Scene scene;
+  scene.Mask = vr::test::MakeLabelMap(itk::Size<3>{ { 70, 50, 80 } },
+                                      itk::Vector<double, 3>(1.0),
+                                      P(-20, -25, -40),
+                                      vr::test::RotationMatrix(0, 0, 1, 0));
+  vr::test::DrawTubes(scene.Mask, TwoBranchTree());
+  scene.Volume = vr::VolumeImageType::New();
+  scene.Volume->CopyInformation(scene.Mask);
+  scene.Volume->SetRegions(scene.Mask->GetLargestPossibleRegion());
+  scene.Volume->Allocate();
+  itk::ImageRegionIterator<vr::VolumeImageType>     out(scene.Volume, scene.Volume->GetLargestPossibleRegion());
+  itk::ImageRegionConstIterator<vr::test::LabelMap> in(scene.Mask, scene.Mask->GetLargestPossibleRegion());
+  for (; !out.IsAtEnd(); ++out, ++in)
+  {
+    out.Set(in.Get() ? 300.0f : 0.0f);
+  }
+  return scene;
+}
+
+vr::VesselPathParameters
+Defaults()
+{
+  vr::VesselPathParameters parameters;
+  parameters.Width = 20.0;
+  parameters.PixelSpacing = 0.5;
+  return parameters;
+}
+
+void
+ExpectCounts(const vr::VesselPathStageCounts & counts,
+             unsigned                          path,
+             unsigned                          frame,
+             unsigned                          resampling,
+             unsigned                          measurement)
+{
+  EXPECT_EQ(counts.Path, path);
+  EXPECT_EQ(counts.Frame, frame);
+  EXPECT_EQ(counts.Resampling, resampling);
+  EXPECT_EQ(counts.Measurement, measurement);
+}
+
+TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
+{
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  logic.SetVolume(scene.Volume);
+  logic.SetCenterlineTree(TwoBranchTree());
+  vr::VesselPathParameters parameters = Defaults();
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 1, 1, 1);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 1, 1, 1);
+
+  // The roll: the resampling alone.
+  parameters.RollInDegrees = 30.0;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 1, 2, 1);
+  // The width and the interpolation: the resampling alone.
+  parameters.Width = 16.0;
+  parameters.Interpolation = itk::CPRInterpolationMode::Nearest;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 1, 3, 1);
+  // The path (another branch): frame, resampling and measurement with it.
+  parameters.BranchId = 1;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 2, 2, 4, 2);
+  // A range: the path again.
+  parameters.HasRange = true;
+  parameters.RangeStart = 5.0;
+  parameters.RangeEnd = 40.0;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 3);
+  EXPECT_NEAR(logic.GetResults().Path.GetLength(), 35.0, 1e-6);
+  // The segmentation and the reference points: the measurement alone.
+  logic.SetSegmentationMask(scene.Mask, "segmentation tubes");
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 4);
+  EXPECT_EQ(logic.GetResults().Lumen.Source, itk::VesselLumenSource::Segmentation);
+  parameters.ReferencePoints = { 5.0, 30.0 };
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 5);
+  // The section spacing: the frame, the resampling and the measurement.
+  parameters.SectionSpacing = 1.0;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 3, 4, 6, 6);
+}
+
+TEST(VesselPathLogic, TheDefaultPathIsTheLongestAndPixelsMapBackToIt)
+{
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  logic.SetVolume(scene.Volume);
+  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetParameters(Defaults());
+  const vr::VesselPathResults & results = logic.Update();
+  // Root to the trunk's far end is 60 mm; root to the child's end 30 + 25 = 55 mm.
+  EXPECT_NEAR(results.Path.GetLength(), 60.0, 1e-6);
+  const auto   size = results.CPR->GetLargestPossibleRegion().GetSize();
+  const double middle = 0.5 * static_cast<double>(size[0] - 1);
+  for (const double s : { 0.0, 12.5, 33.0, 59.0 })
+  {
+    const PointType onPath = results.Path.PointAt(s);
+    EXPECT_LT(logic.ComputePoint(middle, logic.RowOfArcLength(s)).EuclideanDistanceTo(onPath), 1e-6) << s;
+    const itk::VesselPathSection section = logic.SectionAt(s);
+    EXPECT_LT(section.Center.EuclideanDistanceTo(onPath), 1e-9);
+    EXPECT_NEAR(section.Lateral * section.Tangent, 0.0, 1e-9);
+    EXPECT_NEAR(section.Lateral.GetNorm(), 1.0, 1e-9);
+  }
+  // The child's path: the trunk from the root to the junction, then the child.
+  vr::VesselPathParameters child = Defaults();
+  child.BranchId = 2;
+  logic.SetParameters(child);
+  EXPECT_NEAR(logic.Update().Path.GetLength(), 55.0, 0.6);
+  EXPECT_EQ(logic.GetResults().Path.GetBranchChain(), (std::vector<int>{ 1, 2 }));
+}
+
+TEST(VesselPathLogic, ErrorsNameTheParameter)
+{
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  const auto          parameterOf = [&logic](const vr::VesselPathParameters & parameters)
+  {
+    try
+    {
+      logic.SetParameters(parameters);
+      logic.Update();
+    }
+    catch (const vr::InputError & error)
+    {
+      return error.Parameter();
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(parameterOf(Defaults()), "") << "no volume and no tree: an error about no parameter";
+  logic.SetVolume(scene.Volume);
+  logic.SetCenterlineTree(TwoBranchTree());
+  vr::VesselPathParameters parameters = Defaults();
+  parameters.BranchId = 9;
+  EXPECT_EQ(parameterOf(parameters), vr::ParameterName::Branch);
+  parameters = Defaults();
+  parameters.Width = std::nan("");
+  EXPECT_EQ(parameterOf(parameters), vr::ParameterName::Width);
+  parameters = Defaults();
+  parameters.HasRange = true;
+  parameters.RangeStart = 10.0;
+  parameters.RangeEnd = 99.0;
+  EXPECT_EQ(parameterOf(parameters), vr::ParameterName::PathRange);
+  parameters = Defaults();
+  parameters.ReferencePoints = { -3.0, 20.0 };
+  EXPECT_EQ(parameterOf(parameters), vr::ParameterName::ReferencePoints);
+  parameters = Defaults();
+  EXPECT_EQ(parameterOf(parameters), "(no error)");
+}
+} // namespace
