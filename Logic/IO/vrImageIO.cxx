@@ -178,6 +178,12 @@ WriteImage2D(const LabelImageType * image, const std::string & path)
   WriteImageAtomically(image, path);
 }
 
+void
+WriteImage2D(const itk::Image<itk::Vector<float, 3>, 2> * image, const std::string & path)
+{
+  WriteImageAtomically(image, path);
+}
+
 DepthImageType::Pointer
 ReadDepthImage(const std::string & path)
 {

@@ -2,6 +2,7 @@
 #ifndef vrImageIO_h
 #define vrImageIO_h
 
+#include "itkVector.h"
 #include "vrImageTypes.h"
 
 #include <string>
@@ -16,6 +17,9 @@ void
 WriteImage2D(const MaskImageType * image, const std::string & path);
 void
 WriteImage2D(const LabelImageType * image, const std::string & path);
+/** A 2D image of LPS points (a single-vessel CPR's pixel positions), as a 3-component vector image. */
+void
+WriteImage2D(const itk::Image<itk::Vector<float, 3>, 2> * image, const std::string & path);
 
 /** Reads a 2D depth image (and its metadata) or a mask; throws vr::InputError naming the file. A 3D file with a
  * single slice counts as 2D. The mask may be stored with any scalar pixel type: non-zero pixels become 1 (fixed),
