@@ -201,10 +201,15 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
     }
     source = "extracted from " + segmentationName;
   }
-  if (progress.AbortRequested())
+  // A cancel request (3D Slicer's Abort) is honoured between the stages; nothing is written then.
+  const auto stopIfCancelled = [&progress](const char * stage)
   {
-    throw vr::Cancelled("reading");
-  }
+    if (progress.AbortRequested())
+    {
+      throw vr::Cancelled(std::string(stage) + ": cancelled");
+    }
+  };
+  stopIfCancelled("reading");
 
   vr::VesselPathLogic logic;
   logic.SetVolume(volume);
@@ -222,6 +227,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   {
     progress.Print(std::cerr, "warning: " + warning);
   }
+  stopIfCancelled("reformation");
   progress.Update(0.9, "writing");
   writer.Write(results);
   writer.CommitAll();

@@ -319,4 +319,40 @@ TEST(VesselPathReformationModule, RunsInProcessAsSlicerLoadsIt)
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   EXPECT_TRUE(fs::exists(cpr));
 }
+
+/** Slicer's progress callback in the cancel test: sets Abort when the module reports its reformation stage. */
+void
+AbortAtTheReformation(void * data)
+{
+  auto * information = static_cast<vr::test::SlicerModuleProcessInformation *>(data);
+  if (std::string(information->ProgressMessage) == "reformation")
+  {
+    information->Abort = 1;
+  }
+}
+
+TEST(VesselPathReformationModule, ACancelledRunWritesNothingAndReportsCancelledAsSlicerReadsIt)
+{
+  const TubeFiles                                 files = MakeTubeFiles("cancel");
+  const fs::path                                  cpr = files.Folder / "cpr.nrrd";
+  const fs::path                                  table = files.Folder / "lumen.csv";
+  static vr::test::SlicerModuleProcessInformation information;
+  information = vr::test::SlicerModuleProcessInformation{};
+  information.ProgressCallbackFunction = AbortAtTheReformation;
+  information.ProgressCallbackClientData = &information;
+  const ModuleRun run = vr::test::RunEntryPointInProcess(Library,
+                                                         { "VesselPathReformation",
+                                                           "--processinformationaddress",
+                                                           vr::test::AddressText(&information),
+                                                           files.Volume.string(),
+                                                           files.Centerlines.string(),
+                                                           cpr.string(),
+                                                           "--outputLumenTable",
+                                                           table.string() });
+  EXPECT_EQ(run.ExitCode, 0) << "Slicer reads a cancelled run's 0 as Cancelled: " << run.Err;
+  EXPECT_EQ(information.Abort, 1);
+  EXPECT_TRUE(Contains(run.Err + run.Out, "cancelled")) << run.Err;
+  EXPECT_FALSE(fs::exists(cpr));
+  EXPECT_FALSE(fs::exists(table));
+}
 } // namespace
