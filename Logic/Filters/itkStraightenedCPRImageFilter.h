@@ -44,7 +44,8 @@ operator<<(std::ostream & os, VesselPathCPRMode mode);
  * ComputePointImage is on); 2, the fold mask (unsigned char, 1 where neighbouring rows fold over each other:
  * x (K . Lateral) >= 1, K the curvature vector; straightened mode only). GetNumberOfFoldedPixels() counts them,
  * GetFoldFreeHalfWidth() is the smallest radius of curvature along the rows (the half-width below which no roll
- * folds), and GetFoldWarning() says so in words when pixels fold (also sent as an ITK warning).
+ * folds), and GetFoldWarning() says so in words when pixels fold: the caller reports it (no ITK warning: a
+ * module's stderr carries its own messages only).
  *
  * Bad parameters (Width or PixelSpacing not finite and > 0, a non-finite roll, a bad slab, no path, a path shorter
  * than one row) throw itk::ExceptionObject naming the parameter and its value.

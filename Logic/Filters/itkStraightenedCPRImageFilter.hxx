@@ -442,7 +442,6 @@ StraightenedCPRImageFilter<TVolumeImage, TOutputImage>::AfterThreadedGenerateDat
             << this->GetHalfWidth() << " mm exceeds the path's smallest radius of curvature " << m_FoldFreeHalfWidth
             << " mm; a Width of at most " << 2.0 * m_FoldFreeHalfWidth << " mm avoids it";
     m_FoldWarning = warning.str();
-    itkWarningMacro(<< m_FoldWarning);
   }
 }
 
