@@ -267,6 +267,28 @@ TEST(VesselPathReformationModule, MeasuresTheSameStenosisFromTheRadiiAlone)
   EXPECT_NEAR(std::stod(values.at("diameterStenosis")), 50.0, 3.0);
 }
 
+TEST(VesselPathReformationModule, WithoutCenterlinesThePathComesFromTheSegmentation)
+{
+  // The centerlines extracted from the mask (as Extract Centerlines makes them) give the path: about the tube's
+  // length (the extraction stops short of the tube's rounded ends), and the same stenosis measured on the mask.
+  const TubeFiles files = MakeTubeFiles("extracted");
+  const fs::path  returned = files.Folder / "returned.txt";
+  const ModuleRun run = RunModule({ files.Volume.string(),
+                                    (files.Folder / "cpr.nrrd").string(),
+                                    "--segmentation",
+                                    files.Mask.string(),
+                                    "--returnparameterfile",
+                                    returned.string() });
+  ASSERT_EQ(run.ExitCode, 0) << run.Err;
+  EXPECT_TRUE(Contains(run.Out, "extracted from")) << run.Out;
+  auto values = ReturnedValues(returned);
+  EXPECT_EQ(values.at("lumenSource"), "segmentation");
+  EXPECT_GT(std::stod(values.at("pathLength")), TubeLength - 10.0);
+  EXPECT_LT(std::stod(values.at("pathLength")), TubeLength + 1.0);
+  EXPECT_NEAR(std::stod(values.at("minimalLumenDiameter")), 2.0 * NarrowRadius, 0.2);
+  EXPECT_NEAR(std::stod(values.at("diameterStenosis")), 50.0, 3.0);
+}
+
 /** A run that must fail: exit 1, the message naming \a named, no output written and an existing one kept. */
 void
 ExpectRefused(const TubeFiles & files, const std::vector<std::string> & extra, const std::string & named)
