@@ -240,7 +240,7 @@ VesselPath::Finish()
   if (!spacings.empty())
   {
     std::nth_element(spacings.begin(), spacings.begin() + spacings.size() / 2, spacings.end());
-    m_TangentHalfWindow = spacings[spacings.size() / 2];
+    m_TangentHalfWindow = std::max(DefaultTangentHalfWindow, spacings[spacings.size() / 2]);
   }
 }
 
@@ -346,6 +346,16 @@ VesselPath::ProjectPoint(const PointType & point) const
   }
   const NearestOnPolyline where = Nearest(m_Points, point);
   return m_ArcLengths[where.Segment] + (m_ArcLengths[where.Segment + 1] - m_ArcLengths[where.Segment]) * where.Fraction;
+}
+
+void
+VesselPath::SetTangentHalfWindow(double halfWindow)
+{
+  if (!(std::isfinite(halfWindow) && halfWindow > 0.0))
+  {
+    itkGenericExceptionMacro(<< "VesselPath: the tangent's half-window " << halfWindow << " mm must be finite and > 0");
+  }
+  m_TangentHalfWindow = halfWindow;
 }
 
 VesselPath

@@ -26,8 +26,10 @@ namespace itk
  * of the tree, since a child may join its parent anywhere along it.
  *
  * The path is the polyline through those points: its position and radius are interpolated linearly in s; its tangent
- * at s is the chord from s - h to s + h (clamped to the path), h the median spacing of its points, which is
- * continuous in s where a polyline's own segment direction is not. Radius is NaN when the tree carries none.
+ * at s is the chord from s - h to s + h (clamped to the path), h = max(DefaultTangentHalfWindow, the median spacing
+ * of its points) unless set: continuous in s where a polyline's own segment direction is not, and blind to the
+ * sub-millimetre wiggle of real centerlines that would otherwise bend the frame (and fold a straightened CPR) at
+ * every point. Radius is NaN when the tree carries none.
  *
  * Errors (itk::ExceptionObject) name the branch id or arc length at fault.
  * \sa RotationMinimizingFrame, VesselPathSection
@@ -41,6 +43,8 @@ public:
 
   /** The smallest gap (mm) between a branch's first point and its parent's polyline that still attaches it. */
   static constexpr double JunctionTolerance = 2.0;
+  /** The least half-width of the tangent's chord, mm. */
+  static constexpr double DefaultTangentHalfWindow = 2.0;
 
   /** An empty path (length 0); FromTree makes real ones. */
   VesselPath() = default;
@@ -95,12 +99,15 @@ public:
   {
     return m_HasRadii;
   }
-  /** The half-width h of the tangent's chord, mm. */
+  /** The half-width h of the tangent's chord, mm; setting it (finite, > 0, else it throws) trades noise for detail:
+   * analytic curves sampled finely may take their point spacing. */
   double
   GetTangentHalfWindow() const
   {
     return m_TangentHalfWindow;
   }
+  void
+  SetTangentHalfWindow(double halfWindow);
 
   /** Position, unit tangent, radius (NaN without radii) and branch id at arc length \a s, clamped to [0, length]. */
   PointType
@@ -135,7 +142,7 @@ private:
   std::vector<int> m_BranchIds;
   std::vector<int> m_BranchChain;
   bool             m_HasRadii{ false };
-  double           m_TangentHalfWindow{ 0.5 };
+  double           m_TangentHalfWindow{ DefaultTangentHalfWindow };
   double           m_ArcLengthOffset{ 0.0 };
 };
 

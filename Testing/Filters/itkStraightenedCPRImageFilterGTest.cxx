@@ -565,8 +565,9 @@ TEST(StraightenedCPRImageFilter, TightUTurnFoldsAndTheMaskMarksTheOverlap)
     }
     return V(0, 0, 1);
   };
-  const auto path = PathThrough(curve, 11200);
-  auto       filter = CPRFilter::New();
+  auto path = PathThrough(curve, 11200);
+  path.SetTangentHalfWindow(0.01); // the curve's own tangent, up to where the half circle begins and ends
+  auto filter = CPRFilter::New();
   filter->SetVolume(
     MakeVolume({ { 4, 4, 4 } }, V(1, 1, 1), P(0, 0, 0), Identity(), [](const PointType &) { return 0.0; }));
   filter->SetPath(path);
