@@ -2,8 +2,7 @@
 #ifndef vrCenterlineIOTestSupport_h
 #define vrCenterlineIOTestSupport_h
 
-// What the centerline IO tests share: distances between trees, a small Y-shaped tree, polylines as vtkPolyData,
-// and InputErrorOf with the text a reader printed.
+// What the centerline IO tests share: distances between trees, a small Y-shaped tree, polylines as vtkPolyData.
 
 #include "vrCenterlineIO.h"
 #include "vrCenterlinePolyData.h"
@@ -42,33 +41,7 @@ using vr::test::P;
 
 using vr::test::InputErrorOf;
 
-/** InputErrorOf, capturing what \a action printed on stdout and stderr into \a printed: VTK and MetaIO report
- * trouble there, which belongs in the message instead. */
-inline std::string
-InputErrorAndPrintedTextOf(const std::function<void()> & action, std::string & printed)
-{
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  std::string message;
-  bool        thrown = false;
-  try
-  {
-    action();
-  }
-  catch (const vr::InputError & error)
-  {
-    message = error.what();
-    thrown = true;
-  }
-  catch (...)
-  {
-  }
-  printed = testing::internal::GetCapturedStderr();
-  printed += testing::internal::GetCapturedStdout();
-  EXPECT_TRUE(thrown) << "expected vr::InputError";
-  std::cout << "  vr::InputError: " << message << std::endl;
-  return message;
-}
+using vr::test::InputErrorAndPrintedTextOf;
 
 #define EXPECT_MESSAGE_HAS(message, part)                                                                              \
   EXPECT_NE((message).find(part), std::string::npos) << "message: " << (message) << "\nmissing: " << (part)

@@ -68,18 +68,9 @@ const std::string RelaxExecutable = VR_RELAX_EXE;
 const std::string RelaxLibrary = VR_RELAX_LIB;
 const fs::path    DataFolder = fs::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
 
-/** The SlicerExecutionModel ModuleProcessInformation layout, written here from Slicer's header independently of
- * the module's own copy, so that a layout mismatch fails. */
-struct SlicerProcessInformation
-{
-  unsigned char Abort;
-  float         Progress;
-  float         StageProgress;
-  char          ProgressMessage[1024];
-  void (*ProgressCallbackFunction)(void *);
-  void * ProgressCallbackClientData;
-  double ElapsedTime;
-};
+/** The SlicerExecutionModel ModuleProcessInformation layout, written in the test support from Slicer's header
+ * independently of the module's own copy, so that a layout mismatch fails. */
+using SlicerProcessInformation = vr::test::SlicerModuleProcessInformation;
 
 using vr::test::RunLimits;
 using vr::test::RunProgram;
@@ -101,27 +92,11 @@ WriteText(const fs::path & path, const std::string & text)
   file << text;
 }
 
-/** A fresh folder for one test, under the build tree. File systems an interrupted earlier run left mounted inside
- * it (the full-disk and read-only tests mount small ones) are unmounted first. */
+/** A fresh folder for one test, under the build tree (vr::test::FreshFolderForThisTest). */
 inline fs::path
 TestFolder()
 {
-  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path folder = fs::path(VR_TEST_OUTPUT_DIR) / (std::string(info->test_suite_name()) + "." + info->name());
-  std::ifstream  mounts("/proc/mounts");
-  std::string    device;
-  std::string    mountPoint;
-  std::string    rest;
-  while (mounts >> device >> mountPoint && std::getline(mounts, rest))
-  {
-    if (mountPoint.rfind(folder.string() + "/", 0) == 0)
-    {
-      ::umount2(mountPoint.c_str(), MNT_DETACH);
-    }
-  }
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
+  return vr::test::FreshFolderForThisTest(VR_TEST_OUTPUT_DIR, "");
 }
 
 template<typename TSymbol>

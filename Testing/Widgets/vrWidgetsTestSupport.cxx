@@ -138,13 +138,11 @@ FrameGrey(const QImage & frame, const QPointF & position)
 }
 
 void
-ExpectShows(ViewerWindow & window, VolumeNode * expected)
+ExpectSameImage(CPRView & view, VolumeNode * expected)
 {
-  CPRView *      view = window.GetCPRView();
-  vtkImageData * shown = view->GetDisplayedImage(false);
-  int            dimensions[3];
+  vtkImageData * shown = view.GetDisplayedImage(false);
+  int            dimensions[3], shownDimensions[3];
   expected->GetImageData()->GetDimensions(dimensions);
-  int shownDimensions[3];
   shown->GetDimensions(shownDimensions);
   ASSERT_EQ(shownDimensions[0], dimensions[0]);
   ASSERT_EQ(shownDimensions[1], dimensions[1]);
@@ -156,6 +154,20 @@ ExpectShows(ViewerWindow & window, VolumeNode * expected)
     different += pixels[k] == reference[k] ? 0 : 1;
   }
   EXPECT_EQ(different, 0u) << "of " << reference.size() << " pixels";
+}
+
+void
+ExpectShows(ViewerWindow & window, VolumeNode * expected)
+{
+  CPRView * view = window.GetCPRView();
+  ExpectSameImage(*view, expected);
+  if (::testing::Test::HasFatalFailure())
+  {
+    return;
+  }
+  int dimensions[3];
+  expected->GetImageData()->GetDimensions(dimensions);
+  const std::vector<float> reference = NodePixels(expected);
 
   // On screen: pixel centres sampled on a grid, each image pixel spanning a few screen pixels (nearest interpolation).
   const QImage frame = view->GetRenderWidget()->grabFramebuffer();

@@ -65,6 +65,10 @@ Difference(const StageCounts & after, const StageCounts & before);
 int
 FrameGrey(const QImage & frame, const QPointF & position);
 
+/** Checks that the image data the CPR view's actor draws is \a expected, pixel for pixel. */
+void
+ExpectSameImage(CPRView & view, VolumeNode * expected);
+
 /** Checks that the CPR view shows exactly \a expected (the logic's CPR): the image data its actor draws equals it
  * pixel for pixel, and the frame on screen shows those pixels through window/level. */
 void
