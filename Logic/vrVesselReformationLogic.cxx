@@ -10,7 +10,6 @@
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRDepthImageFilter.h"
 #include "itkCPRResampleImageFilter.h"
-#include "itkMinimumMaximumImageCalculator.h"
 #include "vrCutSurface.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
@@ -52,24 +51,13 @@ struct VesselReformationLogic::Internals
   bool                            SurfaceEnabled{ true };
   WarningCallback                 Warn;
 
-  // The inputs as ITK sees them, converted again only when a node changes.
-  VolumeNode *             ConvertedVolumeNode{ nullptr };
-  vtkMTimeType             ConvertedVolumeTime{ 0 };
-  CenterlineNode *         ConvertedCenterlineNode{ nullptr };
-  vtkMTimeType             ConvertedCenterlineTime{ 0 };
-  VolumeImageType::Pointer Volume;
-  float                    VolumeMinimum{ 0.0f };
-  itk::CenterlineTree      Tree;
-  bool                     VolumeChanged{ false };
-  // The segmentation's vessel mask, made again only when the node or its vessel labels change.
-  VolumeNode *                  ConvertedSegmentationNode{ nullptr };
-  vtkMTimeType                  ConvertedSegmentationTime{ 0 };
-  std::vector<double>           ConvertedLabels;
-  SegmentationMaskType::Pointer SegmentationMask;
-  /** The segmentation node's values and the names of its regions (RegionNameAttributePrefix), for naming the
-   * extracted branches; empty names when the node names none. */
-  VolumeImageType::Pointer   SegmentationValues;
-  std::map<int, std::string> SegmentationRegionNames;
+  // The inputs as ITK sees them, from the cache (converted again only when a node changes; possibly shared with
+  // another logic on the same nodes): the ones this logic's pipeline holds now.
+  std::shared_ptr<ReformationInputCache>                     Inputs = std::make_shared<ReformationInputCache>();
+  std::shared_ptr<const ReformationInputCache::Volume>       Volume;
+  std::shared_ptr<const ReformationInputCache::Segmentation> Segmentation;
+  std::shared_ptr<const itk::CenterlineTree>                 Tree;
+  bool                                                       VolumeChanged{ false };
   // Where Tree came from: a centerline node, or the extraction (its run count when Tree was taken from it).
   bool         TreeFromExtraction{ false };
   unsigned int TreeExtractionRuns{ 0 };
@@ -151,88 +139,31 @@ struct VesselReformationLogic::Internals
 void
 VesselReformationLogic::Internals::ConvertInputs()
 {
-  const auto         start = Clock::now();
-  const vtkMTimeType volumeTime = VolumeNodeInput->GetMTime();
-  const bool volumeChanged = VolumeNodeInput.GetPointer() != ConvertedVolumeNode || volumeTime != ConvertedVolumeTime;
-  bool       centerlinesChanged = false;
-  bool       segmentationChanged = false;
+  const auto start = Clock::now();
+  // The cache converts what changed; a value other than the one the pipeline holds is a change.
+  const auto volume = Inputs->GetVolume(VolumeNodeInput);
+  const bool volumeChanged = volume != Volume;
+  Volume = volume;
+  bool centerlinesChanged = false;
+  bool segmentationChanged = false;
   if (CenterlineNodeInput)
   {
-    centerlinesChanged = CenterlineNodeInput.GetPointer() != ConvertedCenterlineNode ||
-                         CenterlineNodeInput->GetMTime() != ConvertedCenterlineTime;
+    const auto tree = Inputs->GetCenterlines(CenterlineNodeInput);
+    centerlinesChanged = tree != Tree || TreeFromExtraction;
+    Tree = tree;
+    TreeFromExtraction = false;
   }
   else
   {
-    segmentationChanged = SegmentationNodeInput.GetPointer() != ConvertedSegmentationNode ||
-                          SegmentationNodeInput->GetMTime() != ConvertedSegmentationTime ||
-                          ExtractionParameters.Labels != ConvertedLabels;
+    const auto segmentation = Inputs->GetSegmentation(SegmentationNodeInput, ExtractionParameters.Labels);
+    segmentationChanged = segmentation != Segmentation;
+    Segmentation = segmentation;
+    Extraction->SetInput(Segmentation->Mask);
   }
   VolumeChanged = volumeChanged;
   if (!volumeChanged && !centerlinesChanged && !segmentationChanged)
   {
     return;
-  }
-  if (volumeChanged)
-  {
-    ConvertedVolumeNode = nullptr;
-    Volume = ConvertVolumeNodeToItkImage(VolumeNodeInput);
-    auto calculator = itk::MinimumMaximumImageCalculator<VolumeImageType>::New();
-    calculator->SetImage(Volume);
-    calculator->ComputeMinimum();
-    VolumeMinimum = calculator->GetMinimum();
-    ConvertedVolumeNode = VolumeNodeInput;
-    ConvertedVolumeTime = volumeTime;
-  }
-  if (centerlinesChanged)
-  {
-    ConvertedCenterlineNode = nullptr;
-    Tree = ConvertCenterlineNodeToTree(CenterlineNodeInput);
-    TreeFromExtraction = false;
-    ConvertedCenterlineNode = CenterlineNodeInput;
-    ConvertedCenterlineTime = CenterlineNodeInput->GetMTime();
-  }
-  if (segmentationChanged)
-  {
-    ConvertedSegmentationNode = nullptr;
-    const VolumeImageType::Pointer values = ConvertVolumeNodeToItkImage(SegmentationNodeInput);
-    SegmentationReadReport         report;
-    SegmentationMask = MakeSegmentationMask(values, ExtractionParameters.Labels, SegmentationName(), &report);
-    SegmentationRegionNames.clear();
-    const std::string prefix = RegionNameAttributePrefix;
-    for (const auto & [key, value] : SegmentationNodeInput->GetAttributes())
-    {
-      if (key.compare(0, prefix.size(), prefix) == 0 && !value.empty())
-      {
-        try
-        {
-          SegmentationRegionNames[std::stoi(key.substr(prefix.size()))] = value;
-        }
-        catch (const std::exception &)
-        {
-          // Not a region number: not ours to read.
-        }
-      }
-    }
-    SegmentationValues = SegmentationRegionNames.empty() ? nullptr : values;
-    if (report.ForegroundVoxels == 0)
-    {
-      if (ExtractionParameters.Labels.empty())
-      {
-        throw InputError(SegmentationName() + ": no vessel voxel: every voxel is 0");
-      }
-      std::ostringstream labels;
-      for (std::size_t k = 0; k < ExtractionParameters.Labels.size(); ++k)
-      {
-        labels << (k == 0 ? "" : ", ") << ExtractionParameters.Labels[k];
-      }
-      throw InputError(SegmentationName() + ": no voxel with label " + labels.str() + "; its values are " +
-                         report.Values,
-                       ParameterName::VesselLabels);
-    }
-    Extraction->SetInput(SegmentationMask);
-    ConvertedSegmentationNode = SegmentationNodeInput;
-    ConvertedSegmentationTime = SegmentationNodeInput->GetMTime();
-    ConvertedLabels = ExtractionParameters.Labels;
   }
   ++Counts.Conversion;
   if (SegmentationNodeInput)
@@ -249,8 +180,7 @@ VesselReformationLogic::Internals::ConvertInputs()
 std::string
 VesselReformationLogic::Internals::SegmentationName() const
 {
-  const std::string & name = SegmentationNodeInput->GetName();
-  return name.empty() ? std::string("segmentation") : "segmentation \"" + name + "\"";
+  return ReformationInputCache::DescribeSegmentationNode(SegmentationNodeInput);
 }
 
 void
@@ -270,7 +200,7 @@ VesselReformationLogic::Internals::CheckTreeAgainstVolume()
                                                                 : "the volume \"" + VolumeNodeInput->GetName() + "\"";
   // No point inside throws: an empty reformation would look like a result.
   InputWarning =
-    CheckCenterlineVolumeFit(MeasureCenterlineVolumeFit(Tree, Volume), centerlines, volume, TreeFromExtraction);
+    CheckCenterlineVolumeFit(MeasureCenterlineVolumeFit(*Tree, Volume->Image), centerlines, volume, TreeFromExtraction);
   if (!InputWarning.empty())
   {
     Warning(InputWarning, TreeFromExtraction ? std::string() : std::string(ParameterName::CenterlineSpace));
@@ -281,7 +211,7 @@ void
 VesselReformationLogic::Internals::CheckSegmentationAgainstVolume()
 {
   SegmentationWarning.clear();
-  if (detail::SameGrid(SegmentationMask, Volume))
+  if (detail::SameGrid(Segmentation->Mask, Volume->Image))
   {
     return;
   }
@@ -292,18 +222,19 @@ VesselReformationLogic::Internals::CheckSegmentationAgainstVolume()
   itk::Point<double, 3> segmentationHigh;
   itk::Point<double, 3> volumeLow;
   itk::Point<double, 3> volumeHigh;
-  detail::PhysicalBounds(SegmentationMask, segmentationLow, segmentationHigh);
-  detail::PhysicalBounds(Volume, volumeLow, volumeHigh);
+  detail::PhysicalBounds(Segmentation->Mask, segmentationLow, segmentationHigh);
+  detail::PhysicalBounds(Volume->Image, volumeLow, volumeHigh);
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     if (segmentationHigh[axis] < volumeLow[axis] || segmentationLow[axis] > volumeHigh[axis])
     {
-      throw InputError(SegmentationName() + " (" + detail::DescribeGrid(SegmentationMask) + ") does not overlap " +
-                       volumeName + " (" + detail::DescribeGrid(Volume) + "); is it the segmentation of this scan?");
+      throw InputError(SegmentationName() + " (" + detail::DescribeGrid(Segmentation->Mask) + ") does not overlap " +
+                       volumeName + " (" + detail::DescribeGrid(Volume->Image) +
+                       "); is it the segmentation of this scan?");
     }
   }
-  SegmentationWarning = SegmentationName() + " lies on another grid (" + detail::DescribeGrid(SegmentationMask) +
-                        ") than " + volumeName + " (" + detail::DescribeGrid(Volume) +
+  SegmentationWarning = SegmentationName() + " lies on another grid (" + detail::DescribeGrid(Segmentation->Mask) +
+                        ") than " + volumeName + " (" + detail::DescribeGrid(Volume->Image) +
                         "); its centerlines are extracted on its own grid, in physical space, and reformed in the "
                         "volume. The reformation continues.";
   Warning(SegmentationWarning, "");
@@ -319,7 +250,7 @@ VesselReformationLogic::Internals::ExtractCenterlines()
     ExtractionWarning.clear();
     return;
   }
-  ConfigureCenterlineExtraction(Extraction, SegmentationMask, SegmentationName(), ExtractionParameters);
+  ConfigureCenterlineExtraction(Extraction, Segmentation->Mask, SegmentationName(), ExtractionParameters);
   // The extraction takes a fixed share of the progress bar when it runs; the other stages share the rest.
   Monitor.SetShare(detail::Stage::Extraction, 0.0, detail::WillRun(Extraction->GetOutput()) ? 0.3 : 0.0);
   const unsigned int runsBefore = Monitor.GetRuns(detail::Stage::Extraction);
@@ -349,14 +280,14 @@ VesselReformationLogic::Internals::ExtractCenterlines()
     }
     return;
   }
-  Tree = Extraction->GetCenterlineTree();
-  NameBranchesByRegion(Tree, SegmentationValues.GetPointer(), SegmentationRegionNames);
-  TreeFromExtraction = true;
+  auto extracted = std::make_shared<itk::CenterlineTree>(Extraction->GetCenterlineTree());
+  NameBranchesByRegion(*extracted, Segmentation->Values.GetPointer(), Segmentation->RegionNames);
+  Tree = std::move(extracted);
+  TreeFromExtraction = true; // a centerline node set later is taken again
   TreeExtractionRuns = runs;
-  ConvertedCenterlineNode = nullptr; // a centerline node set later is converted again
   const std::string & name = SegmentationNodeInput->GetName();
   Outputs.ExtractedCenterlines =
-    ConvertTreeToCenterlineNode(Tree, (name.empty() ? "segmentation" : name) + " centerlines");
+    ConvertTreeToCenterlineNode(*Tree, (name.empty() ? "segmentation" : name) + " centerlines");
   ExtractionWarning.clear();
   if (Extraction->GetNumberOfComponentsWithoutCenterline() > 0)
   {
@@ -410,9 +341,9 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
 void
 VesselReformationLogic::Internals::ConfigurePipeline()
 {
-  Depth->SetCenterlineTree(Tree);
+  Depth->SetCenterlineTree(*Tree);
   Depth->SetViewSpecification(Parameters.ToViewSpecification());
-  Depth->SetReferenceVolume(Volume);
+  Depth->SetReferenceVolume(Volume->Image);
   Depth->SetMode(Parameters.Mode);
   Depth->SetFixLumen(Parameters.FixLumen);
 
@@ -423,11 +354,11 @@ VesselReformationLogic::Internals::ConfigurePipeline()
 
   for (ResampleFilterType * resample : { UnfilteredResample.GetPointer(), RelaxedResample.GetPointer() })
   {
-    resample->SetVolume(Volume);
+    resample->SetVolume(Volume->Image);
     resample->SetInterpolation(Parameters.Interpolation);
     resample->SetSlabThickness(Parameters.SlabThickness);
     resample->SetSlabMode(Parameters.SlabMode);
-    resample->SetDefaultValue(VolumeMinimum);
+    resample->SetDefaultValue(Volume->Minimum);
   }
   RelaxedResample->SetDepth(Relax->GetOutput());
 }
@@ -581,6 +512,18 @@ VesselReformationLogic::SetOpenCLDeviceQuery(OpenCLDeviceQuery query)
 {
   m_Internals->OpenCLDevices = query ? std::move(query) : OpenCLDeviceQuery(QueryOpenCLDevice);
   m_Internals->HasBackendChoice = false;
+}
+
+void
+VesselReformationLogic::SetInputCache(std::shared_ptr<ReformationInputCache> cache)
+{
+  m_Internals->Inputs = cache ? std::move(cache) : std::make_shared<ReformationInputCache>();
+}
+
+std::shared_ptr<ReformationInputCache>
+VesselReformationLogic::GetInputCache() const
+{
+  return m_Internals->Inputs;
 }
 
 const ReformationOutputs &

@@ -7,6 +7,7 @@
 #include "itkCPRViewGeometry.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineNode.h"
+#include "vrReformationInputCache.h"
 #include "vrReformationParameters.h"
 #include "vrRelaxBackend.h"
 #include "vrImageTypes.h"
@@ -93,7 +94,8 @@ struct ReformationOutputs
  * module's logic.
  *
  * It takes a volume node, the centerlines (a centerline node, or a segmentation node whose centerlines it extracts)
- * and a parameter object, converts the nodes to ITK (vrNodeConversion.h, the one place RAS meets LPS), and keeps one
+ * and a parameter object, converts the nodes to ITK through a vr::ReformationInputCache (vrNodeConversion.h, the one
+ * place RAS meets LPS), and keeps one
  * ITK pipeline for its lifetime: with a segmentation, CenterlineExtractionFilter first; CPRDepthImageFilter, then
  * BilateralDepthRelaxFilter on the backend the parameters ask for (one CPU filter, and one OpenCL filter per device
  * asked for), then a CPRResampleImageFilter on the unfiltered and one on the relaxed depth; then it builds the cut
@@ -197,6 +199,14 @@ public:
   /** \param callback receives warnings during Update(); may be empty. */
   void
   SetWarningCallback(WarningCallback callback);
+  /** \param cache where the nodes are converted to ITK (converted again only when a node changes): one shared with
+   * another user of the same nodes (e.g. a view of one vessel path) converts them once for both; null gives the
+   * logic a cache of its own again, as it has from construction. */
+  void
+  SetInputCache(std::shared_ptr<ReformationInputCache> cache);
+  /** \return the cache the logic converts its input nodes through. */
+  std::shared_ptr<ReformationInputCache>
+  GetInputCache() const;
   /** \param query answers which OpenCL device the Auto backend would get (default vr::QueryOpenCLDevice, the
    * installed drivers); the next Update() chooses the backend again. */
   void

@@ -4,6 +4,7 @@
 // run to convergence on random and phantom maps, independence of the pixel count, and the housekeeping (threads,
 // workspace reuse, in place, progress, bad tolerance).
 #include "PlainBilateralDepthRelax.h"
+#include "vrTestDepthMaps.h"
 #include "vrTestImages.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
@@ -18,7 +19,6 @@
 #include <array>
 #include <iostream>
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -29,13 +29,11 @@ using Solver = itk::BilateralDepthRelaxSteadySolver;
 /** The jump threshold J = 3 mm of the filter's default, as the anisotropy a = 1/J^2. */
 constexpr double DefaultAnisotropy = 1.0 / 9.0;
 
-struct Map
-{
-  std::vector<float>         Depth;
-  std::vector<unsigned char> Fixed;
-  std::size_t                Width;
-  std::size_t                Height;
-};
+/** The maps it is tried on (vrTestDepthMaps.h): random ones and both phantoms' scan-line maps. */
+using Map = vr::test::DepthMapBuffers;
+constexpr auto & RandomMap = vr::test::RandomDepthMapBuffers;
+constexpr auto & PhantomMap = vr::test::RunoffDepthMapBuffers;
+constexpr auto & ThoraxMap = vr::test::ThoraxDepthMapBuffers;
 
 std::vector<float>
 Solve(const Map & map, double anisotropy, unsigned int threads = 1, Solver::Report * report = nullptr)
@@ -61,45 +59,6 @@ Residual(const Map & map, const std::vector<float> & relaxed, double anisotropy)
 {
   return vr::test::PlainFixedPointResidual(
     std::vector<double>(relaxed.begin(), relaxed.end()), map.Fixed, map.Width, map.Height, anisotropy);
-}
-
-Map
-RandomMap(std::size_t width, std::size_t height, float range, double fixedFraction, unsigned int seed)
-{
-  std::mt19937                          generator(seed);
-  std::uniform_real_distribution<float> depth(0.0f, range);
-  std::bernoulli_distribution           fixed(fixedFraction);
-  Map                                   map{ {}, {}, width, height };
-  for (std::size_t k = 0; k < width * height; ++k)
-  {
-    map.Depth.push_back(depth(generator));
-    map.Fixed.push_back(fixed(generator) ? 1 : 0);
-  }
-  return map;
-}
-
-Map
-PhantomMap(unsigned int width, unsigned int height)
-{
-  const auto map = vr::test::MakePhantomDepthMap(width, height);
-  return { vr::test::PixelsOf(map.Depth.GetPointer()), vr::test::PixelsOf(map.Fixed.GetPointer()), width, height };
-}
-
-/** The thoracic phantom's scan-line depth map and fixed mask at its design angle on a W x H grid. */
-Map
-ThoraxMap(unsigned int width, unsigned int height)
-{
-  const auto phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax);
-  auto       filter = itk::CPRDepthImageFilter<itk::Image<float, 2>>::New();
-  filter->SetCenterlineTree(phantom.Tree);
-  itk::CPRViewSpecification view;
-  view.AngleInDegrees = phantom.DesignAngleInDegrees;
-  view.ImageSize = { { width, height } };
-  filter->SetViewSpecification(view);
-  filter->Update();
-  return {
-    vr::test::PixelsOf(filter->GetDepthOutput()), vr::test::PixelsOf(filter->GetFixedMaskOutput()), width, height
-  };
 }
 
 /** The window [x0, x0 + width) x [y0, y0 + height) of \a map: a depth map of its own. */

@@ -20,32 +20,7 @@ namespace
 #define EXPECT_MESSAGE_HAS(message, part)                                                                              \
   EXPECT_NE((message).find(part), std::string::npos) << "message: " << (message) << "\nmissing: " << (part)
 
-/** The vr::InputError message of \a action; what it printed on stdout and stderr goes to \a printed. */
-std::string
-InputErrorAndPrintedTextOf(const std::function<void()> & action, std::string & printed)
-{
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  std::string message;
-  bool        thrown = false;
-  try
-  {
-    action();
-  }
-  catch (const vr::InputError & error)
-  {
-    message = error.what();
-    thrown = true;
-  }
-  catch (...)
-  {
-  }
-  printed = testing::internal::GetCapturedStderr();
-  printed += testing::internal::GetCapturedStdout();
-  EXPECT_TRUE(thrown) << "expected vr::InputError";
-  std::cout << "  vr::InputError: " << message << std::endl;
-  return message;
-}
+using vr::test::InputErrorAndPrintedTextOf;
 
 /** One piece of three points and one polyline, every array ASCII. */
 std::string

@@ -22,7 +22,8 @@ import re
 import sys
 import tempfile
 
-SOURCE_EXTENSIONS = ('.h', '.hxx', '.cxx', '.h.in', '.cxx.in')
+from layout_checks import SOURCE_EXTENSIONS, source_files, main as run_check, write_file
+
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
 ALLOWED = {
     'Logic/Common': {'Logic/Common'},
@@ -57,14 +58,9 @@ def layer_of(relative):
 def scan(root):
     """Returns {relative path: [included names]} for the project's sources under root."""
     files = {}
-    for top in SCANNED:
-        for directory, subdirectories, names in os.walk(os.path.join(root, top)):
-            subdirectories[:] = [d for d in subdirectories if d not in ('corpus',)]
-            for name in names:
-                if name.endswith(SOURCE_EXTENSIONS):
-                    path = os.path.join(directory, name)
-                    with open(path, encoding='utf-8', errors='replace') as file:
-                        files[os.path.relpath(path, root)] = INCLUDE.findall(file.read())
+    for relative in source_files(root, SCANNED):
+        with open(os.path.join(root, relative), encoding='utf-8', errors='replace') as file:
+            files[relative] = INCLUDE.findall(file.read())
     return files
 
 
@@ -142,10 +138,7 @@ def strongly_connected(graph):
 def self_test():
     with tempfile.TemporaryDirectory() as root:
         def write(relative, text):
-            path = os.path.join(root, relative)
-            os.makedirs(os.path.dirname(path), exist_ok=True)
-            with open(path, 'w') as file:
-                file.write(text)
+            write_file(root, relative, text)
         # The ITK idiom alone (a .h and its .hxx) is no cycle.
         write('Logic/Filters/itkA.h', '#include "itkA.hxx"\n')
         write('Logic/Filters/itkA.hxx', '#include "itkA.h"\n')
@@ -173,20 +166,5 @@ def self_test():
     return 0
 
 
-def main(arguments):
-    if arguments == ['--self-test']:
-        return self_test()
-    if len(arguments) != 1:
-        print(__doc__, file=sys.stderr)
-        return 2
-    problems, count = check(arguments[0])
-    for problem in problems:
-        print('error: ' + problem, file=sys.stderr)
-    if problems:
-        return 1
-    print(f'{count} source files: no include cycle, layering respected')
-    return 0
-
-
 if __name__ == '__main__':
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run_check(sys.argv[1:], __doc__, check, self_test, 'no include cycle, layering respected'))

@@ -17,10 +17,11 @@ import re
 import sys
 import tempfile
 
+from layout_checks import source_files, main as run_check, write_file
+
 SCANNED = ('Logic', 'Module', 'Widgets', 'Applications')
 # The layers below the logic define the writers and say nothing of captions.
 SKIPPED = ('Logic/Common', 'Logic/Filters', 'Logic/IO', 'Logic/Nodes', 'Logic/Phantoms')
-SOURCE_EXTENSIONS = ('.h', '.hxx', '.cxx', '.h.in', '.cxx.in')
 WRITER_HOME = 'Logic/vrOutputWriter.cxx'
 SETTINGS_HOMES = ('Logic/vrFilterSettingsText.h', 'Logic/vrFilterSettingsText.cxx')
 
@@ -44,39 +45,27 @@ def settings_word(literal):
 def check(root):
     problems = []
     count = 0
-    for top in SCANNED:
-        for directory, subdirectories, names in os.walk(os.path.join(root, top)):
-            relative_directory = os.path.relpath(directory, root).replace(os.sep, '/')
-            if relative_directory.startswith(SKIPPED):
-                subdirectories[:] = []
-                continue
-            for name in sorted(names):
-                if not name.endswith(SOURCE_EXTENSIONS):
-                    continue
-                relative = f'{relative_directory}/{name}'
-                count += 1
-                with open(os.path.join(root, relative), encoding='utf-8', errors='replace') as file:
-                    code = without_comments(file.read())
-                for match in WRITE_CALL.finditer(code):
-                    if relative != WRITER_HOME:
-                        line = code.count('\n', 0, match.start()) + 1
-                        problems.append(f'{relative}:{line}: writes a reformation output itself ("{match.group(0)}"); '
-                                        f'use vr::OutputWriter or vr::WriteOutputs ({WRITER_HOME})')
-                for match in LITERAL.finditer(code):
-                    if relative not in SETTINGS_HOMES and settings_word(match.group(1)):
-                        line = code.count('\n', 0, match.start()) + 1
-                        problems.append(f'{relative}:{line}: spells the filter settings ("{match.group(1)}"); '
-                                        f'use vr::DescribeFilterSettings ({SETTINGS_HOMES[0]})')
+    for relative in source_files(root, SCANNED, SKIPPED):
+        count += 1
+        with open(os.path.join(root, relative), encoding='utf-8', errors='replace') as file:
+            code = without_comments(file.read())
+        for match in WRITE_CALL.finditer(code):
+            if relative != WRITER_HOME:
+                line = code.count('\n', 0, match.start()) + 1
+                problems.append(f'{relative}:{line}: writes a reformation output itself ("{match.group(0)}"); '
+                                f'use vr::OutputWriter or vr::WriteOutputs ({WRITER_HOME})')
+        for match in LITERAL.finditer(code):
+            if relative not in SETTINGS_HOMES and settings_word(match.group(1)):
+                line = code.count('\n', 0, match.start()) + 1
+                problems.append(f'{relative}:{line}: spells the filter settings ("{match.group(1)}"); '
+                                f'use vr::DescribeFilterSettings ({SETTINGS_HOMES[0]})')
     return problems, count
 
 
 def self_test():
     with tempfile.TemporaryDirectory() as root:
         def write(relative, text):
-            path = os.path.join(root, relative)
-            os.makedirs(os.path.dirname(path), exist_ok=True)
-            with open(path, 'w') as file:
-                file.write(text)
+            write_file(root, relative, text)
         # The homes themselves, comments, and the flag "--iterations" are no copies.
         write(WRITER_HOME, 'WriteSurface(outputs.Surface, path, CoordinateSpace::RAS, CoordinateSpace::LPS);\n')
         write(SETTINGS_HOMES[1], 'text << breakBefore << "steady solver";\n')
@@ -94,20 +83,5 @@ def self_test():
     return 0
 
 
-def main(arguments):
-    if arguments == ['--self-test']:
-        return self_test()
-    if len(arguments) != 1:
-        print(__doc__, file=sys.stderr)
-        return 2
-    problems, count = check(arguments[0])
-    for problem in problems:
-        print('error: ' + problem, file=sys.stderr)
-    if problems:
-        return 1
-    print(f'{count} source files: one output writer, one description of the filter settings')
-    return 0
-
-
 if __name__ == '__main__':
-    sys.exit(main(sys.argv[1:]))
+    sys.exit(run_check(sys.argv[1:], __doc__, check, self_test, 'one output writer, one description of the filter settings'))

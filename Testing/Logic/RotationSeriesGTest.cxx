@@ -10,6 +10,7 @@
 #include "vrNodeConversion.h"
 #include "vrRotationSeries.h"
 #include "vrSecondaryCaptureIO.h"
+#include "vrTestFiles.h"
 #include "vrVesselReformationLogic.h"
 #include "vrVolumeIO.h"
 
@@ -42,24 +43,7 @@ namespace fs = std::filesystem;
 fs::path
 TestFolder()
 {
-  const auto *   info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path folder =
-    fs::path(VR_TEST_OUTPUT_DIR) / "RotationSeries" / (std::string(info->test_suite_name()) + "." + info->name());
-  // File systems an interrupted earlier run left mounted inside it (the disk tests mount small ones) go first.
-  std::ifstream mounts("/proc/mounts");
-  std::string   device;
-  std::string   mountPoint;
-  std::string   rest;
-  while (mounts >> device >> mountPoint && std::getline(mounts, rest))
-  {
-    if (mountPoint.rfind(folder.string() + "/", 0) == 0)
-    {
-      ::umount2(mountPoint.c_str(), MNT_DETACH);
-    }
-  }
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
+  return vr::test::FreshFolderForThisTest(fs::path(VR_TEST_OUTPUT_DIR) / "RotationSeries", "");
 }
 
 std::string

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <sys/mount.h>
 #include <unistd.h>
 
 namespace vr::test
@@ -79,8 +80,19 @@ Contains(const std::string & text, const std::string & part)
 std::filesystem::path
 FreshFolderForThisTest(const std::filesystem::path & root, const std::string & prefix)
 {
-  const auto * info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto   folder = root / (prefix + info->test_suite_name() + "." + info->name());
+  const auto *  info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const auto    folder = root / (prefix + info->test_suite_name() + "." + info->name());
+  std::ifstream mounts("/proc/mounts");
+  std::string   device;
+  std::string   mountPoint;
+  std::string   rest;
+  while (mounts >> device >> mountPoint && std::getline(mounts, rest))
+  {
+    if (mountPoint.rfind(folder.string() + "/", 0) == 0)
+    {
+      ::umount2(mountPoint.c_str(), MNT_DETACH);
+    }
+  }
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
   return folder;
@@ -118,6 +130,32 @@ InputErrorOf(const std::function<void()> & action)
   }
   ADD_FAILURE() << "expected vr::InputError, nothing was thrown";
   return std::string();
+}
+
+std::string
+InputErrorAndPrintedTextOf(const std::function<void()> & action, std::string & printed)
+{
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  std::string message;
+  bool        thrown = false;
+  try
+  {
+    action();
+  }
+  catch (const vr::InputError & error)
+  {
+    message = error.what();
+    thrown = true;
+  }
+  catch (...)
+  {
+  }
+  printed = testing::internal::GetCapturedStderr();
+  printed += testing::internal::GetCapturedStdout();
+  EXPECT_TRUE(thrown) << "expected vr::InputError";
+  std::cout << "  vr::InputError: " << message << std::endl;
+  return message;
 }
 
 std::string

@@ -50,11 +50,18 @@ FolderEntries(const std::filesystem::path & folder);
 std::string
 InputErrorOf(const std::function<void()> & action);
 
+/** InputErrorOf, capturing what \a action printed on stdout and stderr into \a printed: VTK and MetaIO report
+ * trouble there, which belongs in the message instead. */
+std::string
+InputErrorAndPrintedTextOf(const std::function<void()> & action, std::string & printed);
+
 /** Whether \a text contains \a part. */
 bool
 Contains(const std::string & text, const std::string & part);
 
-/** An empty folder for the running GoogleTest test: <root>/<prefix><suite>.<test>, emptied first. */
+/** An empty folder for the running GoogleTest test: <root>/<prefix><suite>.<test>, emptied first. File systems an
+ * interrupted earlier run left mounted inside it (the full-disk and read-only tests mount small ones) are unmounted
+ * first. */
 std::filesystem::path
 FreshFolderForThisTest(const std::filesystem::path & root, const std::string & prefix);
 

@@ -2,11 +2,9 @@
 // Measurement, not a test: the steady solver's relaxed maps of both phantoms (and a random map, isotropic and not)
 // written as raw float files into a folder, with each solve's report, so that a rework of the solver can show its
 // results bit-identical before and after (md5sum the files). Usage: SteadyRelaxChecksums <folder> [threads]
-#include "vrTestImages.h"
+#include "vrTestDepthMaps.h"
 
 #include "itkBilateralDepthRelaxSteadySolver.h"
-#include "itkCPRDepthImageFilter.h"
-#include "itkCTAPhantom.h"
 
 #include <cstdio>
 #include <fstream>
@@ -17,51 +15,7 @@
 
 namespace
 {
-struct Map
-{
-  std::vector<float>         Depth;
-  std::vector<unsigned char> Fixed;
-  unsigned int               Width;
-  unsigned int               Height;
-};
-
-Map
-RunoffMap(unsigned int width, unsigned int height)
-{
-  const auto map = vr::test::MakePhantomDepthMap(width, height);
-  return { vr::test::PixelsOf(map.Depth.GetPointer()), vr::test::PixelsOf(map.Fixed.GetPointer()), width, height };
-}
-
-Map
-ThoraxMap(unsigned int width, unsigned int height)
-{
-  const auto phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax);
-  auto       filter = itk::CPRDepthImageFilter<itk::Image<float, 2>>::New();
-  filter->SetCenterlineTree(phantom.Tree);
-  itk::CPRViewSpecification view;
-  view.AngleInDegrees = phantom.DesignAngleInDegrees;
-  view.ImageSize = { { width, height } };
-  filter->SetViewSpecification(view);
-  filter->Update();
-  return {
-    vr::test::PixelsOf(filter->GetDepthOutput()), vr::test::PixelsOf(filter->GetFixedMaskOutput()), width, height
-  };
-}
-
-Map
-RandomMap(unsigned int width, unsigned int height, float range = 8.0f, double fixedFraction = 0.05)
-{
-  std::mt19937                          generator(9);
-  std::uniform_real_distribution<float> depth(0.0f, range);
-  std::bernoulli_distribution           fixed(fixedFraction);
-  Map                                   map{ {}, {}, width, height };
-  for (std::size_t k = 0; k < std::size_t{ width } * height; ++k)
-  {
-    map.Depth.push_back(depth(generator));
-    map.Fixed.push_back(fixed(generator) ? 1 : 0);
-  }
-  return map;
-}
+using Map = vr::test::DepthMapBuffers;
 
 /** Blocks of 20 x 20 pixels 50 mm apart in depth (weights between them vanish), with noise of 2 mm, fixed pixels in
  * the left half only: floating regions on the right, and a few isolated pixels. */
@@ -117,11 +71,11 @@ main(int argc, char * argv[])
   const std::string  folder = argv[1];
   const unsigned int threads = argc > 2 ? static_cast<unsigned int>(std::stoul(argv[2])) : 4;
   constexpr double   Anisotropy = 1.0 / 9.0;
-  Write(folder, "runoff-512x1024", RunoffMap(512, 1024), Anisotropy, threads);
-  Write(folder, "thorax-512x1024", ThoraxMap(512, 1024), Anisotropy, threads);
-  Write(folder, "thorax-128x256", ThoraxMap(128, 256), Anisotropy, threads);
-  Write(folder, "random-97x61", RandomMap(97, 61), Anisotropy, threads);
-  Write(folder, "random-97x61-isotropic", RandomMap(97, 61), 0.0, threads);
+  Write(folder, "runoff-512x1024", vr::test::RunoffDepthMapBuffers(512, 1024), Anisotropy, threads);
+  Write(folder, "thorax-512x1024", vr::test::ThoraxDepthMapBuffers(512, 1024), Anisotropy, threads);
+  Write(folder, "thorax-128x256", vr::test::ThoraxDepthMapBuffers(128, 256), Anisotropy, threads);
+  Write(folder, "random-97x61", vr::test::RandomDepthMapBuffers(97, 61, 8.0f, 0.05, 9), Anisotropy, threads);
+  Write(folder, "random-97x61-isotropic", vr::test::RandomDepthMapBuffers(97, 61, 8.0f, 0.05, 9), 0.0, threads);
   Write(folder, "blocks-301x203", BlockMap(301, 203), Anisotropy, threads);
   return 0;
 }

@@ -251,26 +251,6 @@ class PreviewWidgetsTest : public WindowOnSmallPhantomTest
 {
 };
 
-/** The CPR view's filtered image equals \a expected bit for bit. */
-void
-ExpectSameImage(CPRView & view, VolumeNode * expected)
-{
-  vtkImageData * shown = view.GetDisplayedImage(false);
-  int            dimensions[3], shownDimensions[3];
-  expected->GetImageData()->GetDimensions(dimensions);
-  shown->GetDimensions(shownDimensions);
-  ASSERT_EQ(shownDimensions[0], dimensions[0]);
-  ASSERT_EQ(shownDimensions[1], dimensions[1]);
-  const std::vector<float> reference = NodePixels(expected);
-  const auto *             pixels = static_cast<const float *>(shown->GetScalarPointer());
-  std::size_t              different = 0;
-  for (std::size_t k = 0; k < reference.size(); ++k)
-  {
-    different += pixels[k] == reference[k] ? 0 : 1;
-  }
-  EXPECT_EQ(different, 0u) << "of " << reference.size() << " pixels";
-}
-
 /** Amber pixels (the preview label's colour) in the lower right corner of the CPR view's frame. */
 int
 AmberPixelsInTheLowerRightCorner(CPRView & view)

@@ -1,12 +1,21 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrWidgetsTestSupport.h"
 
+#include "vrImageIO.h"
+
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QImage>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QTest>
+#include <QVTKOpenGLNativeWidget.h>
 
 #include <vtkImageData.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
 
 namespace vr::test
 {
@@ -104,5 +113,93 @@ NodePixels(VolumeNode * node)
   vtkImageData * data = node->GetImageData();
   const auto *   begin = static_cast<const float *>(data->GetScalarPointer());
   return std::vector<float>(begin, begin + data->GetNumberOfPoints());
+}
+
+Runs
+Difference(const StageCounts & after, const StageCounts & before)
+{
+  return { after.Conversion - before.Conversion,
+           after.Depth - before.Depth,
+           after.Relax - before.Relax,
+           after.Resample - before.Resample,
+           after.UnfilteredSamplings - before.UnfilteredSamplings,
+           after.RelaxedSamplings - before.RelaxedSamplings,
+           after.Surface - before.Surface };
+}
+
+int
+FrameGrey(const QImage & frame, const QPointF & position)
+{
+  const QColor color =
+    frame.pixelColor(static_cast<int>(std::floor(position.x())), static_cast<int>(std::floor(position.y())));
+  EXPECT_EQ(color.red(), color.green());
+  EXPECT_EQ(color.green(), color.blue());
+  return color.red();
+}
+
+void
+ExpectSameImage(CPRView & view, VolumeNode * expected)
+{
+  vtkImageData * shown = view.GetDisplayedImage(false);
+  int            dimensions[3], shownDimensions[3];
+  expected->GetImageData()->GetDimensions(dimensions);
+  shown->GetDimensions(shownDimensions);
+  ASSERT_EQ(shownDimensions[0], dimensions[0]);
+  ASSERT_EQ(shownDimensions[1], dimensions[1]);
+  const std::vector<float> reference = NodePixels(expected);
+  const auto *             pixels = static_cast<const float *>(shown->GetScalarPointer());
+  std::size_t              different = 0;
+  for (std::size_t k = 0; k < reference.size(); ++k)
+  {
+    different += pixels[k] == reference[k] ? 0 : 1;
+  }
+  EXPECT_EQ(different, 0u) << "of " << reference.size() << " pixels";
+}
+
+void
+ExpectShows(ViewerWindow & window, VolumeNode * expected)
+{
+  CPRView * view = window.GetCPRView();
+  ExpectSameImage(*view, expected);
+  if (::testing::Test::HasFatalFailure())
+  {
+    return;
+  }
+  int dimensions[3];
+  expected->GetImageData()->GetDimensions(dimensions);
+  const std::vector<float> reference = NodePixels(expected);
+
+  // On screen: pixel centres sampled on a grid, each image pixel spanning a few screen pixels (nearest interpolation).
+  const QImage frame = view->GetRenderWidget()->grabFramebuffer();
+  const double window_ = view->GetWindow();
+  const double level = view->GetLevel();
+  int          checked = 0;
+  int          worst = 0;
+  for (int j = 3; j < dimensions[1]; j += 17)
+  {
+    for (int i = 2; i < dimensions[0]; i += 11)
+    {
+      const QPointF position = view->WidgetPositionOfPixel(i, j, false);
+      const int     expectedGrey =
+        WindowLevelToByte(reference[static_cast<std::size_t>(j) * dimensions[0] + i], window_, level);
+      worst = std::max(worst, std::abs(FrameGrey(frame, position) - expectedGrey));
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_LE(worst, 1) << "largest difference between the frame and the logic's CPR through window/level";
+}
+
+QMessageBox *
+ErrorDialog(ViewerWindow & window)
+{
+  for (QMessageBox * box : window.findChildren<QMessageBox *>(QStringLiteral("errorDialog")))
+  {
+    if (box->isVisible())
+    {
+      return box;
+    }
+  }
+  return nullptr;
 }
 } // namespace vr::test

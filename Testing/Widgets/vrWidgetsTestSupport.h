@@ -10,6 +10,9 @@
 #include <QPointF>
 #include <QString>
 
+class QImage;
+class QMessageBox;
+
 #include <functional>
 #include <memory>
 
@@ -49,6 +52,31 @@ SendMouse(QWidget * widget, int type, const QPointF & position, Qt::MouseButton 
 /** The float pixels of a one-slice node, row-major. */
 std::vector<float>
 NodePixels(VolumeNode * node);
+
+/** Whole-run stage counts after minus before. */
+struct Runs
+{
+  unsigned int Conversion, Depth, Relax, Resample, UnfilteredSamplings, RelaxedSamplings, Surface;
+};
+Runs
+Difference(const StageCounts & after, const StageCounts & before);
+
+/** The grey value VTK shows for \a value through window/level, read back from the CPR view's frame. */
+int
+FrameGrey(const QImage & frame, const QPointF & position);
+
+/** Checks that the image data the CPR view's actor draws is \a expected, pixel for pixel. */
+void
+ExpectSameImage(CPRView & view, VolumeNode * expected);
+
+/** Checks that the CPR view shows exactly \a expected (the logic's CPR): the image data its actor draws equals it
+ * pixel for pixel, and the frame on screen shows those pixels through window/level. */
+void
+ExpectShows(ViewerWindow & window, VolumeNode * expected);
+
+/** The error dialog the window opened, or null. */
+QMessageBox *
+ErrorDialog(ViewerWindow & window);
 } // namespace vr::test
 
 #endif

@@ -39,6 +39,11 @@ protected:
 
   std::unique_ptr<ViewerWindow> m_Window;
 };
+
+/** The widgets' tests on that window (VesselReformationWidgets*GTest.cxx). */
+class WidgetsTest : public WindowOnSmallPhantomTest
+{
+};
 } // namespace vr::test
 
 #endif

@@ -1,0 +1,98 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrReformationInputCache_h
+#define vrReformationInputCache_h
+
+#include "itkCenterlineTree.h"
+#include "vrCenterlineNode.h"
+#include "vrImageTypes.h"
+#include "vrSegmentationIO.h"
+#include "vrVolumeNode.h"
+
+#include <vtkWeakPointer.h>
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace vr
+{
+/** \class ReformationInputCache
+ * \brief The inputs of a reformation as ITK sees them (docs/design.md 3.7): the volume node as an LPS image with its
+ * minimum, the centerline node as a tree, the segmentation node as a vessel mask; each converted again only when its
+ * node changed (another node, or the node's modified time).
+ *
+ * Each Get returns the converted value, shared: the same object as long as the node is unchanged, a new one after a
+ * conversion, so that a user tells a change by comparing it with the object it used last. Several users on the same
+ * nodes (the module logic and a view of one vessel path) share one cache, and so one conversion and one copy of the
+ * volume; the cache keeps one entry per role (volume, centerlines, segmentation). A conversion that throws
+ * (vr::InputError naming the node) leaves no entry, so the next Get tries again. Thread-safe: one conversion at a
+ * time.
+ * \ingroup VesselReformation
+ */
+class ReformationInputCache
+{
+public:
+  /** The volume node as an ITK image (LPS) and its smallest voxel value (the resampling's default value). */
+  struct Volume
+  {
+    VolumeImageType::Pointer Image;
+    float                    Minimum{ 0.0f };
+  };
+  /** The segmentation node as a vessel mask (vr::MakeSegmentationMask) and the names of its regions
+   * (RegionNameAttributePrefix attributes), by value; Values holds the node's voxels when it names a region (to name
+   * the extracted branches), else null. */
+  struct Segmentation
+  {
+    SegmentationMaskType::Pointer Mask;
+    VolumeImageType::Pointer      Values;
+    std::map<int, std::string>    RegionNames;
+  };
+
+  ReformationInputCache();
+  ~ReformationInputCache();
+  ReformationInputCache(const ReformationInputCache &) = delete;
+  ReformationInputCache &
+  operator=(const ReformationInputCache &) = delete;
+
+  /** \param node the volume node (not null).
+   * \return its conversion, converted now when \a node differs from the previous call's or was modified since. */
+  std::shared_ptr<const Volume>
+  GetVolume(VolumeNode * node);
+
+  /** \param node the centerline node (RAS, not null).
+   * \return its tree in LPS, converted now when \a node differs from the previous call's or was modified since. */
+  std::shared_ptr<const itk::CenterlineTree>
+  GetCenterlines(CenterlineNode * node);
+
+  /** \param node the segmentation node (not null).
+   * \param labels the vessel labels (vr::CenterlineExtractionParameters::Labels; empty: every non-zero voxel).
+   * \return its vessel mask, made now when \a node or \a labels differ from the previous call's or the node was
+   * modified since. Throws vr::InputError when no voxel is vessel. */
+  std::shared_ptr<const Segmentation>
+  GetSegmentation(VolumeNode * node, const std::vector<double> & labels);
+
+  /** \return how the messages name \a node: segmentation "name", or segmentation when it has no name. */
+  static std::string
+  DescribeSegmentationNode(const VolumeNode * node);
+
+private:
+  std::mutex m_Mutex;
+
+  vtkWeakPointer<VolumeNode>    m_VolumeNode;
+  vtkMTimeType                  m_VolumeTime{ 0 };
+  std::shared_ptr<const Volume> m_Volume;
+
+  vtkWeakPointer<CenterlineNode>             m_CenterlineNode;
+  vtkMTimeType                               m_CenterlineTime{ 0 };
+  std::shared_ptr<const itk::CenterlineTree> m_Centerlines;
+
+  vtkWeakPointer<VolumeNode>          m_SegmentationNode;
+  vtkMTimeType                        m_SegmentationTime{ 0 };
+  std::vector<double>                 m_SegmentationLabels;
+  std::shared_ptr<const Segmentation> m_Segmentation;
+};
+} // namespace vr
+
+#endif
