@@ -21,8 +21,14 @@
 //   Window_Repaint     one synchronous repaint of the whole window (a spin box's or the progress bar's change costs
 //   it). ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
 //                      preview surface (every 4th pixel) drawn while dragging.
+//   VesselPathRoll     the single-vessel panel (docs/viewer.md) on the phantom's longest path (40 mm wide, 1.5 mm
+//                      pixels): a roll step of 1 degree, what each mouse event of a left-drag on the straightened CPR
+//                      asks, from the change to the new straightened CPR painted on screen (the logic's resampling
+//                      on the GUI thread, the CPR and the cross-section stack, then a synchronous repaint of the
+//                      view). Counter logic_ms: VesselPathLogic::Update() of those steps.
 // Repetitions are single changes (or single drags); median and p95 are computed over them.
 #include "vrReformationInputs.h"
+#include "vrStraightenedCPRView.h"
 #include "vrVesselReformationLogic.h"
 #include "vrViewerWindow.h"
 
@@ -442,6 +448,35 @@ Window_Repaint(benchmark::State & state)
   }
 }
 
+void
+VesselPathRoll(benchmark::State & state)
+{
+  Viewer &              viewer = Viewer::Instance();
+  vr::VesselPathPanel * panel = viewer.Window().GetPathPanel();
+  viewer.Settle();
+  if (!viewer.Window().OpenVesselPath(0))
+  {
+    state.SkipWithError("the longest path did not open");
+    return;
+  }
+  RunUntil([] { return true; });
+  std::vector<double> logic;
+  double              roll = 0.0;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    roll += 1.0;
+    const auto start = Clock::now();
+    panel->SetRoll(roll);
+    state.SetIterationTime(Seconds(start, Clock::now()));
+    logic.push_back(1000.0 * panel->GetLastUpdateSeconds());
+  }
+  const auto size = panel->GetLogic().GetResults().CPR->GetLargestPossibleRegion().GetSize();
+  state.counters["logic_ms"] = Percentile(logic, 0.5);
+  state.counters["cpr_rows"] = static_cast<double>(size[1]);
+  state.counters["cpr_columns"] = static_cast<double>(size[0]);
+  state.counters["sections"] = static_cast<double>(panel->GetLogic().GetResults().Sections.size());
+}
+
 constexpr int Repetitions = 30;
 
 BENCHMARK(AngleChange)
@@ -479,6 +514,13 @@ BENCHMARK(ThreeDView_Render)
   ->Arg(0)
   ->Iterations(1)
   ->Repetitions(10)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(VesselPathRoll)
+  ->Iterations(1)
+  ->Repetitions(Repetitions)
   ->UseManualTime()
   ->Unit(benchmark::kMillisecond)
   ->ComputeStatistics("p95", P95)
