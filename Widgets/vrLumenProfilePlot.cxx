@@ -81,7 +81,7 @@ LumenProfilePlot::SetProfile(const itk::VesselLumenProfile & profile, const itk:
 {
   Clear();
   const bool fromSegmentation = profile.Source == itk::VesselLumenSource::Segmentation;
-  m_DiameterLabel = fromSegmentation ? tr("equivalent diameter 2\u221a(A/\u03c0)") : tr("diameter 2r (centerline)");
+  m_DiameterLabel = fromSegmentation ? tr("diameter 2\u221a(A/\u03c0)") : tr("diameter 2r (centerline)");
   double top = 0.0;
   for (const auto & section : profile.Sections)
   {
@@ -198,18 +198,26 @@ LumenProfilePlot::paintEvent(QPaintEvent *)
     painter.setBrush(QColor(210, 30, 30));
     painter.drawEllipse(at, 4.0, 4.0);
     painter.setClipping(false);
-    painter.drawText(at + QPointF(6.0, 14.0), tr("MLD %1 mm").arg(m_Minimum->y(), 0, 'f', 2));
+    // The label beside the dot, on the side with room for it.
+    const QString label = tr("MLD %1 mm").arg(m_Minimum->y(), 0, 'f', 2);
+    const double  labelWidth = metrics.horizontalAdvance(label);
+    const double  x = at.x() + 6.0 + labelWidth < width() - 2.0 ? at.x() + 6.0 : at.x() - 6.0 - labelWidth;
+    painter.drawText(QPointF(x, at.y() + 16.0), label);
   }
   painter.setClipping(false);
-  // The legend.
-  painter.setPen(QColor(20, 20, 20));
-  painter.drawText(QPointF(area.left() + 110.0, 14.0), m_DiameterLabel);
-  painter.setPen(QColor(30, 110, 200));
-  painter.drawText(QPointF(area.left() + 320.0, 14.0), tr("reference"));
+  // The legend, in a row above the plot.
+  double x = area.left() + 100.0;
+  auto   legend = [&](const QString & text, const QColor & color)
+  {
+    painter.setPen(color);
+    painter.drawText(QPointF(x, 14.0), text);
+    x += metrics.horizontalAdvance(text) + 16.0;
+  };
+  legend(m_DiameterLabel, QColor(20, 20, 20));
+  legend(tr("reference"), QColor(30, 110, 200));
   if (!m_Inscribed.empty())
   {
-    painter.setPen(QColor(130, 130, 130));
-    painter.drawText(QPointF(area.left() + 400.0, 14.0), tr("2r (centerline)"));
+    legend(tr("2r (centerline)"), QColor(130, 130, 130));
   }
 }
 

@@ -113,14 +113,21 @@ ThreeDView::ThreeDView(QWidget * parent)
   m_PathMarker->SetMapper(sphereMapper);
   m_PathMarker->GetProperty()->SetColor(1.0, 0.2, 1.0);
   m_PathMarker->SetVisibility(false);
-  m_Renderer->AddActor(m_PathMarker);
+  // The path and its marker lie inside the centerline tubes: a layer of their own draws them over the scene.
+  vtkNew<vtkRenderer> overlay;
+  overlay->SetLayer(1);
+  overlay->InteractiveOff();
+  overlay->SetActiveCamera(m_Renderer->GetActiveCamera());
+  m_RenderWindow->SetNumberOfLayers(2);
+  m_RenderWindow->AddRenderer(overlay);
+  overlay->AddActor(m_PathMarker);
   m_Path = vtkSmartPointer<vtkActor>::New();
   vtkNew<vtkPolyDataMapper> pathMapper;
   m_Path->SetMapper(pathMapper);
   m_Path->GetProperty()->SetColor(1.0, 0.9, 0.2);
   m_Path->GetProperty()->SetLineWidth(3.0);
   m_Path->SetVisibility(false);
-  m_Renderer->AddActor(m_Path);
+  overlay->AddActor(m_Path);
   m_Plane = vtkSmartPointer<vtkActor>::New();
   m_Plane->GetProperty()->SetColor(0.35, 0.75, 1.0);
   m_Plane->GetProperty()->SetLineWidth(1.5);

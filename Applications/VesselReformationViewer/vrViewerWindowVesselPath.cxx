@@ -12,6 +12,7 @@
 #include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
+#include <QSplitter>
 #include <QStatusBar>
 
 namespace vr
@@ -76,7 +77,17 @@ ViewerWindow::ConnectVesselPath()
               points.push_back(section.Center);
             }
             m_ThreeDView->SetPath(points);
-            m_PathPanel->setVisible(true);
+            if (!m_PathPanel->isVisible())
+            {
+              // Room for the panel, taken from the CPR and 3D views (the module panel keeps its width).
+              QList<int> sizes = m_Splitter->sizes();
+              const int  room = sizes[1] + sizes[2];
+              sizes[1] = room * 36 / 100;
+              sizes[2] = room * 22 / 100;
+              sizes[3] = room - sizes[1] - sizes[2];
+              m_PathPanel->setVisible(true);
+              m_Splitter->setSizes(sizes);
+            }
           });
   connect(m_PathPanel,
           &VesselPathPanel::errorOccurred,
