@@ -113,11 +113,31 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
           [this](int index) { OpenBranch(m_Branches->itemData(index).toInt()); });
   connect(m_Stretched, &QCheckBox::toggled, this, [this](bool on) { SetStretched(on); });
   connect(m_Roll, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double v) { SetRoll(v); });
-  connect(m_CPR, &StraightenedCPRView::rollStarted, this, [this] { m_DragStartRoll = GetRoll(); });
+  // While a drag rolls the image, the logic resamples the CPR alone: the cross-section stack (one plane per row,
+  // tens of times the CPR's samples) follows at the release.
+  connect(m_CPR,
+          &StraightenedCPRView::rollStarted,
+          this,
+          [this]
+          {
+            m_DragStartRoll = GetRoll();
+            m_Logic->SetCrossSectionsEnabled(false);
+          });
   connect(m_CPR,
           &StraightenedCPRView::rollDragged,
           this,
-          [this](double degrees, bool) { SetRoll(m_DragStartRoll + degrees); });
+          [this](double degrees, bool finished)
+          {
+            if (finished)
+            {
+              m_Logic->SetCrossSectionsEnabled(true);
+            }
+            SetRoll(m_DragStartRoll + degrees);
+            if (finished && m_HasPath && !m_Logic->GetResults().CrossSections)
+            {
+              Run();
+            }
+          });
   connect(m_CPR,
           &StraightenedCPRView::rowPicked,
           this,
@@ -441,7 +461,11 @@ VesselPathPanel::ShowPosition()
   {
     diameter = results.Lumen.Sections[static_cast<std::size_t>(m_Section)].Diameter;
   }
-  m_CrossSection->SetSlice(results.CrossSections.GetPointer(), static_cast<unsigned int>(m_Section), m_Window, m_Level);
+  if (results.CrossSections)
+  {
+    m_CrossSection->SetSlice(
+      results.CrossSections.GetPointer(), static_cast<unsigned int>(m_Section), m_Window, m_Level);
+  }
   m_CrossSection->SetDiameter(diameter);
   m_CrossSection->SetCaption(tr("cross-section at s = %1 mm").arg(s, 0, 'f', 1));
   ShowMeasurements();

@@ -22,10 +22,10 @@
 //   it). ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
 //                      preview surface (every 4th pixel) drawn while dragging.
 //   VesselPathRoll     the single-vessel panel (docs/viewer.md) on the phantom's longest path (40 mm wide, 1.5 mm
-//                      pixels): a roll step of 1 degree, what each mouse event of a left-drag on the straightened CPR
-//                      asks, from the change to the new straightened CPR painted on screen (the logic's resampling
-//                      on the GUI thread, the CPR and the cross-section stack, then a synchronous repaint of the
-//                      view). Counter logic_ms: VesselPathLogic::Update() of those steps.
+//                      pixels): one mouse event of a left-drag on the straightened CPR, 2 pixels (1 degree), from the
+//                      event to the new straightened CPR painted on screen (the logic's resampling of the CPR on the
+//                      GUI thread, then a synchronous repaint of the view). Counter logic_ms: VesselPathLogic::Update()
+//                      of those steps.
 // Repetitions are single changes (or single drags); median and p95 are computed over them.
 #include "vrReformationInputs.h"
 #include "vrStraightenedCPRView.h"
@@ -454,21 +454,35 @@ VesselPathRoll(benchmark::State & state)
   Viewer &              viewer = Viewer::Instance();
   vr::VesselPathPanel * panel = viewer.Window().GetPathPanel();
   viewer.Settle();
-  if (!viewer.Window().OpenVesselPath(0))
+  if (!panel->HasPath() && !viewer.Window().OpenVesselPath(0))
   {
     state.SkipWithError("the longest path did not open");
     return;
   }
   RunUntil([] { return true; });
+  // Each repetition is one mouse step of a left-drag on the straightened CPR, 2 pixels (1 degree) on from the last
+  // one's roll; the press before it and the release after it (which adds the cross-section stack) are not timed.
+  vr::StraightenedCPRView * view = panel->GetStraightenedView();
+  const QPointF             start(0.5 * view->width(), 0.5 * view->height());
+  auto                      send = [view](QEvent::Type type, const QPointF & at, Qt::MouseButton button)
+  {
+    QMouseEvent event(type,
+                      at,
+                      view->mapToGlobal(at.toPoint()),
+                      button,
+                      type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton,
+                      Qt::NoModifier);
+    QApplication::sendEvent(view, &event);
+  };
   std::vector<double> logic;
-  double              roll = 0.0;
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
-    roll += 1.0;
-    const auto start = Clock::now();
-    panel->SetRoll(roll);
-    state.SetIterationTime(Seconds(start, Clock::now()));
+    send(QEvent::MouseButtonPress, start, Qt::LeftButton);
+    const auto begin = Clock::now();
+    send(QEvent::MouseMove, start + QPointF(2.0, 0.0), Qt::NoButton);
+    state.SetIterationTime(Seconds(begin, Clock::now()));
     logic.push_back(1000.0 * panel->GetLastUpdateSeconds());
+    send(QEvent::MouseButtonRelease, start + QPointF(2.0, 0.0), Qt::LeftButton);
   }
   const auto size = panel->GetLogic().GetResults().CPR->GetLargestPossibleRegion().GetSize();
   state.counters["logic_ms"] = Percentile(logic, 0.5);

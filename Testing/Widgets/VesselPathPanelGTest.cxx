@@ -46,11 +46,12 @@ struct ReferencePath
   VolumeImageType::Pointer Volume;
   VesselPathLogic          Logic;
 
-  ReferencePath(const ReformationInputs & inputs, const VesselPathParameters & parameters)
+  ReferencePath(const ReformationInputs & inputs, const VesselPathParameters & parameters, bool crossSections = false)
   {
     Volume = ConvertVolumeNodeToItkImage(inputs.Volume);
     Logic.SetVolume(Volume);
     Logic.SetCenterlineTree(inputs.Tree);
+    Logic.SetCrossSectionsEnabled(crossSections);
     Logic.SetParameters(parameters);
     Logic.Update();
   }
@@ -376,13 +377,21 @@ TEST_F(VesselPathPanelTest, ALeftDragOnTheStraightenedCPRRollsIt)
   EXPECT_NEAR(Panel().GetLogic().GetParameters().RollInDegrees, expected, 1e-9);
 
   // The picture is the logic's CPR at that roll, computed apart, and not the one at roll 0.
-  const ReferencePath reference(*Window().GetCPRView()->GetResult()->Inputs, Panel().GetParameters());
+  const ReferencePath reference(*Window().GetCPRView()->GetResult()->Inputs, Panel().GetParameters(), true);
   ASSERT_EQ(reference.Logic.GetParameters().RollInDegrees, expected);
   const QImage rolled = view->GetDisplayedImage();
   EXPECT_NE(rolled, before);
   const double window = Window().GetPanel()->GetWindowSpinBox()->value();
   const double level = Window().GetPanel()->GetLevelSpinBox()->value();
   EXPECT_EQ(rolled, GreyImage(reference.Logic.GetResults().CPR.GetPointer(), window, level));
+  // The drag resamples the CPR alone; at the release the cross-section follows the roll too (v drawn upwards).
+  const QImage section = Panel().GetCrossSectionView()->GetDisplayedImage();
+  EXPECT_EQ(section,
+            GreySlice(reference.Logic.GetResults().CrossSections.GetPointer(),
+                      static_cast<unsigned int>(Panel().GetSectionIndex()),
+                      window,
+                      level)
+              .mirrored(false, true));
 }
 
 /** The panel on VMTK's aorta, its lumen measured on VMTK's level set: the picture for the docs. Written into the
