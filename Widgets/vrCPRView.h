@@ -198,7 +198,8 @@ public:
   {
     return m_PathMarkerWorld;
   }
-  /** \return the world position of the centre of full-view pixel (\a column, \a row) of the filtered image. */
+  /** \return the world position of the centre of pixel (\a column, \a row) of the filtered image shown (a preview's
+   * pixels for a preview). */
   std::array<double, 2>
   WorldPositionOfPixel(double column, double row) const
   {

@@ -207,15 +207,17 @@ VesselPathPanel::SetViewParameters(const ReformationParameters & parameters)
 QString
 VesselPathPanel::SetLumenSegmentation(vtkSmartPointer<VolumeNode> segmentation, const QString & name)
 {
+  const LabelMapVolumeType::Pointer previousMask = m_Mask;
+  const std::string                 previousName = m_MaskName;
   try
   {
-    m_Mask = nullptr;
-    m_MaskName.clear();
+    LabelMapVolumeType::Pointer mask;
     if (segmentation)
     {
-      m_MaskName = name.toStdString();
-      m_Mask = MakeSegmentationMask(ConvertVolumeNodeToItkImage(segmentation).GetPointer(), {}, m_MaskName);
+      mask = MakeSegmentationMask(ConvertVolumeNodeToItkImage(segmentation).GetPointer(), {}, name.toStdString());
     }
+    m_Mask = mask;
+    m_MaskName = segmentation ? name.toStdString() : std::string();
   }
   catch (const std::exception & error)
   {
@@ -223,9 +225,16 @@ VesselPathPanel::SetLumenSegmentation(vtkSmartPointer<VolumeNode> segmentation, 
     return m_LastError;
   }
   m_LogicReady = false;
-  if (m_HasPath && !Run())
+  if (m_HasPath && !Run(false))
   {
-    return m_LastError;
+    // Refused (e.g. no section's centre inside it): the path goes back to what it was measured on.
+    const QString error = m_LastError;
+    m_Mask = previousMask;
+    m_MaskName = previousName;
+    m_LogicReady = false;
+    Run();
+    m_LastError = error;
+    return error;
   }
   return QString();
 }
@@ -302,13 +311,16 @@ VesselPathPanel::OpenBranch(int branchId)
 }
 
 bool
-VesselPathPanel::Run()
+VesselPathPanel::Run(bool report)
 {
   try
   {
     if (!PrepareLogic())
     {
-      emit errorOccurred(m_LastError);
+      if (report)
+      {
+        emit errorOccurred(m_LastError);
+      }
       return false;
     }
     const auto start = std::chrono::steady_clock::now();
@@ -319,7 +331,10 @@ VesselPathPanel::Run()
   catch (const std::exception & error)
   {
     m_LastError = QString::fromUtf8(error.what());
-    emit errorOccurred(m_LastError);
+    if (report)
+    {
+      emit errorOccurred(m_LastError);
+    }
     return false;
   }
   m_HasPath = true;

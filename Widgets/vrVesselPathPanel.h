@@ -156,8 +156,9 @@ signals:
   errorOccurred(const QString & message);
 
 private:
+  /** Updates the logic and shows its results. \return false on an error (m_LastError), which \a report also emits. */
   bool
-  Run();
+  Run(bool report = true);
   void
   ShowResults();
   void

@@ -15,6 +15,7 @@
 #include "vrTestFiles.h"
 #include "vrVesselPathLogic.h"
 #include "vrVesselPathPanel.h"
+#include "vrVolumeIO.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -392,6 +393,65 @@ TEST_F(VesselPathPanelTest, ALeftDragOnTheStraightenedCPRRollsIt)
                       window,
                       level)
               .mirrored(false, true));
+}
+
+TEST_F(VesselPathPanelTest, BadInputShowsAMessageNamingItAndKeepsThePathShown)
+{
+  QStringList errors;
+  Window().SetErrorHandler([&](const QString & title, const QString & message) { errors << title + ": " + message; });
+  const int branch = OpenALeafPath();
+  ASSERT_TRUE(Panel().HasPath());
+  const double length = Panel().GetLogic().GetResults().Path.GetLength();
+
+  // An unknown branch: the logic's message names it; the path shown stays.
+  EXPECT_FALSE(Window().OpenVesselPath(9999));
+  ASSERT_EQ(errors.size(), 1);
+  std::cout << errors.back().toStdString() << "\n";
+  EXPECT_TRUE(errors.back().contains(QStringLiteral("9999")));
+  EXPECT_EQ(Panel().GetParameters().BranchId, branch);
+  EXPECT_EQ(Panel().GetLogic().GetResults().Path.GetBranchChain().back(), branch);
+  EXPECT_EQ(Panel().GetLogic().GetResults().Path.GetLength(), length);
+
+  // A segmentation file that is not there.
+  const fs::path folder = FreshFolderForThisTest(fs::temp_directory_path(), "vr-");
+  const QString  missing = QString::fromStdString((folder / "missing.nii.gz").string());
+  EXPECT_FALSE(Window().OpenLumenSegmentation({ missing }));
+  ASSERT_EQ(errors.size(), 2);
+  std::cout << errors.back().toStdString() << "\n";
+  EXPECT_TRUE(errors.back().contains(missing));
+
+  // A segmentation that misses the path (vessel voxels in one corner of the volume alone): the logic refuses it,
+  // the lumen stays the radii's.
+  VolumeImageType::Pointer corner = ConvertVolumeNodeToItkImage(Window().GetCPRView()->GetResult()->Inputs->Volume);
+  corner->FillBuffer(0.0f);
+  for (itk::IndexValueType k = 0; k < 3; ++k)
+  {
+    for (itk::IndexValueType j = 0; j < 3; ++j)
+    {
+      for (itk::IndexValueType i = 0; i < 3; ++i)
+      {
+        corner->SetPixel({ { i, j, k } }, 1.0f);
+      }
+    }
+  }
+  const std::string cornerPath = (folder / "corner.nii.gz").string();
+  WriteVolume(corner, cornerPath);
+  EXPECT_FALSE(Window().OpenLumenSegmentation({ QString::fromStdString(cornerPath) }));
+  ASSERT_EQ(errors.size(), 3);
+  std::cout << errors.back().toStdString() << "\n";
+  EXPECT_TRUE(errors.back().contains(QStringLiteral("corner.nii.gz")));
+  ASSERT_TRUE(Panel().HasPath());
+  EXPECT_EQ(Panel().GetLogic().GetResults().Lumen.Source, itk::VesselLumenSource::CenterlineRadius);
+  EXPECT_TRUE(Panel().GetLogic().GetResults().HasLumen);
+
+  // A table of an unknown kind: nothing written.
+  const fs::path table = folder / "lumen.xlsx";
+  EXPECT_FALSE(Window().ExportLumenTable(QString::fromStdString(table.string())));
+  ASSERT_EQ(errors.size(), 4);
+  std::cout << errors.back().toStdString() << "\n";
+  EXPECT_TRUE(errors.back().contains(QStringLiteral("lumen.xlsx")));
+  EXPECT_FALSE(fs::exists(table));
+  fs::remove_all(folder);
 }
 
 /** The panel on VMTK's aorta, its lumen measured on VMTK's level set: the picture for the docs. Written into the
