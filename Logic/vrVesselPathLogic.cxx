@@ -336,6 +336,8 @@ VesselPathLogic::Internals::RunResampling()
 void
 VesselPathLogic::Internals::RunMeasurement()
 {
+  // Invalid until it succeeds: a refused segmentation must not leave the cleared lumen standing as measured.
+  MeasurementValid = false;
   Results.HasLumen = false;
   Results.Lumen = itk::VesselLumenProfile();
   Results.Stenosis = itk::VesselStenosisSummary();

@@ -190,6 +190,14 @@ CPRView::CPRView(QWidget * parent)
     pane->Lines->GetProperty()->SetOpacity(0.9);
   }
 
+  m_PathMarkerActor = vtkSmartPointer<vtkActor>::New();
+  vtkNew<vtkPolyDataMapper> markerMapper;
+  m_PathMarkerActor->SetMapper(markerMapper);
+  m_PathMarkerActor->GetProperty()->SetColor(1.0, 0.2, 1.0);
+  m_PathMarkerActor->GetProperty()->SetLineWidth(2.5);
+  m_PathMarkerActor->SetVisibility(false);
+  m_Renderer->AddViewProp(m_PathMarkerActor);
+
   m_SplitLine = vtkSmartPointer<vtkActor>::New();
   m_SplitLine->GetProperty()->SetColor(1.0, 1.0, 1.0);
   m_SplitLine->GetProperty()->SetLineWidth(1.0);
@@ -290,6 +298,7 @@ CPRView::SetResult(std::shared_ptr<const ReformationResult> result)
   {
     UpdateCenterlines();
   }
+  UpdatePathMarker();
   UpdateOverlays();
   UpdatePanes();
   if (refit)
@@ -510,6 +519,47 @@ CPRView::UpdateCenterlines()
 }
 
 void
+CPRView::SetPathMarker(const std::optional<itk::Point<double, 3>> & lps)
+{
+  m_PathMarker = lps;
+  UpdatePathMarker();
+  Render();
+}
+
+void
+CPRView::UpdatePathMarker()
+{
+  m_PathMarkerWorld.reset();
+  if (!m_PathMarker || !m_Result)
+  {
+    m_PathMarkerActor->SetVisibility(false);
+    return;
+  }
+  // Projected along the view direction as the centerline overlay is: the pixel whose sampling line passes nearest.
+  const auto coordinates = m_Result->Outputs.View.ToView(*m_PathMarker);
+  const auto world = WorldPositionOfPixel(coordinates.Column, coordinates.Row);
+  m_PathMarkerWorld = world;
+  const double         arm = 6.0 * std::max(m_FrameSpacing[0], m_FrameSpacing[1]);
+  const double         gap = 0.35 * arm;
+  vtkNew<vtkPoints>    points;
+  vtkNew<vtkCellArray> lines;
+  const double         directions[4][2] = { { 1.0, 0.0 }, { -1.0, 0.0 }, { 0.0, 1.0 }, { 0.0, -1.0 } };
+  for (const auto & direction : directions)
+  {
+    const vtkIdType ids[2] = {
+      points->InsertNextPoint(world[0] + gap * direction[0], world[1] + gap * direction[1], 1.5 * LineLayerZ),
+      points->InsertNextPoint(world[0] + arm * direction[0], world[1] + arm * direction[1], 1.5 * LineLayerZ)
+    };
+    lines->InsertNextCell(2, ids);
+  }
+  vtkNew<vtkPolyData> marker;
+  marker->SetPoints(points);
+  marker->SetLines(lines);
+  vtkPolyDataMapper::SafeDownCast(m_PathMarkerActor->GetMapper())->SetInputData(marker);
+  m_PathMarkerActor->SetVisibility(true);
+}
+
+void
 CPRView::UpdateAnnotation()
 {
   if (!m_Result)
@@ -692,6 +742,12 @@ CPRView::eventFilter(QObject * watched, QEvent * event)
       auto * mouse = static_cast<QMouseEvent *>(event);
       if (m_DragButton != Qt::NoButton)
       {
+        return true;
+      }
+      if (mouse->button() == Qt::LeftButton && (mouse->modifiers() & Qt::ControlModifier))
+      {
+        // Ctrl+click picks a vessel; the plain left-drag keeps turning the view.
+        emit vesselPicked(ReadoutAt(mouse->localPos() + QPointF(0.5, 0.5)));
         return true;
       }
       m_DragButton = mouse->button();

@@ -13,6 +13,9 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+
+#include "itkPoint.h"
 
 class QVTKOpenGLNativeWidget;
 class vtkActor;
@@ -72,6 +75,8 @@ struct CPROverlays
  * - right-drag sets window (horizontal: wider to the right, by the window's own size per 256 pixels) and level
  *   (vertical: higher upwards, by the window per 512 pixels);
  * - wheel zooms about the mouse (1.2 per notch), middle-drag pans, double-click fits the image;
+ * - Ctrl+left-click picks the vessel under the mouse (vesselPicked(), the owner label's branch): the viewer opens
+ *   its path (docs/viewer.md); a plain left-drag still turns the view;
  * - hovering reports the pixel's column and row, its RAS position, intensity, depth and branch (readoutChanged()).
  *
  * Pixel (i, j) (row 0 at the top) of a full-resolution image is drawn at world (i sx, j sy), the camera looking along
@@ -183,11 +188,32 @@ public:
     return m_LastRenderSeconds;
   }
 
+  /** Shows a marker (a cross) at the patient point \a lps (LPS mm), projected into the view as the centerlines are;
+   * nullopt hides it. The single-vessel reading's cross-section position (docs/viewer.md). */
+  void
+  SetPathMarker(const std::optional<itk::Point<double, 3>> & lps);
+  /** \return the world position (view mm, the image plane) where the marker is drawn, or nullopt when hidden. */
+  std::optional<std::array<double, 2>>
+  GetPathMarkerWorldPosition() const
+  {
+    return m_PathMarkerWorld;
+  }
+  /** \return the world position of the centre of pixel (\a column, \a row) of the filtered image shown (a preview's
+   * pixels for a preview). */
+  std::array<double, 2>
+  WorldPositionOfPixel(double column, double row) const
+  {
+    return { m_Origin[0] + column * m_Spacing[0], m_Origin[1] + row * m_Spacing[1] };
+  }
+
   /** Renders now. */
   void
   Render();
 
 signals:
+  /** Ctrl+left-click on the image: \a readout is the pixel clicked (its Branch the owner label there). */
+  void
+  vesselPicked(const vr::PixelReadout & readout);
   /** A left-drag started. */
   void
   rotationStarted();
@@ -219,6 +245,8 @@ private:
   UpdateAnnotation();
   void
   UpdateCenterlines();
+  void
+  UpdatePathMarker();
   /** World point (z = 0) under a widget point. */
   std::array<double, 2>
   WidgetToWorld(const QPointF & position) const;
@@ -238,6 +266,9 @@ private:
   vtkSmartPointer<vtkTextActor>                 m_PreviewText;
   vtkSmartPointer<vtkActor>                     m_SplitLine;
   vtkSmartPointer<vtkPolyData>                  m_CenterlinePolyData;
+  vtkSmartPointer<vtkActor>                     m_PathMarkerActor;
+  std::optional<itk::Point<double, 3>>          m_PathMarker;
+  std::optional<std::array<double, 2>>          m_PathMarkerWorld;
 
   std::shared_ptr<const ReformationResult> m_Result;
   std::uint64_t                            m_PendingDisplay{ 0 };

@@ -21,6 +21,7 @@
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkLookupTable.h>
 #include <vtkMatrix4x4.h>
+#include <vtkNew.h>
 #include <vtkOutlineSource.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -29,6 +30,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
+#include <vtkSphereSource.h>
 #include <vtkTubeFilter.h>
 
 #include <algorithm>
@@ -101,6 +103,31 @@ ThreeDView::ThreeDView(QWidget * parent)
   m_Arrow->GetProperty()->SetColor(1.0, 0.55, 0.1);
   m_Arrow->SetVisibility(false);
   m_Renderer->AddActor(m_Arrow);
+  m_PathMarker = vtkSmartPointer<vtkActor>::New();
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(3.0);
+  sphere->SetThetaResolution(16);
+  sphere->SetPhiResolution(12);
+  vtkNew<vtkPolyDataMapper> sphereMapper;
+  sphereMapper->SetInputConnection(sphere->GetOutputPort());
+  m_PathMarker->SetMapper(sphereMapper);
+  m_PathMarker->GetProperty()->SetColor(1.0, 0.2, 1.0);
+  m_PathMarker->SetVisibility(false);
+  // The path and its marker lie inside the centerline tubes: a layer of their own draws them over the scene.
+  vtkNew<vtkRenderer> overlay;
+  overlay->SetLayer(1);
+  overlay->InteractiveOff();
+  overlay->SetActiveCamera(m_Renderer->GetActiveCamera());
+  m_RenderWindow->SetNumberOfLayers(2);
+  m_RenderWindow->AddRenderer(overlay);
+  overlay->AddActor(m_PathMarker);
+  m_Path = vtkSmartPointer<vtkActor>::New();
+  vtkNew<vtkPolyDataMapper> pathMapper;
+  m_Path->SetMapper(pathMapper);
+  m_Path->GetProperty()->SetColor(1.0, 0.9, 0.2);
+  m_Path->GetProperty()->SetLineWidth(3.0);
+  m_Path->SetVisibility(false);
+  overlay->AddActor(m_Path);
   m_Plane = vtkSmartPointer<vtkActor>::New();
   m_Plane->GetProperty()->SetColor(0.35, 0.75, 1.0);
   m_Plane->GetProperty()->SetLineWidth(1.5);
@@ -423,5 +450,50 @@ ThreeDView::Render()
   vtkPolyData * drawn = m_Surface->GetVisibility() ? vtkPolyData::SafeDownCast(m_SurfaceMapper->GetInput()) : nullptr;
   m_LastRenderedPoints = drawn != nullptr ? drawn->GetNumberOfPoints() : 0;
   emit rendered(m_LastRenderSeconds, IsShowingFullSurface());
+}
+void
+ThreeDView::SetPathMarker(const std::optional<itk::Point<double, 3>> & lps)
+{
+  if (lps)
+  {
+    const auto ras = ToRAS(*lps);
+    m_PathMarker->SetPosition(ras[0], ras[1], ras[2]);
+  }
+  m_PathMarker->SetVisibility(lps.has_value());
+  ScheduleRender();
+}
+
+void
+ThreeDView::SetPath(const std::vector<itk::Point<double, 3>> & lps)
+{
+  vtkNew<vtkPoints>      points;
+  std::vector<vtkIdType> ids;
+  for (const auto & point : lps)
+  {
+    const auto ras = ToRAS(point);
+    ids.push_back(points->InsertNextPoint(ras[0], ras[1], ras[2]));
+  }
+  vtkNew<vtkCellArray> lines;
+  if (ids.size() >= 2)
+  {
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  vtkNew<vtkPolyData> path;
+  path->SetPoints(points);
+  path->SetLines(lines);
+  vtkPolyDataMapper::SafeDownCast(m_Path->GetMapper())->SetInputData(path);
+  m_Path->SetVisibility(ids.size() >= 2);
+  ScheduleRender();
+}
+
+std::optional<std::array<double, 3>>
+ThreeDView::GetPathMarkerPosition() const
+{
+  if (!m_PathMarker->GetVisibility())
+  {
+    return std::nullopt;
+  }
+  const double * position = m_PathMarker->GetPosition();
+  return std::array<double, 3>{ { position[0], position[1], position[2] } };
 }
 } // namespace vr

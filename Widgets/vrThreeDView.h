@@ -12,6 +12,10 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+#include <vector>
+
+#include "itkPoint.h"
 
 class QVTKOpenGLNativeWidget;
 class vtkActor;
@@ -73,6 +77,17 @@ public:
   void
                        ScheduleRender();
   static constexpr int InteractiveRenderIntervalMilliseconds = 250;
+  /** Shows a marker (a sphere) at the patient point \a lps (LPS mm; drawn in RAS as the whole scene), and
+   * \a pathRAS, the vessel path read, as a line; nullopt hides the marker, an empty path the line. The
+   * single-vessel reading's cross-section position (docs/viewer.md). Schedules a render. */
+  void
+  SetPathMarker(const std::optional<itk::Point<double, 3>> & lps);
+  void
+  SetPath(const std::vector<itk::Point<double, 3>> & lps);
+  /** \return the marker's centre as drawn (RAS mm), or nullopt when hidden. */
+  std::optional<std::array<double, 3>>
+  GetPathMarkerPosition() const;
+
   /** Renders now. */
   void
   Render();
@@ -124,6 +139,8 @@ private:
   vtkSmartPointer<vtkActor>                     m_Outline;
   vtkSmartPointer<vtkActor>                     m_Arrow;
   vtkSmartPointer<vtkActor>                     m_Plane;
+  vtkSmartPointer<vtkActor>                     m_PathMarker;
+  vtkSmartPointer<vtkActor>                     m_Path;
 
   std::shared_ptr<const ReformationInputs> m_Inputs;
   std::shared_ptr<const ReformationResult> m_Result;

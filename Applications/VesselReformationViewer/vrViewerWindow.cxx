@@ -60,6 +60,8 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   m_Panel = new ModulePanel;
   m_CPRView = new CPRView;
   m_ThreeDView = new ThreeDView;
+  m_PathPanel = new VesselPathPanel;
+  m_PathPanel->setVisible(false);
 
   auto * scroll = new QScrollArea;
   scroll->setWidget(m_Panel);
@@ -72,9 +74,11 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   splitter->addWidget(scroll);
   splitter->addWidget(m_CPRView);
   splitter->addWidget(m_ThreeDView);
+  splitter->addWidget(m_PathPanel);
   splitter->setStretchFactor(0, 0);
   splitter->setStretchFactor(1, 3);
   splitter->setStretchFactor(2, 2);
+  splitter->setStretchFactor(3, 3);
 
   // Warnings in full above the views, until dismissed or new data is opened.
   m_WarningBanner = new QFrame;
@@ -232,6 +236,8 @@ ViewerWindow::BuildMenus()
       ->setObjectName(QStringLiteral("preset%1").arg(k + 1));
   }
 
+  BuildVesselPathMenu();
+
   QMenu * help = menuBar()->addMenu(tr("&Help"));
   help
     ->addAction(
@@ -243,6 +249,7 @@ ViewerWindow::BuildMenus()
 void
 ViewerWindow::ConnectParts()
 {
+  ConnectVesselPath();
   connect(m_Panel, &ModulePanel::parametersChanged, this, [this](RequestKind kind) { RequestReformation(kind); });
   connect(m_Panel, &ModulePanel::displayChanged, this, [this] { ApplyDisplay(); });
   connect(m_Panel,
@@ -342,6 +349,8 @@ ViewerWindow::ConnectParts()
                                          inputs->Segmentation ? QString::fromStdString(inputs->Segmentation->GetName())
                                                               : QString());
             m_ThreeDView->SetInputs(inputs);
+            CloseVesselPath();
+            m_PathPanel->SetInputs(inputs);
             m_Panel->SetIntensityUnit(QString::fromStdString(inputs->IntensityUnit));
             m_Panel->SetPercentileWindow(inputs->PercentileWindow, inputs->PercentileLevel);
             if (inputs->IsPhantom)
@@ -477,6 +486,7 @@ ViewerWindow::ApplyDisplay()
   m_CPRView->SetComparison(m_Panel->GetComparison());
   m_CPRView->SetWindowLevel(window, level);
   m_ThreeDView->SetWindowLevel(window, level);
+  m_PathPanel->SetWindowLevel(window, level);
   m_ThreeDView->ScheduleRender();
 }
 
@@ -503,6 +513,7 @@ ViewerWindow::ShowResult(const std::shared_ptr<const ReformationResult> & result
     }
     m_CPRView->SetResult(result);
     m_ThreeDView->SetResult(result);
+    m_PathPanel->SetViewParameters(result->Parameters);
     if (m_FullRangeOnNextResult)
     {
       m_FullRangeOnNextResult = false;
@@ -725,6 +736,14 @@ ViewerWindow::HelpText()
             "<li>Right-drag: window (horizontal) and level (vertical); the preset then reads Custom.</li>"
             "<li>Wheel: zoom. Middle-drag: pan. Double-click: fit the image.</li>"
             "<li>Hover: the status bar reads the pixel, its RAS position, intensity, depth and the vessel's name.</li>"
+            "<li>Ctrl+click a vessel: open its path in the vessel path panel (right).</li>"
+            "</ul><h4>The vessel path panel</h4><ul>"
+            "<li>Straightened CPR: left-drag rolls it about the path; right-click puts the cross-section there.</li>"
+            "<li>Wheel or Up / Down over the straightened CPR or the cross-section: move the cross-section by one "
+            "section (Page Up / Down: ten); a click on the lumen plot moves it there.</li>"
+            "<li>The cross-section's point is marked in the CPR view (cross) and the 3D view (sphere).</li>"
+            "<li>Vessel menu: the longest path, a segmentation to measure the lumen on, export of the lumen table "
+            "and of the path's images.</li>"
             "</ul><h4>Keys</h4><ul>"
             "<li>Left / Right: turn by 1°; with Shift by 10°.</li>"
             "<li>Home: angle 0, image fitted, 3D camera reset.</li>"

@@ -7,6 +7,7 @@
 #include "vrReformationController.h"
 #include "vrRotationSeries.h"
 #include "vrThreeDView.h"
+#include "vrVesselPathPanel.h"
 
 #include "vrViewerSettings.h"
 
@@ -136,6 +137,28 @@ public:
   static QString
   AboutText();
 
+  /** Opens the path from the tree's root to branch \a branchId (0: the longest) in the vessel path panel, shows the
+   * panel and the markers (docs/viewer.md). \return false, with an error shown, when the logic refuses it. */
+  bool
+  OpenVesselPath(int branchId);
+  /** Measures the open path's lumen on the segmentation file(s) \a paths. \return false, with an error shown. */
+  bool
+  OpenLumenSegmentation(const QStringList & paths);
+  /** Writes the vessel path's lumen table (CSV or TSV by the extension). \return false, with an error shown. */
+  bool
+  ExportLumenTable(const QString & path);
+  /** Writes the vessel path's pictures as PNG into \a folder: the panel, the straightened CPR, the cross-section and
+   * the profile plot (VesselPathImageNames). \return the number written (0, with an error shown, on failure). */
+  int
+  ExportVesselPathImages(const QString & folder);
+  static const QStringList &
+  VesselPathImageNames();
+  VesselPathPanel *
+  GetPathPanel() const
+  {
+    return m_PathPanel;
+  }
+
   ModulePanel *
   GetPanel() const
   {
@@ -180,6 +203,18 @@ protected:
 private:
   void
   BuildMenus();
+  void
+  BuildVesselPathMenu();
+  void
+  ConnectVesselPath();
+  void
+  ChooseAndOpenLumenSegmentation();
+  void
+  ChooseAndExportLumenTable();
+  void
+  ChooseAndExportVesselPathImages();
+  void
+  CloseVesselPath();
   /** File > Open recent, from the settings. */
   void
   FillRecentMenu();
@@ -238,6 +273,7 @@ private:
   ModulePanel *                              m_Panel{ nullptr };
   CPRView *                                  m_CPRView{ nullptr };
   ThreeDView *                               m_ThreeDView{ nullptr };
+  VesselPathPanel *                          m_PathPanel{ nullptr };
   QLabel *                                   m_Readout{ nullptr };
   QWidget *                                  m_WarningBanner{ nullptr };
   QSplitter *                                m_Splitter{ nullptr };
@@ -269,6 +305,9 @@ private:
   std::shared_ptr<const ReformationResult> m_Shown;
   std::shared_ptr<const ReformationResult> m_ShownSurface;
 };
+/** Writes \a widget as drawn into the PNG \a path (opaque RGB, atomic). \return an error message, or empty. */
+QString
+WriteWidgetPNG(QWidget * widget, const QString & path);
 } // namespace vr
 
 #endif

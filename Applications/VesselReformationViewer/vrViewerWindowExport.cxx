@@ -70,21 +70,22 @@ ViewerWindow::SaveOutputs(const QString & folder)
   }
 }
 
+/** Writes \a widget as drawn into the PNG \a path: opaque RGB, compressed as much as PNG allows (quality 0), so
+ * that screenshots stay small enough to share; atomic. \return an error, or empty. */
 QString
-ViewerWindow::WriteScreenshot(const QString & path)
+WriteWidgetPNG(QWidget * widget, const QString & path)
 {
   try
   {
-    // Opaque RGB, compressed as much as PNG allows (quality 0), so that screenshots stay small enough to share.
-    const QImage image = grab().toImage().convertToFormat(QImage::Format_RGB888);
+    const QImage image = widget->grab().toImage().convertToFormat(QImage::Format_RGB888);
     if (image.isNull())
     {
-      return tr("the window could not be rendered into an image");
+      return QObject::tr("the window could not be rendered into an image");
     }
     AtomicOutput output(path.toStdString());
     if (!image.save(QString::fromStdString(output.TemporaryPath()), "PNG", 0))
     {
-      return tr("%1: cannot write the PNG").arg(path);
+      return QObject::tr("%1: cannot write the PNG").arg(path);
     }
     output.Commit();
     return QString();
@@ -93,6 +94,12 @@ ViewerWindow::WriteScreenshot(const QString & path)
   {
     return QString::fromUtf8(error.what());
   }
+}
+
+QString
+ViewerWindow::WriteScreenshot(const QString & path)
+{
+  return WriteWidgetPNG(this, path);
 }
 
 void

@@ -21,8 +21,14 @@
 //   Window_Repaint     one synchronous repaint of the whole window (a spin box's or the progress bar's change costs
 //   it). ThreeDView_Render/full, /preview   one frame of the 3D view with the full 512 x 1024 cut surface, and with the
 //                      preview surface (every 4th pixel) drawn while dragging.
+//   VesselPathRoll     the single-vessel panel (docs/viewer.md) on the phantom's longest path (40 mm wide, 1.5 mm
+//                      pixels): one mouse event of a left-drag on the straightened CPR, 2 pixels (1 degree), from the
+//                      event to the new straightened CPR painted on screen (the logic's resampling of the CPR on the
+//                      GUI thread, then a synchronous repaint of the view). Counter logic_ms: VesselPathLogic::Update()
+//                      of those steps.
 // Repetitions are single changes (or single drags); median and p95 are computed over them.
 #include "vrReformationInputs.h"
+#include "vrStraightenedCPRView.h"
 #include "vrVesselReformationLogic.h"
 #include "vrViewerWindow.h"
 
@@ -442,6 +448,49 @@ Window_Repaint(benchmark::State & state)
   }
 }
 
+void
+VesselPathRoll(benchmark::State & state)
+{
+  Viewer &              viewer = Viewer::Instance();
+  vr::VesselPathPanel * panel = viewer.Window().GetPathPanel();
+  viewer.Settle();
+  if (!panel->HasPath() && !viewer.Window().OpenVesselPath(0))
+  {
+    state.SkipWithError("the longest path did not open");
+    return;
+  }
+  RunUntil([] { return true; });
+  // Each repetition is one mouse step of a left-drag on the straightened CPR, 2 pixels (1 degree) on from the last
+  // one's roll; the press before it and the release after it (which adds the cross-section stack) are not timed.
+  vr::StraightenedCPRView * view = panel->GetStraightenedView();
+  const QPointF             start(0.5 * view->width(), 0.5 * view->height());
+  auto                      send = [view](QEvent::Type type, const QPointF & at, Qt::MouseButton button)
+  {
+    QMouseEvent event(type,
+                      at,
+                      view->mapToGlobal(at.toPoint()),
+                      button,
+                      type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton,
+                      Qt::NoModifier);
+    QApplication::sendEvent(view, &event);
+  };
+  std::vector<double> logic;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    send(QEvent::MouseButtonPress, start, Qt::LeftButton);
+    const auto begin = Clock::now();
+    send(QEvent::MouseMove, start + QPointF(2.0, 0.0), Qt::NoButton);
+    state.SetIterationTime(Seconds(begin, Clock::now()));
+    logic.push_back(1000.0 * panel->GetLastUpdateSeconds());
+    send(QEvent::MouseButtonRelease, start + QPointF(2.0, 0.0), Qt::LeftButton);
+  }
+  const auto size = panel->GetLogic().GetResults().CPR->GetLargestPossibleRegion().GetSize();
+  state.counters["logic_ms"] = Percentile(logic, 0.5);
+  state.counters["cpr_rows"] = static_cast<double>(size[1]);
+  state.counters["cpr_columns"] = static_cast<double>(size[0]);
+  state.counters["sections"] = static_cast<double>(panel->GetLogic().GetResults().Sections.size());
+}
+
 constexpr int Repetitions = 30;
 
 BENCHMARK(AngleChange)
@@ -479,6 +528,13 @@ BENCHMARK(ThreeDView_Render)
   ->Arg(0)
   ->Iterations(1)
   ->Repetitions(10)
+  ->UseManualTime()
+  ->Unit(benchmark::kMillisecond)
+  ->ComputeStatistics("p95", P95)
+  ->ReportAggregatesOnly(true);
+BENCHMARK(VesselPathRoll)
+  ->Iterations(1)
+  ->Repetitions(Repetitions)
   ->UseManualTime()
   ->Unit(benchmark::kMillisecond)
   ->ComputeStatistics("p95", P95)

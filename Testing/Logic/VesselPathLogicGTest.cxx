@@ -130,6 +130,29 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   ExpectCounts(logic.GetStageCounts(), 3, 4, 6, 6);
 }
 
+TEST(VesselPathLogic, ARefusedSegmentationLeavesNoStaleLumen)
+{
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  logic.SetVolume(scene.Volume);
+  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetParameters(Defaults());
+  ASSERT_TRUE(logic.Update().HasLumen) << "the tree carries radii";
+  const double fromRadii = logic.GetResults().Stenosis.MinimalLumenDiameter;
+  // A segmentation without the path in it is refused...
+  auto empty = vr::test::LabelMap::New();
+  empty->CopyInformation(scene.Mask);
+  empty->SetRegions(scene.Mask->GetLargestPossibleRegion());
+  empty->Allocate(true);
+  logic.SetSegmentationMask(empty, "segmentation empty");
+  EXPECT_THROW(logic.Update(), vr::InputError);
+  // ...and going back to none measures from the radii again (the failed run had cleared the lumen).
+  logic.SetSegmentationMask(nullptr, "");
+  ASSERT_TRUE(logic.Update().HasLumen);
+  EXPECT_EQ(logic.GetResults().Lumen.Source, itk::VesselLumenSource::CenterlineRadius);
+  EXPECT_EQ(logic.GetResults().Stenosis.MinimalLumenDiameter, fromRadii);
+}
+
 TEST(VesselPathLogic, TheDefaultPathIsTheLongestAndPixelsMapBackToIt)
 {
   const Scene         scene = MakeScene();

@@ -1,0 +1,110 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+#ifndef vrStraightenedCPRView_h
+#define vrStraightenedCPRView_h
+
+#include "vrImageTypes.h"
+
+#include <QImage>
+#include <QPointF>
+#include <QRectF>
+#include <QWidget>
+
+namespace vr
+{
+/** \class StraightenedCPRView
+ * \brief One vessel's straightened (or stretched) CPR as the logic made it (x across the vessel, y along the path,
+ * row 0 at the top), through window and level, with the cross-section position as a line across it. It displays
+ * and computes nothing; QPainter draws it (a few hundred rows: cheaper than a GL context of its own under Mesa).
+ *
+ * - left-drag horizontally rolls the image about the path: rollDragged() reports DegreesPerPixel per pixel;
+ * - right-click or right-drag puts the cross-section at the row under the mouse (rowPicked());
+ * - the wheel and the Up/Down keys step the cross-section by one section (Page Up/Down by ten; stepped()).
+ * \sa VesselPathPanel
+ * \ingroup VesselReformation
+ */
+class StraightenedCPRView : public QWidget
+{
+  Q_OBJECT
+
+public:
+  /** Degrees the image rolls per pixel of horizontal left-drag. */
+  static constexpr double DegreesPerPixel = 0.5;
+
+  explicit StraightenedCPRView(QWidget * parent = nullptr);
+
+  /** Shows \a image (may be null: empty view) through \a window and \a level. */
+  void
+  SetImage(DepthImageType::ConstPointer image, double window, double level);
+  void
+  SetWindowLevel(double window, double level);
+  /** The cross-section's continuous row (the logic's RowOfArcLength), drawn as a line across the image. */
+  void
+  SetPositionRow(double row);
+  double
+  GetPositionRow() const
+  {
+    return m_PositionRow;
+  }
+  /** A caption in the upper left corner ("straightened, roll 30°"). */
+  void
+  SetCaption(const QString & caption);
+
+  /** \return where the image is drawn (widget pixels). */
+  QRectF
+  ImageRect() const;
+  /** \return the widget y of the centre of continuous row \a row, and the row at widget y. */
+  double
+  WidgetYOfRow(double row) const;
+  double
+  RowAtWidgetY(double y) const;
+  /** \return the image drawn (8-bit grey). */
+  const QImage &
+  GetDisplayedImage() const
+  {
+    return m_Grey;
+  }
+
+  QSize
+  sizeHint() const override
+  {
+    return QSize(220, 420);
+  }
+
+signals:
+  void
+  rollStarted();
+  /** \a degrees since the drag started; \a finished at the release. */
+  void
+  rollDragged(double degrees, bool finished);
+  void
+  rowPicked(double row);
+  void
+  stepped(int sections);
+
+protected:
+  void
+  paintEvent(QPaintEvent * event) override;
+  void
+  mousePressEvent(QMouseEvent * event) override;
+  void
+  mouseMoveEvent(QMouseEvent * event) override;
+  void
+  mouseReleaseEvent(QMouseEvent * event) override;
+  void
+  wheelEvent(QWheelEvent * event) override;
+  void
+  keyPressEvent(QKeyEvent * event) override;
+
+private:
+  DepthImageType::ConstPointer m_Image;
+  QImage                       m_Grey;
+  double                       m_Window{ 400.0 };
+  double                       m_Level{ 200.0 };
+  double                       m_PositionRow{ -1.0 };
+  QString                      m_Caption;
+  Qt::MouseButton              m_Drag{ Qt::NoButton };
+  QPointF                      m_DragStart;
+};
+} // namespace vr
+
+#endif
