@@ -37,7 +37,7 @@ namespace itk
  * power of two up to 64 that lowers E most, or, where the conjugate gradients met negative curvature, a step along
  * that direction (either sense, J / 32 doubled up to 2 J) if it lowers E more. Lagged weights alone creep where
  * edges sit near or beyond the inflection J / sqrt(2), since their curvature R overstates the energy's: on the
- * thoracic phantom's arch seams at 512 x 1024 they took 617 outer iterations, against 54 now (19 against 131 at
+ * thoracic phantom's arch seams at 512 x 1024 they took 617 outer iterations, against 54 with them (19 against 131 at
  * 128 x 256); the run-off phantom never leaves lagged weights (5). From the same start the solver reaches the fixed
  * point Jacobi approaches (the same energy to eight digits as lagged weights alone).
  *
@@ -47,12 +47,12 @@ namespace itk
  * pixels or more, it starts again from the solution on a grid of half the pixels per axis (the same view, fixed
  * where any of a 2 x 2 block is, with J times sqrt 2 and ten times the tolerance; solved the same way, recursively),
  * interpolated across without blurring its depth jumps: nested iteration, after which the map's own grid takes
- * 7 to 12 outer iterations on the thoracic phantom at 256 x 512 to 2048 x 4096. Maps that lagged weights finish
- * (the run-off phantom, the VMTK aorta) and smaller maps are solved as before, with the same bits. The energy is not
- * convex, so a different start may end in a different fixed point: measured, always one of lower energy than the
- * start from the input. A solve stops after Settings::MaximumOuterIterations on the map's own grid with
- * Report::Converged false and its last iterate (Describe() says how far it got). docs/steady-solver.md gives the
- * reasons and the measurements.
+ * 8 to 13 outer iterations (the one from the input included) on the thoracic phantom at 256 x 512 to 2048 x 4096. Maps
+ * that lagged weights finish (the run-off phantom, the VMTK aorta) and smaller maps are solved as before, with the same
+ * bits. The energy is not convex, so a different start may end in a different fixed point: measured, always one of
+ * lower energy than the start from the input. A solve stops after Settings::MaximumOuterIterations on the map's own
+ * grid with Report::Converged false and its last iterate (Describe() says how far it got). docs/steady-solver.md gives
+ * the reasons and the measurements.
  *
  * The multigrid is a black-box multigrid (Dendy, "Black box multigrid", J. Comput. Phys. 48, 1982): coarse points
  * on every other row and column, interpolation that follows the weights (a pixel beside a depth jump interpolates
@@ -187,8 +187,9 @@ public:
   static std::size_t
   GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads = 1, bool coarserGrids = true);
 
-  /** The most outer iterations on the image's own grid a solve takes by default: from the coarser grid's solution
-   * the thoracic phantom needs at most 12 at any size measured (256 x 512 to 2048 x 4096). */
+  /** The most outer iterations on the image's own grid a solve takes by default: with the coarser grids' start the
+   * thoracic phantom takes at most 13 at any size measured (256 x 512 to 2048 x 4096; 124 from the input at
+   * 1024 x 2048), about 30 passes over the image each. */
   static constexpr unsigned int DefaultMaximumOuterIterations = 100;
 };
 

@@ -4,7 +4,8 @@
 // repeated solves, outer iterations on the image's grid and on the coarser ones, and the energy and residual of each
 // result from the plain reference code (docs/measurements/2026-11-26-steady-nested-iteration.md).
 //
-//   MeasureSteadyScaling [--repeat N] [--threads T] [--only nested|input] case:W ... (case thorax|runoff|aorta)
+//   MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] case:W ...
+//   (case thorax|runoff|aorta; a in mm^-2, default 1/9: J = 3 mm)
 #include "PlainBilateralDepthRelax.h"
 #include "vrBenchmarkScene.h"
 #include "vrCenterlineIO.h"
@@ -25,7 +26,7 @@
 namespace
 {
 using Solver = itk::BilateralDepthRelaxSteadySolver;
-constexpr double Anisotropy = 1.0 / 9.0; // J = 3 mm, the filter's default
+double Anisotropy = 1.0 / 9.0; // J = 3 mm, the filter's default; --anisotropy a to change
 
 struct Map
 {
@@ -119,6 +120,10 @@ main(int argc, char * argv[])
       else if (argument == "--threads" && k + 1 < argc)
       {
         threads = static_cast<unsigned int>(std::stoul(argv[++k]));
+      }
+      else if (argument == "--anisotropy" && k + 1 < argc)
+      {
+        Anisotropy = std::stod(argv[++k]);
       }
       else if (argument == "--only" && k + 1 < argc)
       {
