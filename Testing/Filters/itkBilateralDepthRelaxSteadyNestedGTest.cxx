@@ -4,7 +4,8 @@
 // solution reaches an energy at least as low as the solve from the input depths (the solver before nested iteration,
 // still selectable), both measured by the plain reference energy, with the plain residual below 1e-4 mm, in a
 // bounded number of outer iterations on the image's own grid; a solve held to fewer outer iterations stops with the
-// last iterate and says how far it got; the filter passes that on as its warning.
+// last iterate and says how far it got; the filter passes that on as its warning; the progress rises across the
+// grids.
 #include "PlainBilateralDepthRelax.h"
 #include "vrTestImages.h"
 
@@ -15,7 +16,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -161,4 +164,48 @@ TEST(BilateralDepthRelaxSteadyNested, TheFilterWarnsWhenItsBoundStopsTheSolve)
   const std::string warning = filter->GetSteadyWarning();
   EXPECT_NE(warning.find("stopped after 2 outer iterations"), std::string::npos) << warning;
   EXPECT_NE(warning.find("tolerance 0.0001 mm"), std::string::npos) << warning;
+}
+
+// Across the attempt from the input, the coarser grids and the image's grid, the progress never goes back and ends
+// at 1; a callback that throws on a coarser grid stops the whole solve.
+TEST(BilateralDepthRelaxSteadyNested, ProgressRisesAcrossTheGridsAndAThrowingCallbackStopsTheSolve)
+{
+  const Map           map = ThoraxMap(256, 512);
+  std::vector<double> reported;
+  std::vector<float>  relaxed(map.Depth.size());
+  const auto          report = Solver::Solve(map.Depth.data(),
+                                    map.Fixed.data(),
+                                    relaxed.data(),
+                                    map.Width,
+                                    map.Height,
+                                    Anisotropy,
+                                    Solver::DefaultTolerance,
+                                    2,
+                                    [&](double fraction) { reported.push_back(fraction); });
+  ASSERT_GE(report.Grids, 2u);
+  ASSERT_GE(reported.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(reported.begin(), reported.end()));
+  EXPECT_EQ(reported.front(), 0.0);
+  EXPECT_EQ(reported.back(), 1.0);
+
+  // The attempt from the input calls it a few times (report.OuterIterations counts them too); the coarser grid's
+  // solve is the next to call it.
+  unsigned int calls = 0;
+  EXPECT_THROW(Solver::Solve(map.Depth.data(),
+                             map.Fixed.data(),
+                             relaxed.data(),
+                             map.Width,
+                             map.Height,
+                             Anisotropy,
+                             Solver::DefaultTolerance,
+                             2,
+                             [&](double)
+                             {
+                               if (++calls == 4)
+                               {
+                                 throw std::runtime_error("stop");
+                               }
+                             }),
+               std::runtime_error);
+  EXPECT_EQ(calls, 4u);
 }
