@@ -90,6 +90,8 @@ struct VesselReformationLogic::Internals
   std::string SegmentationWarning;
   std::string ExtractionWarning;
   std::string BackendNotice;
+  /** The steady solve that stopped short of its tolerance (how far it got), else "". */
+  std::string RelaxWarning;
 
   ReformationOutputs Outputs;
   StageCounts        Counts;
@@ -583,6 +585,12 @@ VesselReformationLogic::Update()
   // One filter at a time, so that an abort between stages is seen; ITK reruns only what is out of date.
   d.Monitor.Run(d.Depth, "depth");
   d.Monitor.Run(d.Relax, "relaxation");
+  if (d.Monitor.GetRuns(detail::Stage::Relax) != before.Relax)
+  {
+    // A steady solve bounded by its outer iterations says how far it got; its output is still shown.
+    d.RelaxWarning = d.Relax->GetSolver() == itk::BilateralDepthRelaxSolver::Steady ? d.Relax->GetSteadyWarning() : "";
+    d.Warning(d.RelaxWarning, ParameterName::Solver);
+  }
   d.Monitor.Run(d.UnfilteredResample, "resample");
   d.Monitor.Run(d.RelaxedResample, "resample");
   d.Counts = GetStageExecutionCounts();
@@ -681,6 +689,7 @@ VesselReformationLogic::GetWarnings() const
   for (const std::string * warning : { &m_Internals->SegmentationWarning,
                                        &m_Internals->ExtractionWarning,
                                        &m_Internals->InputWarning,
+                                       &m_Internals->RelaxWarning,
                                        &m_Internals->BackendNotice })
   {
     if (!warning->empty())

@@ -119,8 +119,8 @@ struct ReformationOutputs
  * conversion, centerlines with no point inside the volume (vr::CheckCenterlineVolumeFit), a view that does not fit in
  * memory, an unavailable backend, filter errors. AbortUpdate() stops a
  * running Update() through ITK's abort flag; that Update() throws vr::Cancelled. Warnings (most centerline points
- * outside the volume: wrong RAS/LPS; the backend auto falling back to the CPU) do not stop the run; they go to the
- * warning callback and GetWarnings().
+ * outside the volume: wrong RAS/LPS; the backend auto falling back to the CPU; a steady solve that stopped at its bound
+ * of outer iterations, with how far it got) do not stop the run; they go to the warning callback and GetWarnings().
  *
  * \sa ReformationParameters, VolumeNode, CenterlineNode, itk::CPRDepthImageFilter,
  * itk::BilateralDepthRelaxFilter, itk::CPRResampleImageFilter
@@ -248,7 +248,8 @@ public:
   /** \return how many times each stage has run since construction. */
   StageCounts
   GetStageExecutionCounts() const;
-  /** \return the warnings that hold for the current inputs (centerlines outside the volume, backend fallback). */
+  /** \return the warnings that hold for the current inputs (centerlines outside the volume, backend fallback, a
+   * steady solve stopped short). */
   std::vector<std::string>
   GetWarnings() const;
 

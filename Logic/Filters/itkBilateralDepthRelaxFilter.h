@@ -107,11 +107,26 @@ public:
   itkSetMacro(SteadyTolerance, double);
   itkGetConstMacro(SteadyTolerance, double);
 
-  /** What the last Steady solve did (outer iterations, V-cycles, final residual); empty after a Jacobi update. */
+  /** The most outer iterations on the image's own grid a Steady solve takes (>= 0); one that has not reached the
+   * tolerance then stops with the last iterate as output and GetSteadyWarning() saying how far it got. */
+  itkSetMacro(SteadyMaximumOuterIterations, unsigned int);
+  itkGetConstMacro(SteadyMaximumOuterIterations, unsigned int);
+
+  /** What the last Steady solve did (outer iterations, V-cycles, final residual, energy, whether it converged);
+   * empty after a Jacobi update. */
   const BilateralDepthRelaxSteadySolver::Report &
   GetSteadyReport() const
   {
     return m_SteadyReport;
+  }
+
+  /** A sentence when the last Steady solve stopped at SteadyMaximumOuterIterations without reaching the tolerance
+   * (how far it got), else "". */
+  std::string
+  GetSteadyWarning() const
+  {
+    return m_SteadyReport.Converged ? std::string()
+                                    : BilateralDepthRelaxSteadySolver::Describe(m_SteadyReport, m_SteadyTolerance);
   }
 
   /** Optional fixed mask, same size as the depth image: non-zero pixels keep their depth. */
@@ -190,6 +205,7 @@ private:
   unsigned int              m_NumberOfIterations{ 500 };
   BilateralDepthRelaxSolver m_Solver{ BilateralDepthRelaxSolver::Jacobi };
   double                    m_SteadyTolerance{ BilateralDepthRelaxSteadySolver::DefaultTolerance };
+  unsigned int m_SteadyMaximumOuterIterations{ BilateralDepthRelaxSteadySolver::DefaultMaximumOuterIterations };
 
   BilateralDepthRelaxSteadySolver::Report m_SteadyReport;
 

@@ -361,23 +361,19 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostSteady()
       throw aborted;
     }
   };
-  try
-  {
-    m_SteadyReport = BilateralDepthRelaxSteadySolver::Solve(values,
-                                                            fixed.empty() ? nullptr : fixed.data(),
-                                                            relaxed.data(),
-                                                            size[0],
-                                                            size[1],
-                                                            m_Anisotropy,
-                                                            m_SteadyTolerance,
-                                                            this->GetNumberOfHostThreads(),
-                                                            progress,
-                                                            &m_SteadyWorkspace);
-  }
-  catch (const std::runtime_error & error)
-  {
-    itkExceptionMacro(<< error.what());
-  }
+  BilateralDepthRelaxSteadySolver::Settings settings = BilateralDepthRelaxSteadySolver::DefaultSettings();
+  settings.MaximumOuterIterations = m_SteadyMaximumOuterIterations;
+  m_SteadyReport = BilateralDepthRelaxSteadySolver::Solve(values,
+                                                          fixed.empty() ? nullptr : fixed.data(),
+                                                          relaxed.data(),
+                                                          size[0],
+                                                          size[1],
+                                                          m_Anisotropy,
+                                                          m_SteadyTolerance,
+                                                          this->GetNumberOfHostThreads(),
+                                                          progress,
+                                                          &m_SteadyWorkspace,
+                                                          settings);
   // Fixed pixels come from the input itself, bit for bit, whatever the pixel type.
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -413,8 +409,11 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Inde
   os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
   os << indent << "Solver: " << m_Solver << std::endl;
   os << indent << "SteadyTolerance (mm): " << m_SteadyTolerance << std::endl;
-  os << indent << "SteadyReport: " << m_SteadyReport.OuterIterations << " outer iterations, " << m_SteadyReport.Cycles
-     << " V-cycles, residual " << m_SteadyReport.Residual << " mm" << std::endl;
+  os << indent << "SteadyMaximumOuterIterations: " << m_SteadyMaximumOuterIterations << std::endl;
+  os << indent << "SteadyReport: " << m_SteadyReport.OuterIterations << " outer iterations ("
+     << m_SteadyReport.CoarseOuterIterations << " on coarser grids), " << m_SteadyReport.Cycles
+     << " V-cycles, residual " << m_SteadyReport.Residual << " mm"
+     << (m_SteadyReport.Converged ? "" : ", stopped short") << std::endl;
   os << indent << "KernelWorkspace, SteadyWorkspace: the fast paths' buffers, kept between updates" << std::endl;
 }
 

@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkBilateralDepthRelaxSteadyField.h"
 
+#include "itkBilateralDepthRelaxSteadyNested.h"
 #include "itkBilateralDepthRelaxSteadyRows.h"
 
 #include <algorithm>
@@ -78,6 +79,36 @@ Field::Load(const float * depth, const unsigned char * fixed)
                   });
   Lowest = *std::min_element(lowest.begin(), lowest.end());
   Highest = *std::max_element(highest.begin(), highest.end());
+}
+
+void
+Field::StartFrom(const float * coarse, long coarseWidth, long coarseHeight)
+{
+  ProlongStart(m_Bands, coarse, coarseWidth, coarseHeight, Scale, Active, Depth, Width, Height, Stride);
+}
+
+double
+Field::Energy()
+{
+  // In double with expm1: 1 - R in float loses the small differences' share to cancellation.
+  const double anisotropy = 0.5 * static_cast<double>(TwiceAnisotropy);
+  auto         edge = [&](double difference)
+  {
+    return Isotropic ? 0.5 * difference * difference
+                     : -std::expm1(-anisotropy * difference * difference) / (2.0 * anisotropy);
+  };
+  return m_Bands.SumRows(
+    [&](long y, float *)
+    {
+      const double * d = Depth + At(0, y);
+      const double * above = y + 1 < Height ? d + Stride : nullptr;
+      double         sum = 0.0;
+      for (long x = 0; x < Width; ++x)
+      {
+        sum += (x + 1 < Width ? edge(d[x + 1] - d[x]) : 0.0) + (above ? edge(above[x] - d[x]) : 0.0);
+      }
+      return sum;
+    });
 }
 
 void

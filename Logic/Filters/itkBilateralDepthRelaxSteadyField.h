@@ -47,6 +47,16 @@ public:
   void
   Load(const float * depth, const unsigned char * fixed);
 
+  /** The coarser grid's solution (row-major \a coarseWidth x \a coarseHeight, see CoarsenMap) interpolated onto the
+   * active pixels as the start (ProlongStart); fixed and floating pixels keep their depths. */
+  void
+  StartFrom(const float * coarse, long coarseWidth, long coarseHeight);
+
+  /** The energy sum over 4-neighbour edges of (1 - R(D_p - D_q)) / (2a) at the current depths, in mm^2 (a = 0: the
+   * Dirichlet energy, sum of (D_p - D_q)^2 / 2), in double (one exponential per edge: for reports, not the loop). */
+  double
+  Energy();
+
   /** The solved depths into \a relaxed; fixed pixels take their input \a depth bit for bit. */
   void
   Store(const float * depth, const unsigned char * fixed, float * relaxed) const;

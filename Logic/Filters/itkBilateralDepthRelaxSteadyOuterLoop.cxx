@@ -4,13 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 namespace itk::detail::BilateralDepthRelaxSteady
 {
 OuterLoop::Report
-OuterLoop::Run(double tolerance, const ProgressCallback & progress)
+OuterLoop::Run(double                   tolerance,
+               const ProgressCallback & progress,
+               unsigned int             maximumOuterIterations,
+               const Start &            start,
+               bool                     stopWhenSlowed)
 {
   m_Report = Report();
   m_Signature = m_Field.ComputeWeights();
@@ -19,6 +21,18 @@ OuterLoop::Run(double tolerance, const ProgressCallback & progress)
   if (m_Report.FloatingPixels > 0)
   {
     m_Signature = m_Field.ComputeWeights();
+  }
+  if (start.Values)
+  {
+    // Floating regions took their mean input depth above; the active pixels start from the coarser solution, whose
+    // weights may join or split regions again.
+    m_Field.StartFrom(start.Values, start.Width, start.Height);
+    m_Signature = m_Field.ComputeWeights();
+    m_Report.FloatingPixels = m_Field.ClassifyRegions(changed);
+    if (changed)
+    {
+      m_Signature = m_Field.ComputeWeights();
+    }
   }
   m_Rebuild = true;
   m_Newton = false;
@@ -46,10 +60,10 @@ OuterLoop::Run(double tolerance, const ProgressCallback & progress)
     {
       break;
     }
-    if (outer == MaximumOuterIterations)
+    if (outer >= maximumOuterIterations)
     {
-      throw std::runtime_error("BilateralDepthRelaxSteadySolver: the residual is still " + std::to_string(residual) +
-                               " mm after " + std::to_string(outer) + " outer iterations");
+      m_Report.Converged = false;
+      break;
     }
     if (m_Rebuild)
     {
@@ -59,13 +73,21 @@ OuterLoop::Run(double tolerance, const ProgressCallback & progress)
     }
     // Newton steps once lagged weights have slowed down, for as long as they are taken.
     const bool hessianAssembled = m_Newton;
+    const bool wasNewton = m_Newton;
     m_Newton = !m_Field.Isotropic && (m_Newton || residual > NewtonAfterReduction * previous);
     previous = residual;
+    if (stopWhenSlowed && m_Newton && !wasNewton)
+    {
+      m_Report.Slowed = true;
+      m_Report.Converged = false;
+      break;
+    }
     if (m_Newton && !hessianAssembled)
     {
       m_Field.Assemble(true);
     }
     Step(std::max(InnerReduction * residual, 0.5 * tolerance));
+
     m_Rebuild = m_Correction.GetLastCycles() > RebuildAfterCycles;
   }
   m_Report.Cycles = m_Correction.GetCycles();

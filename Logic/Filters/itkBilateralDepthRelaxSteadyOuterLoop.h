@@ -25,11 +25,19 @@ public:
     unsigned int HierarchyBuilds{ 0 };
     std::size_t  FloatingPixels{ 0 };
     double       Residual{ 0.0 };
+    bool         Converged{ true };
+    /** Stopped where lagged weights slowed down (see Run's stopWhenSlowed). */
+    bool Slowed{ false };
+  };
+
+  /** A coarser grid's solution to start from (see Field::StartFrom); none when Values is null. */
+  struct Start
+  {
+    const float * Values{ nullptr };
+    long          Width{ 0 };
+    long          Height{ 0 };
   };
   using ProgressCallback = std::function<void(double fraction)>;
-
-  /** The most outer iterations (BilateralDepthRelaxSteadySolver::MaximumOuterIterations). */
-  static constexpr unsigned int MaximumOuterIterations = 1000;
 
   /** Each outer iteration's conjugate gradients stop once the residual has fallen this much. */
   static constexpr double InnerReduction = 0.1;
@@ -49,10 +57,16 @@ public:
   {
   }
 
-  /** Iterates until the residual is at most \a tolerance; calls \a progress (when set) after each outer iteration.
-   * Throws std::runtime_error after MaximumOuterIterations. */
+  /** Iterates from \a start (when given; else from the loaded depths) until the residual is at most \a tolerance;
+   * calls \a progress (when set) after each outer iteration. Stops after \a maximumOuterIterations with Converged
+   * false, the depths those iterations reached left in the field; with \a stopWhenSlowed, also (Slowed) at the first
+   * outer iteration that would turn to Newton steps. */
   Report
-  Run(double tolerance, const ProgressCallback & progress);
+  Run(double                   tolerance,
+      const ProgressCallback & progress,
+      unsigned int             maximumOuterIterations,
+      const Start &            start,
+      bool                     stopWhenSlowed);
 
 private:
   /** The weights at the current depths and, where the pattern of vanishing ones changed, the regions again; sets

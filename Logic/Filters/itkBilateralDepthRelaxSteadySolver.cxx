@@ -2,49 +2,50 @@
 // The steady solver's entry point: a workspace, the units a solve is made of, and their order. The units, each in its
 // own file: the grid and its bands of rows (Grid), the row kernels (Rows), the black-box multigrid (Multigrid), the
 // floating regions (Regions), the depth map and its energy (Field), the conjugate gradients and line searches
-// (Correction), the outer iterations (OuterLoop).
+// (Correction), the outer iterations (OuterLoop), the coarser grids of the nested iteration (Nested).
 #include "itkBilateralDepthRelaxSteadySolver.h"
 
 #include "itkBilateralDepthRelaxSteadyCorrection.h"
 #include "itkBilateralDepthRelaxSteadyField.h"
 #include "itkBilateralDepthRelaxSteadyGrid.h"
 #include "itkBilateralDepthRelaxSteadyMultigrid.h"
+#include "itkBilateralDepthRelaxSteadyNested.h"
 #include "itkBilateralDepthRelaxSteadyOuterLoop.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace itk
 {
 namespace Steady = detail::BilateralDepthRelaxSteady;
 
-static_assert(BilateralDepthRelaxSteadySolver::MaximumOuterIterations == Steady::OuterLoop::MaximumOuterIterations);
-
-/** Everything a solve allocates. */
+/** Everything a solve allocates: the image's grid, and the coarser grid's map, solution and buffers. */
 struct BilateralDepthRelaxSteadySolver::Workspace::Buffers
 {
-  Steady::BandBuffers      Bands;
-  Steady::MultigridBuffers Multigrid;
-  Steady::FieldBuffers     Field;
+  Steady::BandBuffers        Bands;
+  Steady::MultigridBuffers   Multigrid;
+  Steady::FieldBuffers       Field;
+  std::vector<float>         CoarseDepth, CoarseRelaxed;
+  std::vector<unsigned char> CoarseFixed;
+  std::unique_ptr<Buffers>   Coarse;
 };
 
-BilateralDepthRelaxSteadySolver::Workspace::Workspace()
-  : m_Buffers(std::make_unique<Buffers>())
+namespace
 {
-}
+using Buffers = BilateralDepthRelaxSteadySolver::Workspace::Buffers;
+using Report = BilateralDepthRelaxSteadySolver::Report;
 
-BilateralDepthRelaxSteadySolver::Workspace::~Workspace() = default;
+/** The share of a nested solve's progress that the coarser grids take (they hold a third of the pixels). */
+constexpr double CoarseProgressShare = 0.25;
 
+/** The bytes of one grid's own buffers (no coarser grid). */
 std::size_t
-BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads)
+GridBytes(long w, long h, unsigned int threads)
 {
-  if (width == 0 || height == 0)
-  {
-    return 0;
-  }
-  const long w = static_cast<long>(width);
-  const long h = static_cast<long>(height);
   // The finest grid: the depths (double), FieldBuffers' floats, the finest level's operator.
   std::size_t bytes =
     Steady::PaddedSize(w, h) *
@@ -63,11 +64,156 @@ BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t width, std::size_
   // Rows: per row sums, extremes, maxima, signatures, run starts, counts; per team member a scratch row and three
   // residual rows.
   const std::size_t stride = static_cast<std::size_t>(Steady::PaddedStride(w));
+  const std::size_t height = static_cast<std::size_t>(h);
   bytes += height * (5 * sizeof(double) + sizeof(std::uint64_t) + sizeof(long) + sizeof(char));
   bytes += 4 * stride * sizeof(float) * Steady::Bands::TeamSize(threads, h);
   // The floating regions' runs: one per row where no weight within a row vanishes (more where some do).
   bytes += height * (sizeof(Steady::RowRun) + sizeof(std::int32_t) + 4 * sizeof(char) + 2 * sizeof(double));
   return bytes;
+}
+
+/** Solves a \a w x \a h map on its own grid: from its input while lagged weights converge fast, else (when it has a
+ * coarser grid) from the coarser grid's solution, solved the same way (nested iteration, recursively). */
+Report
+SolveGrid(Buffers &                                                 buffers,
+          const float *                                             depth,
+          const unsigned char *                                     fixed,
+          float *                                                   relaxed,
+          long                                                      w,
+          long                                                      h,
+          double                                                    anisotropy,
+          double                                                    tolerance,
+          unsigned int                                              threads,
+          const BilateralDepthRelaxSteadySolver::ProgressCallback & progress,
+          const BilateralDepthRelaxSteadySolver::Settings &         settings)
+{
+  long       coarseWidth = 0;
+  long       coarseHeight = 0;
+  const bool canNest = settings.NestedIteration && Steady::HasCoarserStart(w, h, coarseWidth, coarseHeight);
+  // The fraction reported never goes back, across the attempt from the input and the nested solve after it.
+  double reported = 0.0;
+  auto   report = [&progress, &reported](double fraction)
+  {
+    reported = std::max(reported, fraction);
+    progress(reported);
+  };
+  BilateralDepthRelaxSteadySolver::ProgressCallback ownProgress;
+  if (progress)
+  {
+    ownProgress = report;
+  }
+  Steady::Bands      bands(buffers.Bands, threads, h, Steady::PaddedStride(w));
+  Steady::Multigrid  multigrid(buffers.Multigrid, bands, w, h);
+  Steady::Field      field(buffers.Field, bands, multigrid.Finest(), w, h, anisotropy);
+  Steady::Correction correction(field, multigrid, bands);
+  field.Load(depth, fixed);
+  // From the input first: where lagged weights converge fast (no depth step near the kernel's inflection), that is
+  // the whole solve, as before nested iteration.
+  auto outcome = Steady::OuterLoop(field, multigrid, correction)
+                   .Run(tolerance, ownProgress, settings.MaximumOuterIterations, {}, canNest);
+  unsigned int fromInput = 0;
+  unsigned int buildsFromInput = 0;
+  Report       coarse;
+  coarse.Grids = 0;
+  if (outcome.Slowed)
+  {
+    fromInput = outcome.OuterIterations;
+    buildsFromInput = outcome.HierarchyBuilds;
+    const std::size_t coarsePixels = static_cast<std::size_t>(coarseWidth * coarseHeight);
+    buffers.CoarseDepth.resize(coarsePixels);
+    buffers.CoarseFixed.resize(coarsePixels);
+    buffers.CoarseRelaxed.resize(coarsePixels);
+    if (!buffers.Coarse)
+    {
+      buffers.Coarse = std::make_unique<Buffers>();
+    }
+    Steady::CoarsenMap(
+      bands, depth, fixed, w, h, buffers.CoarseDepth.data(), buffers.CoarseFixed.data(), coarseWidth, coarseHeight);
+    BilateralDepthRelaxSteadySolver::ProgressCallback coarseProgress;
+    if (progress)
+    {
+      coarseProgress = [&report](double fraction) { report(CoarseProgressShare * fraction); };
+    }
+    coarse = SolveGrid(*buffers.Coarse,
+                       buffers.CoarseDepth.data(),
+                       buffers.CoarseFixed.data(),
+                       buffers.CoarseRelaxed.data(),
+                       coarseWidth,
+                       coarseHeight,
+                       Steady::CoarseAnisotropyFactor * anisotropy,
+                       Steady::CoarseToleranceFactor * tolerance,
+                       threads,
+                       coarseProgress,
+                       settings);
+    if (progress)
+    {
+      ownProgress = [&report](double fraction)
+      { report(CoarseProgressShare + (1.0 - CoarseProgressShare) * fraction); };
+    }
+    // Back to the input (fixed pixels, floating regions' means), then the coarser solution as the start.
+    field.Load(depth, fixed);
+    const unsigned int left =
+      settings.MaximumOuterIterations > fromInput ? settings.MaximumOuterIterations - fromInput : 0;
+    outcome = Steady::OuterLoop(field, multigrid, correction)
+                .Run(tolerance, ownProgress, left, { buffers.CoarseRelaxed.data(), coarseWidth, coarseHeight }, false);
+  }
+  Report result;
+  // The energy, one exponential per edge, only for a solve that stopped short (Describe).
+  result.Energy = outcome.Converged ? 0.0 : field.Energy();
+  field.Store(depth, fixed, relaxed);
+  result.OuterIterations = fromInput + outcome.OuterIterations;
+  result.CoarseOuterIterations = coarse.OuterIterations + coarse.CoarseOuterIterations;
+  result.Grids = coarse.Grids + 1;
+  result.Cycles = outcome.Cycles + coarse.Cycles;
+  result.HierarchyBuilds = buildsFromInput + outcome.HierarchyBuilds + coarse.HierarchyBuilds;
+  result.FloatingPixels = outcome.FloatingPixels;
+  result.Residual = outcome.Residual;
+  result.Converged = outcome.Converged;
+  return result;
+}
+} // namespace
+
+BilateralDepthRelaxSteadySolver::Workspace::Workspace()
+  : m_Buffers(std::make_unique<Buffers>())
+{
+}
+
+BilateralDepthRelaxSteadySolver::Workspace::~Workspace() = default;
+
+std::size_t
+BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t  width,
+                                                   std::size_t  height,
+                                                   unsigned int threads,
+                                                   bool         coarserGrids)
+{
+  if (width == 0 || height == 0)
+  {
+    return 0;
+  }
+  long        w = static_cast<long>(width);
+  long        h = static_cast<long>(height);
+  std::size_t bytes = GridBytes(w, h, threads);
+  // The coarser grids of the nested iteration: their maps (depth, fixed, solution) and their own buffers.
+  long coarseWidth = 0;
+  long coarseHeight = 0;
+  while (coarserGrids && Steady::HasCoarserStart(w, h, coarseWidth, coarseHeight))
+  {
+    w = coarseWidth;
+    h = coarseHeight;
+    bytes += static_cast<std::size_t>(w * h) * (2 * sizeof(float) + 1) + GridBytes(w, h, threads);
+  }
+  return bytes;
+}
+
+std::string
+BilateralDepthRelaxSteadySolver::Describe(const Report & report, double tolerance)
+{
+  std::ostringstream text;
+  text << "the steady relax solver stopped after " << report.OuterIterations
+       << " outer iterations at the image's size (after " << report.CoarseOuterIterations << " on " << report.Grids - 1
+       << " coarser grids) with the residual at " << report.Residual << " mm, above the tolerance " << tolerance
+       << " mm (energy " << report.Energy << " mm^2): the relaxed depths are that last iterate, not the fixed point";
+  return text.str();
 }
 
 BilateralDepthRelaxSteadySolver::Report
@@ -80,7 +226,8 @@ BilateralDepthRelaxSteadySolver::Solve(const float *            depth,
                                        double                   tolerance,
                                        unsigned int             threads,
                                        const ProgressCallback & progress,
-                                       Workspace *              workspace)
+                                       Workspace *              workspace,
+                                       const Settings &         settings)
 {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
   {
@@ -91,24 +238,18 @@ BilateralDepthRelaxSteadySolver::Solve(const float *            depth,
   {
     return Report();
   }
-  Workspace            ownWorkspace;
-  Workspace::Buffers & buffers = *(workspace ? workspace : &ownWorkspace)->m_Buffers;
-  const long           w = static_cast<long>(width);
-  const long           h = static_cast<long>(height);
-  Steady::Bands        bands(buffers.Bands, threads, h, Steady::PaddedStride(w));
-  Steady::Multigrid    multigrid(buffers.Multigrid, bands, w, h);
-  Steady::Field        field(buffers.Field, bands, multigrid.Finest(), w, h, anisotropy);
-  Steady::Correction   correction(field, multigrid, bands);
-  field.Load(depth, fixed);
-  const auto outcome = Steady::OuterLoop(field, multigrid, correction).Run(tolerance, progress);
-  field.Store(depth, fixed, relaxed);
-  Report report;
-  report.OuterIterations = outcome.OuterIterations;
-  report.Cycles = outcome.Cycles;
-  report.HierarchyBuilds = outcome.HierarchyBuilds;
-  report.FloatingPixels = outcome.FloatingPixels;
-  report.Residual = outcome.Residual;
-  return report;
+  Workspace ownWorkspace;
+  return SolveGrid(*(workspace ? workspace : &ownWorkspace)->m_Buffers,
+                   depth,
+                   fixed,
+                   relaxed,
+                   static_cast<long>(width),
+                   static_cast<long>(height),
+                   anisotropy,
+                   tolerance,
+                   threads,
+                   progress,
+                   settings);
 }
 
 } // namespace itk

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <string>
 
 namespace itk
 {
@@ -36,9 +37,22 @@ namespace itk
  * power of two up to 64 that lowers E most, or, where the conjugate gradients met negative curvature, a step along
  * that direction (either sense, J / 32 doubled up to 2 J) if it lowers E more. Lagged weights alone creep where
  * edges sit near or beyond the inflection J / sqrt(2), since their curvature R overstates the energy's: on the
- * thoracic phantom's arch seams at 512 x 1024 they took 617 outer iterations, against 54 now (19 against 131 at
+ * thoracic phantom's arch seams at 512 x 1024 they took 617 outer iterations, against 54 with them (19 against 131 at
  * 128 x 256); the run-off phantom never leaves lagged weights (5). From the same start the solver reaches the fixed
  * point Jacobi approaches (the same energy to eight digits as lagged weights alone).
+ *
+ * Those outer iterations settle the seams near the inflection a few at a time, so from the input they grew with the
+ * image's height (the thoracic phantom: 34, 54, 124 at 256 x 512 to 1024 x 2048). So a solve starts from the input,
+ * and where lagged weights slow down (the first outer iteration that turns to Newton steps) on a map of 256 x 512
+ * pixels or more, it starts again from the solution on a grid of half the pixels per axis (the same view, fixed
+ * where any of a 2 x 2 block is, with J times sqrt 2 and ten times the tolerance; solved the same way, recursively),
+ * interpolated across without blurring its depth jumps: nested iteration, after which the map's own grid takes
+ * 8 to 13 outer iterations (the one from the input included) on the thoracic phantom at 256 x 512 to 2048 x 4096. Maps
+ * that lagged weights finish (the run-off phantom, the VMTK aorta) and smaller maps are solved as before, with the same
+ * bits. The energy is not convex, so a different start may end in a different fixed point: measured, always one of
+ * lower energy than the start from the input. A solve stops after Settings::MaximumOuterIterations on the map's own
+ * grid with Report::Converged false and its last iterate (Describe() says how far it got). docs/steady-solver.md gives
+ * the reasons and the measurements.
  *
  * The multigrid is a black-box multigrid (Dendy, "Black box multigrid", J. Comput. Phys. 48, 1982): coarse points
  * on every other row and column, interpolation that follows the weights (a pixel beside a depth jump interpolates
@@ -78,20 +92,56 @@ public:
   /** What a solve did. */
   struct Report
   {
-    /** Outer (reweighting) iterations, each with its own weights. */
+    /** Outer (reweighting) iterations on the image's own grid, each with its own weights, those from the input
+     * before a nested start included: the iterations whose cost grows with the pixel count (the coarser grids' are
+     * CoarseOuterIterations). */
     unsigned int OuterIterations{ 0 };
-    /** Multigrid V-cycles, over all outer iterations. */
+    /** Outer iterations on the coarser grids of the nested iteration, all of them together. */
+    unsigned int CoarseOuterIterations{ 0 };
+    /** Grids solved: the image's own and the coarser ones whose solutions were the starts (1 without any). */
+    unsigned int Grids{ 1 };
+    /** Multigrid V-cycles, over all outer iterations on all grids. */
     unsigned int Cycles{ 0 };
-    /** Times the multigrid hierarchy was built. */
+    /** Times a multigrid hierarchy was built, on all grids. */
     unsigned int HierarchyBuilds{ 0 };
     /** Pixels that no fixed pixel reaches and that took their region's mean (isolated pixels included). */
     std::size_t FloatingPixels{ 0 };
     /** max |D_p - sum R D_q / sum R| over free pixels with non-zero weights at the end, in mm (float weights). */
     double Residual{ 0.0 };
+    /** For a solve that stopped short (Converged false): the energy sum over 4-neighbour edges of
+     * (1 - R(D_p - D_q)) / (2a) at the end, in mm^2 (a = 0: sum of (D_p - D_q)^2 / 2); 0 after a converged one. */
+    double Energy{ 0.0 };
+    /** False when the residual was still above the tolerance after the most outer iterations allowed: the result is
+     * the last iterate, and Describe() says how far it got. */
+    bool Converged{ true };
   };
 
-  /** Buffers kept from one solve to the next (about 94 bytes per pixel at 512 x 1024; GetWorkspaceBytes says how
-   * many for a size): reusing one spares allocating and first touching them. One solve at a time per workspace. */
+  /** Limits and choices of a solve. */
+  struct Settings
+  {
+    /** Outer iterations on the image's own grid at most; a solve that has not converged then stops with Converged
+     * false. Each costs a few passes over the image. */
+    unsigned int MaximumOuterIterations;
+    /** Where lagged weights slow down, start again from the solution on a grid of half the pixels per axis, itself
+     * solved the same way (nested iteration); false goes on from the input depths, as the solver did before (kept
+     * for comparisons). */
+    bool NestedIteration;
+  };
+
+  /** The default settings: at most DefaultMaximumOuterIterations, nested iteration. */
+  static Settings
+  DefaultSettings()
+  {
+    return { DefaultMaximumOuterIterations, true };
+  }
+
+  /** A sentence for a solve that stopped short: iterations, residual against \a tolerance, energy. */
+  static std::string
+  Describe(const Report & report, double tolerance);
+
+  /** Buffers kept from one solve to the next (about 94 bytes per pixel at 512 x 1024, 128 once a solve started from
+   * the coarser grids; GetWorkspaceBytes says how many for a size): reusing one spares allocating and first touching
+   * them. One solve at a time per workspace. */
   class Workspace
   {
   public:
@@ -101,18 +151,20 @@ public:
     Workspace &
     operator=(const Workspace &) = delete;
 
+    /** What it holds (defined where the solver is). */
+    struct Buffers;
+
   private:
     friend class BilateralDepthRelaxSteadySolver;
-    struct Buffers;
     std::unique_ptr<Buffers> m_Buffers;
   };
 
   /** Solves for the fixed point of \a depth (row-major \a width x \a height, finite values, in mm) into
    * \a relaxed (same layout; may be the same buffer). \a fixed (row-major, non-zero = fixed) may be null.
    * \a anisotropy is a >= 0 in mm^-2 (0: the harmonic interpolation of the fixed pixels). \a tolerance is the
-   * residual to reach, in mm (> 0). \a threads (>= 1) work on bands of rows. Throws std::runtime_error when the
-   * residual has not fallen below \a tolerance after MaximumOuterIterations (which a descent of the energy makes
-   * very unlikely), std::invalid_argument for a bad tolerance. */
+   * residual to reach, in mm (> 0). \a threads (>= 1) work on bands of rows. A solve whose residual has not fallen
+   * below \a tolerance after \a settings' MaximumOuterIterations stops there (Report::Converged false).
+   * Throws std::invalid_argument for a bad tolerance. */
   static Report
   Solve(const float *            depth,
         const unsigned char *    fixed,
@@ -123,17 +175,22 @@ public:
         double                   tolerance = DefaultTolerance,
         unsigned int             threads = 1,
         const ProgressCallback & progress = ProgressCallback(),
-        Workspace *              workspace = nullptr);
+        Workspace *              workspace = nullptr,
+        const Settings &         settings = DefaultSettings());
 
   /** The bytes a solve of a \a width x \a height map with \a threads threads allocates (its workspace): 56 per
    * padded pixel for the depths and the finest grid's vectors, 12 for its operator, 64 per point of each coarser
    * level (about a third as many points in all), and rows. The floating regions add 48 bytes for each run of pixels
-   * beyond one per row that vanishing weights split a row into. */
+   * beyond one per row that vanishing weights split a row into. With \a coarserGrids, also the coarser grids of the
+   * nested iteration, which a solve allocates (and its workspace keeps) once lagged weights slow down: the most a
+   * solve allocates, about a third more. */
   static std::size_t
-  GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads = 1);
+  GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads = 1, bool coarserGrids = true);
 
-  /** The most outer iterations a solve may take. */
-  static constexpr unsigned int MaximumOuterIterations = 1000;
+  /** The most outer iterations on the image's own grid a solve takes by default: with the coarser grids' start the
+   * thoracic phantom takes at most 13 at any size measured (256 x 512 to 2048 x 4096; 124 from the input at
+   * 1024 x 2048), about 30 passes over the image each. */
+  static constexpr unsigned int DefaultMaximumOuterIterations = 100;
 };
 
 } // namespace itk

@@ -2,7 +2,12 @@
 #include "vrBenchmarkScene.h"
 
 #include "itkCTAPhantom.h"
+#include "itkCPRDepthImageFilter.h"
 #include "itkRunoffPhantomImageSource.h"
+#include "vrCenterlineIO.h"
+#include "vrVolumeIO.h"
+
+#include <filesystem>
 
 namespace vr::benchmarks
 {
@@ -50,6 +55,29 @@ ThoraxDepthMap(unsigned int width, unsigned int height)
   {
     const auto phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax);
     map = vr::test::MakeScanlineDepthMap(phantom.Tree, PaperView(width, height, phantom.DesignAngleInDegrees));
+  }
+  return map;
+}
+
+const DepthMap &
+AortaDepthMap(unsigned int width, unsigned int height)
+{
+  static std::map<std::pair<unsigned int, unsigned int>, DepthMap> maps;
+  auto &                                                           map = maps[{ width, height }];
+  if (!map.Depth)
+  {
+    const std::filesystem::path folder = std::filesystem::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
+    const auto                  volume = vr::ReadVolume((folder / "aorta.mha").string());
+    const auto                  tree = vr::ReadCenterlines((folder / "aorta-centerline.vtp").string());
+    auto                        depth = itk::CPRDepthImageFilter<DepthImage>::New();
+    depth->SetCenterlineTree(tree);
+    itk::CPRViewSpecification view = PaperView(width, height, 0.0);
+    view.AutomaticUp = true;
+    depth->SetViewSpecification(view);
+    depth->SetReferenceVolume(volume);
+    depth->Update();
+    map.Depth = depth->GetDepthOutput();
+    map.Fixed = depth->GetFixedMaskOutput();
   }
   return map;
 }

@@ -33,6 +33,12 @@ using DepthMap = vr::test::PhantomDepthMap;
 const DepthMap &
 ThoraxDepthMap(unsigned int width, unsigned int height);
 
+/** The VMTK aorta MRA's scanline depth map (VR_SHARED_DATA_DIR/vmtk-aorta-mra: aorta.mha, aorta-centerline.vtp) at
+ * angle 0 and W x H pixels (the fit spacing, the tree's longest axis up), with its fixed mask, built once per size on
+ * first use. Throws when the data is missing. */
+const DepthMap &
+AortaDepthMap(unsigned int width, unsigned int height);
+
 /** The run-off phantom (RunoffPhantomImageSource at its defaults: 1.5 mm voxels, 254 x 160 x 680) and its
  * exact centerline tree, built once per process on first use, outside any timing. */
 class PhantomScene

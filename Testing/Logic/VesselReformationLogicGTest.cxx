@@ -258,6 +258,40 @@ TEST_F(VesselReformationLogicTest, ProgressRisesToOne)
   EXPECT_GE(fractions.front(), 0.0);
 }
 
+TEST_F(VesselReformationLogicTest, ASteadySolveStoppedByItsBoundIsAWarningThatSaysHowFarItGot)
+{
+  ReformationParameters parameters = QuickParameters();
+  parameters.Solver = itk::BilateralDepthRelaxSolver::Steady;
+  m_Logic.SetParameters(parameters);
+  std::vector<std::pair<std::string, std::string>> warned;
+  m_Logic.SetWarningCallback([&](const std::string & message, const std::string & parameter)
+                             { warned.emplace_back(message, parameter); });
+  m_Logic.Update();
+  EXPECT_TRUE(warned.empty()) << warned.front().first;
+  EXPECT_TRUE(m_Logic.GetWarnings().empty());
+
+  // No outer iteration allowed: the update still shows the (unrelaxed) result, and says so.
+  m_Logic.GetRelaxFilter()->SetSteadyMaximumOuterIterations(0);
+  const auto outputs = m_Logic.Update();
+  EXPECT_NE(outputs.CPR, nullptr);
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_EQ(warned[0].second, vr::ParameterName::Solver);
+  EXPECT_NE(warned[0].first.find("stopped after 0 outer iterations"), std::string::npos) << warned[0].first;
+  EXPECT_NE(warned[0].first.find("residual"), std::string::npos) << warned[0].first;
+  EXPECT_NE(warned[0].first.find("energy"), std::string::npos) << warned[0].first;
+  ASSERT_EQ(m_Logic.GetWarnings().size(), 1u);
+  EXPECT_EQ(m_Logic.GetWarnings()[0], warned[0].first);
+
+  // The warning holds while the result does, and goes with the next solve that converges.
+  m_Logic.Update();
+  EXPECT_EQ(m_Logic.GetWarnings().size(), 1u);
+  m_Logic.GetRelaxFilter()->SetSteadyMaximumOuterIterations(
+    itk::BilateralDepthRelaxSteadySolver::DefaultMaximumOuterIterations);
+  m_Logic.Update();
+  EXPECT_TRUE(m_Logic.GetWarnings().empty());
+  EXPECT_EQ(warned.size(), 1u);
+}
+
 TEST_F(VesselReformationLogicTest, CenterlinesWithNoPointInTheVolumeAreRefusedNamingBothNodes)
 {
   EXPECT_TRUE(m_Logic.GetWarnings().empty());

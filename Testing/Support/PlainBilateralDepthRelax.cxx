@@ -117,6 +117,28 @@ PlainFixedPointResidual(const std::vector<double> &        depth,
   return largest;
 }
 
+double
+PlainRelaxEnergy(const std::vector<double> & depth, std::size_t width, std::size_t height, double anisotropy)
+{
+  CheckSizes(depth.size(), depth.size(), width, height, "PlainRelaxEnergy");
+  auto edge = [anisotropy](double difference)
+  {
+    return anisotropy > 0.0 ? -std::expm1(-anisotropy * difference * difference) / (2.0 * anisotropy)
+                            : 0.5 * difference * difference;
+  };
+  double energy = 0.0;
+  for (std::size_t y = 0; y < height; ++y)
+  {
+    for (std::size_t x = 0; x < width; ++x)
+    {
+      const std::size_t k = y * width + x;
+      energy += (x + 1 < width ? edge(depth[k + 1] - depth[k]) : 0.0) +
+                (y + 1 < height ? edge(depth[k + width] - depth[k]) : 0.0);
+    }
+  }
+  return energy;
+}
+
 std::vector<double>
 PlainJacobiToResidual(const std::vector<float> &         depth,
                       const std::vector<unsigned char> & fixed,

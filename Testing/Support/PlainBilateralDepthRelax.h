@@ -7,8 +7,8 @@
 
 namespace vr::test
 {
-/** The plain reference of BilateralDepthRelaxFilter: Eq. 1 of docs/design.md 3.5 evaluated exactly as written, in double,
- * one pixel and one neighbour at a time, written independently of the fast kernel to check it and to time it.
+/** The plain reference of BilateralDepthRelaxFilter: Eq. 1 of docs/design.md 3.5 evaluated exactly as written, in
+ * double, one pixel and one neighbour at a time, written independently of the fast kernel to check it and to time it.
  *
  *   D'_p = ((1 - w) |Omega| D_p + w sum_q R(D_p - D_q) D_q) / ((1 - w) |Omega| + w sum_q R(D_p - D_q)),
  *   R(x) = exp(-a x^2), and R = 0 when a x^2 > -ln(FLT_MIN) (the filter's underflow rule).
@@ -36,6 +36,11 @@ PlainFixedPointResidual(const std::vector<double> &        depth,
                         std::size_t                        width,
                         std::size_t                        height,
                         double                             anisotropy);
+
+/** The energy Jacobi's passes descend, sum over 4-neighbour edges of (1 - exp(-a (D_p - D_q)^2)) / (2a), in mm^2
+ * (a = 0: sum of (D_p - D_q)^2 / 2), in double: the independent check that a solve reached the same minimum. */
+double
+PlainRelaxEnergy(const std::vector<double> & depth, std::size_t width, std::size_t height, double anisotropy);
 
 /** Plain Jacobi passes of Eq. 1 (w = 1, in double, as PlainBilateralDepthRelax) until PlainFixedPointResidual()
  * falls to \a residual mm, checked every \a checkEvery passes, or \a maximumIterations passes; the test reference

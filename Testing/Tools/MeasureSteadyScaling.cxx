@@ -1,0 +1,186 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// Measurement, not a test: the steady solver from the input depths (as before issue 26) and with nested iteration,
+// alternately, on the thoracic phantom, the run-off phantom and the VMTK aorta MRA at W x H, H = 2 W: median times of
+// repeated solves, outer iterations on the image's grid and on the coarser ones, and the energy and residual of each
+// result from the plain reference code (docs/measurements/2026-11-26-steady-nested-iteration.md).
+//
+//   MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] case:W ...
+//   (case thorax|runoff|aorta; a in mm^-2, default 1/9: J = 3 mm)
+#include "PlainBilateralDepthRelax.h"
+#include "vrBenchmarkScene.h"
+#include "vrCenterlineIO.h"
+#include "vrVolumeIO.h"
+
+#include "itkBilateralDepthRelaxSteadySolver.h"
+#include "itkCTAPhantom.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Solver = itk::BilateralDepthRelaxSteadySolver;
+double Anisotropy = 1.0 / 9.0; // J = 3 mm, the filter's default; --anisotropy a to change
+
+struct Map
+{
+  std::vector<float>         Depth;
+  std::vector<unsigned char> Fixed;
+  unsigned int               Width;
+  unsigned int               Height;
+};
+
+Map
+MapOf(const vr::test::PhantomDepthMap & map, unsigned int width, unsigned int height)
+{
+  return { vr::test::PixelsOf(map.Depth.GetPointer()), vr::test::PixelsOf(map.Fixed.GetPointer()), width, height };
+}
+
+Map
+MakeMap(const std::string & name, unsigned int width)
+{
+  const unsigned int height = 2 * width;
+  if (name == "thorax")
+  {
+    return MapOf(vr::benchmarks::ThoraxDepthMap(width, height), width, height);
+  }
+  if (name == "runoff")
+  {
+    return MapOf(vr::benchmarks::PhantomScene::Instance().GetDepthMap(width, height), width, height);
+  }
+  if (name == "aorta")
+  {
+    return MapOf(vr::benchmarks::AortaDepthMap(width, height), width, height);
+  }
+  throw std::invalid_argument("unknown case " + name + " (thorax, runoff or aorta)");
+}
+
+struct Run
+{
+  Solver::Report      Report;
+  double              Milliseconds;
+  std::vector<double> Relaxed;
+};
+
+Run
+SolveOnce(const Map & map, bool nested, unsigned int threads, Solver::Workspace & workspace)
+{
+  std::vector<float> relaxed(map.Depth.size());
+  Solver::Settings   settings = Solver::DefaultSettings();
+  settings.NestedIteration = nested;
+  settings.MaximumOuterIterations = 1000;
+  const auto   start = std::chrono::steady_clock::now();
+  const auto   report = Solver::Solve(map.Depth.data(),
+                                    map.Fixed.data(),
+                                    relaxed.data(),
+                                    map.Width,
+                                    map.Height,
+                                    Anisotropy,
+                                    Solver::DefaultTolerance,
+                                    threads,
+                                    {},
+                                    &workspace,
+                                    settings);
+  const double milliseconds =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return { report, milliseconds, std::vector<double>(relaxed.begin(), relaxed.end()) };
+}
+
+double
+Median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+} // namespace
+
+int
+main(int argc, char * argv[])
+{
+  try
+  {
+    unsigned int             repeat = 5;
+    unsigned int             threads = 2;
+    std::string              only;
+    std::vector<std::string> cases;
+    for (int k = 1; k < argc; ++k)
+    {
+      const std::string argument = argv[k];
+      if (argument == "--repeat" && k + 1 < argc)
+      {
+        repeat = static_cast<unsigned int>(std::stoul(argv[++k]));
+      }
+      else if (argument == "--threads" && k + 1 < argc)
+      {
+        threads = static_cast<unsigned int>(std::stoul(argv[++k]));
+      }
+      else if (argument == "--anisotropy" && k + 1 < argc)
+      {
+        Anisotropy = std::stod(argv[++k]);
+      }
+      else if (argument == "--only" && k + 1 < argc)
+      {
+        only = argv[++k];
+      }
+      else
+      {
+        cases.push_back(argument);
+      }
+    }
+    std::cout
+      << "| case | W x H | start | median ms (n) | fine outer | coarse outer | grids | V-cycles | energy mm^2 | "
+         "plain residual mm |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
+      << std::endl;
+    for (const std::string & item : cases)
+    {
+      const auto          colon = item.find(':');
+      const std::string   name = item.substr(0, colon);
+      const unsigned int  width = static_cast<unsigned int>(std::stoul(item.substr(colon + 1)));
+      const Map           map = MakeMap(name, width);
+      Solver::Workspace   input, nested;
+      std::vector<double> times[2];
+      Run                 last[2];
+      for (unsigned int r = 0; r < repeat; ++r)
+      {
+        for (int n = 0; n < 2; ++n)
+        {
+          if ((only == "nested" && n == 0) || (only == "input" && n == 1))
+          {
+            continue;
+          }
+          last[n] = SolveOnce(map, n == 1, threads, n == 1 ? nested : input);
+          times[n].push_back(last[n].Milliseconds);
+        }
+      }
+      for (int n = 0; n < 2; ++n)
+      {
+        if (times[n].empty())
+        {
+          continue;
+        }
+        const Run & run = last[n];
+        std::cout << "| " << name << " | " << map.Width << " x " << map.Height << " | " << (n ? "nested" : "input")
+                  << " | " << std::fixed << std::setprecision(1) << Median(times[n]) << " (" << times[n].size()
+                  << ") | " << run.Report.OuterIterations << " | " << run.Report.CoarseOuterIterations << " | "
+                  << run.Report.Grids << " | " << run.Report.Cycles << " | " << std::setprecision(6)
+                  << vr::test::PlainRelaxEnergy(run.Relaxed, map.Width, map.Height, Anisotropy) << " | "
+                  << std::scientific << std::setprecision(2)
+                  << vr::test::PlainFixedPointResidual(run.Relaxed, map.Fixed, map.Width, map.Height, Anisotropy)
+                  << std::defaultfloat << (run.Report.Converged ? "" : " (stopped)") << " |" << std::endl;
+      }
+    }
+    return EXIT_SUCCESS;
+  }
+  catch (const std::exception & error)
+  {
+    std::cerr << "error: " << error.what() << std::endl;
+  }
+  return EXIT_FAILURE;
+}
