@@ -17,6 +17,9 @@
 #       cmake --build build --target itkOpenCLBilateralDepthRelaxFilterGTest vrOpenCLDevicesGTest \
 #         vrRelaxBackendOpenCLGTest VesselReformationBenchmarks VesselReformationDemo VesselReformation
 #
+# The default benchmark filter takes Relax_CPU/512/1024/threads:N (N = 1, 2, 4, 8, 16) too: the CPU relax's scaling
+# with the cores in the same run (benchmark_table.py checks 16 threads against 2 where there are 16 cores).
+#
 # Settings (environment): VR_REPORT_MIN_TIME (seconds per benchmark repetition, default 0.2),
 # VR_REPORT_BENCHMARKS (the benchmark filter), VR_REPORT_STEP_TIMEOUT (seconds before a step is stopped, default 300).
 # python3, where there is one, compares the backends' relaxed depth maps; without it the report says so.

@@ -43,8 +43,9 @@ namespace itk
  * vectorised exponential, a team of GetNumberOfWorkUnits() threads at most as many as the multi-threader's);
  * other pixel types by a plain loop in double (Jacobi) or through a float copy (Steady).
  *
- * AbortGenerateData() is honoured after every iteration (Jacobi) or outer iteration (Steady): the update ends with
- * itk::ProcessAborted.
+ * AbortGenerateData() is honoured after every iteration (Jacobi; the threads stop together at the end of their
+ * current block of PassesBetweenSynchronizations passes, within about one pass of work) or outer iteration
+ * (Steady): the update ends with itk::ProcessAborted.
  *
  * Bad parameters or inputs (w outside [0, 1], a < 0, J <= 0, a non-finite parameter, a mask of another size, a
  * non-finite depth) raise an itk::ExceptionObject naming the parameter and its value.
@@ -98,6 +99,15 @@ public:
   /** Number of Jacobi iterations N >= 0 (Jacobi only). */
   itkSetMacro(NumberOfIterations, unsigned int);
   itkGetConstMacro(NumberOfIterations, unsigned int);
+
+  /** Jacobi passes each thread makes on its band of rows before the threads synchronize (temporal blocking,
+   * docs/design.md 3.5): the rows next to the neighbours' bands are computed again rather than exchanged after
+   * every pass. It changes the speed only, never a bit of the result. 0 (the default) leaves the choice to the
+   * kernel (BilateralDepthRelaxKernel::ChoosePassesBetweenSynchronizations: 1 for teams of up to 4 threads, blocks
+   * for larger teams); 1 synchronizes after every pass with the plain row sweep. Float images only (the generic
+   * loop meets after every pass). */
+  itkSetMacro(PassesBetweenSynchronizations, unsigned int);
+  itkGetConstMacro(PassesBetweenSynchronizations, unsigned int);
 
   /** Jacobi (the paper's, the default) or Steady. */
   itkSetEnumMacro(Solver, BilateralDepthRelaxSolver);
@@ -165,7 +175,7 @@ protected:
   GenerateData() override;
 
   /** Throws itk::ProcessAborted when AbortGenerateData is on (checked after every iteration, so an abort takes
-   * effect within one pass). */
+   * effect within about one pass). */
   void
   ThrowIfAborted(unsigned int completedIterations) const;
 
@@ -198,11 +208,12 @@ private:
   void
   RelaxOnHostSteady();
 
-  double                    m_Relaxation{ 1.0 };
-  double                    m_JumpThreshold{ DefaultJumpThreshold };
-  double                    m_Anisotropy{ 1.0 / (DefaultJumpThreshold * DefaultJumpThreshold) };
-  bool                      m_JumpThresholdWasSet{ true }; // which of J and a the user set last, for messages
-  unsigned int              m_NumberOfIterations{ 500 };
+  double       m_Relaxation{ 1.0 };
+  double       m_JumpThreshold{ DefaultJumpThreshold };
+  double       m_Anisotropy{ 1.0 / (DefaultJumpThreshold * DefaultJumpThreshold) };
+  bool         m_JumpThresholdWasSet{ true }; // which of J and a the user set last, for messages
+  unsigned int m_NumberOfIterations{ 500 };
+  unsigned int m_PassesBetweenSynchronizations{ BilateralDepthRelaxKernel::AutomaticPassesBetweenSynchronizations };
   BilateralDepthRelaxSolver m_Solver{ BilateralDepthRelaxSolver::Jacobi };
   double                    m_SteadyTolerance{ BilateralDepthRelaxSteadySolver::DefaultTolerance };
   unsigned int m_SteadyMaximumOuterIterations{ BilateralDepthRelaxSteadySolver::DefaultMaximumOuterIterations };

@@ -230,7 +230,8 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHostFast()
       this->UpdateProgress(static_cast<float>(done) / iterations);
       this->ThrowIfAborted(done);
     },
-    &m_KernelWorkspace);
+    &m_KernelWorkspace,
+    m_PassesBetweenSynchronizations);
 }
 
 template<typename TImage, typename TMaskImage>
@@ -407,6 +408,8 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::PrintSelf(std::ostream & os, Inde
   os << indent << "JumpThresholdWasSet: " << (m_JumpThresholdWasSet ? "yes (J set last)" : "no (a set last)")
      << std::endl;
   os << indent << "NumberOfIterations (N): " << m_NumberOfIterations << std::endl;
+  os << indent << "PassesBetweenSynchronizations: " << m_PassesBetweenSynchronizations
+     << (m_PassesBetweenSynchronizations == 0 ? " (chosen by the kernel)" : "") << std::endl;
   os << indent << "Solver: " << m_Solver << std::endl;
   os << indent << "SteadyTolerance (mm): " << m_SteadyTolerance << std::endl;
   os << indent << "SteadyMaximumOuterIterations: " << m_SteadyMaximumOuterIterations << std::endl;

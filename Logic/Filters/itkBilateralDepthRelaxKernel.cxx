@@ -26,14 +26,15 @@ namespace
 {
 using detail::BilateralDepthRelaxRows::RelaxGrid;
 using detail::BilateralDepthRelaxRows::RowAlignment;
+using detail::BilateralDepthRelaxRows::RowKernels;
 using detail::BilateralDepthRelaxRows::RowScratch;
 using detail::BilateralDepthRelaxRows::SweepFunction;
 
-/** The row sweep for one instruction set, and its name. */
+/** The row kernels for one instruction set, and its name. */
 struct RowSweep
 {
-  SweepFunction Sweep;
-  const char *  InstructionSet;
+  const RowKernels * Kernels;
+  const char *       InstructionSet;
 };
 
 #if defined(VR_RELAX_RUNTIME_DISPATCH)
@@ -62,14 +63,14 @@ FindRowSweeps()
   std::vector<RowSweep> sweeps;
   if (SupportsLevel(4))
   {
-    sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepAVX512, "AVX-512" });
+    sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsAVX512, "AVX-512" });
   }
   if (SupportsLevel(3))
   {
-    sweeps.push_back({ detail::BilateralDepthRelaxRows::SweepAVX2, "AVX2+FMA" });
+    sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsAVX2, "AVX2+FMA" });
   }
   sweeps.push_back(
-    { detail::BilateralDepthRelaxRows::SweepBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet });
+    { &detail::BilateralDepthRelaxRows::KernelsBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet });
   return sweeps;
 }
 #else
@@ -77,7 +78,7 @@ FindRowSweeps()
 std::vector<RowSweep>
 FindRowSweeps()
 {
-  return { { detail::BilateralDepthRelaxRows::SweepBaseline,
+  return { { &detail::BilateralDepthRelaxRows::KernelsBaseline,
              detail::BilateralDepthRelaxRows::BaselineInstructionSet } };
 }
 #endif
@@ -192,6 +193,150 @@ private:
   std::unique_ptr<AlignedBuffer<float>> m_Buffer;
   std::size_t                           m_Capacity{ 0 };
 };
+
+/** Input rows a pass of a block keeps for the next: rows y and y + 1 are read while row y + 2 is written. */
+constexpr std::size_t RingRows = 3;
+
+/** One team member's buffers for blocks of passes (temporal blocking): for each pass of a block its row edges,
+ * and for each pass but the last a ring of the rows it has relaxed, which the next pass reads. */
+class MemberScratch
+{
+public:
+  explicit MemberScratch(std::size_t stride)
+    : m_Stride(stride)
+  {
+  }
+
+  /** Buffers for blocks of up to \a passes passes. */
+  void
+  Reserve(unsigned int passes)
+  {
+    while (m_Passes.size() < passes)
+    {
+      m_Passes.push_back(std::make_unique<ThreadScratch>(m_Stride));
+    }
+    if (passes > 1 && passes - 1 > m_RingPasses)
+    {
+      // The right neighbour of the last vector of the last ring row reads one vector past it.
+      m_Ring.reset();
+      m_Ring = std::make_unique<AlignedBuffer<float>>((passes - 1) * RingRows * 2 * m_Stride + RowAlignment);
+      m_RingPasses = passes - 1;
+    }
+    NextRow.resize(std::max<std::size_t>(NextRow.size(), passes));
+    Started.resize(std::max<std::size_t>(Started.size(), passes));
+  }
+
+  /** The edges of pass \a pass (0-based) of a block. */
+  RowScratch &
+  Rows(unsigned int pass)
+  {
+    return m_Passes[pass]->Rows();
+  }
+
+  /** Where pass \a pass (0-based, not a block's last) keeps row \a y for the next pass. */
+  float *
+  RingRow(unsigned int pass, std::size_t y)
+  {
+    return m_Ring->Get() + (pass * RingRows + y % RingRows) * 2 * m_Stride;
+  }
+
+  /** Per pass of the block being run: the next row to relax, and whether its edges above were set up. */
+  std::vector<std::size_t> NextRow;
+  std::vector<char>        Started;
+
+private:
+  std::size_t                                 m_Stride;
+  std::vector<std::unique_ptr<ThreadScratch>> m_Passes;
+  std::unique_ptr<AlignedBuffer<float>>       m_Ring;
+  std::size_t                                 m_RingPasses{ 0 };
+};
+
+/** Runs \a passes Jacobi passes (>= 2) of one team member without meeting the others (temporal blocking): from
+ * \a current (the whole image, all rows valid) into rows [rowBegin, rowEnd) of \a next. Pass j (1-based) of the
+ * block relaxes the band widened by passes - j rows on each side (clipped to the image), so the last pass has
+ * every input it reads; the rows shared with the neighbours' bands are computed again here rather than
+ * exchanged. The passes run as a wavefront down the band: pass j relaxes row y as soon as pass j - 1 has row
+ * y + 1, so the rows between passes stay in small rings in the cache. Every row is relaxed by the same row kernel
+ * from the same input values as in a pass over the whole image, so every bit is the same. Calls \a passDone(j)
+ * when pass j has relaxed its last row; returns early, leaving \a next unfinished, once \a stopped() is true. */
+template<typename TPassDone, typename TStopped>
+void
+RelaxBlock(const RowKernels & kernels,
+           const RelaxGrid &  grid,
+           const float *      current,
+           float *            next,
+           std::size_t        rowBegin,
+           std::size_t        rowEnd,
+           unsigned int       passes,
+           MemberScratch &    scratch,
+           TPassDone &&       passDone,
+           TStopped &&        stopped)
+{
+  const std::size_t height = grid.Height;
+  const std::size_t stride = grid.Stride;
+  // Pass p (0-based) relaxes rows [first(p), end(p)).
+  auto first = [&](unsigned int p) { return rowBegin - std::min<std::size_t>(rowBegin, passes - 1 - p); };
+  auto end = [&](unsigned int p) { return std::min(height, rowEnd + (passes - 1 - p)); };
+  auto input = [&](unsigned int p, std::size_t y) -> const float *
+  { return p == 0 ? current + 2 * y * stride : scratch.RingRow(p - 1, y); };
+  auto output = [&](unsigned int p, std::size_t y) -> float *
+  { return p + 1 == passes ? next + 2 * y * stride : scratch.RingRow(p, y); };
+  // The first row of its ring that pass p still reads (the row above its first, to set up its edges).
+  auto oldestNeeded = [&](unsigned int p)
+  {
+    const std::size_t y = scratch.NextRow[p];
+    return scratch.Started[p] || y == 0 ? y : y - 1;
+  };
+  for (unsigned int p = 0; p < passes; ++p)
+  {
+    scratch.NextRow[p] = first(p);
+    scratch.Started[p] = 0;
+  }
+  while (scratch.NextRow[passes - 1] < rowEnd)
+  {
+    if (stopped())
+    {
+      return;
+    }
+    // Each round relaxes a row of at least one pass (the rings are wide enough); one that could not would hang.
+    bool relaxedARow = false;
+    for (unsigned int p = 0; p < passes; ++p)
+    {
+      const std::size_t y = scratch.NextRow[p];
+      if (y == end(p))
+      {
+        continue;
+      }
+      // Its input: the previous pass must have relaxed rows y and y + 1.
+      if (p > 0 && scratch.NextRow[p - 1] <= std::min(y + 1, height - 1))
+      {
+        continue;
+      }
+      // Its ring: row y replaces row y - RingRows, which the next pass must no longer need.
+      if (p + 1 < passes && scratch.NextRow[p + 1] < end(p + 1) && y >= oldestNeeded(p + 1) + RingRows)
+      {
+        continue;
+      }
+      RowScratch & rows = scratch.Rows(p);
+      if (!scratch.Started[p])
+      {
+        kernels.Start(grid, y > 0 ? input(p, y - 1) : nullptr, input(p, y), y, rows);
+        scratch.Started[p] = 1;
+      }
+      kernels.Row(grid, input(p, y), y + 1 < height ? input(p, y + 1) : nullptr, y, output(p, y), rows);
+      scratch.NextRow[p] = y + 1;
+      relaxedARow = true;
+      if (y + 1 == end(p))
+      {
+        passDone(p + 1);
+      }
+    }
+    if (!relaxedARow)
+    {
+      throw std::logic_error("BilateralDepthRelaxKernel: a block of passes stalled (a row's input was never made)");
+    }
+  }
+}
 } // namespace
 
 /** The depth pairs (ping-pong), the self weights and each team member's row buffers. */
@@ -200,12 +345,12 @@ struct BilateralDepthRelaxKernel::Workspace::Buffers
   ReusableBuffer                              First;
   ReusableBuffer                              Second;
   ReusableBuffer                              SelfWeight;
-  std::vector<std::unique_ptr<ThreadScratch>> Scratch;
+  std::vector<std::unique_ptr<MemberScratch>> Scratch;
   std::size_t                                 ScratchStride{ 0 };
 
-  /** Row buffers for \a team members on rows of \a stride floats. */
-  std::vector<std::unique_ptr<ThreadScratch>> &
-  ReserveScratch(unsigned int team, std::size_t stride)
+  /** Row buffers for \a team members on rows of \a stride floats, for blocks of up to \a passes passes. */
+  std::vector<std::unique_ptr<MemberScratch>> &
+  ReserveScratch(unsigned int team, std::size_t stride, unsigned int passes)
   {
     if (stride != ScratchStride)
     {
@@ -214,7 +359,11 @@ struct BilateralDepthRelaxKernel::Workspace::Buffers
     }
     while (Scratch.size() < team)
     {
-      Scratch.push_back(std::make_unique<ThreadScratch>(stride));
+      Scratch.push_back(std::make_unique<MemberScratch>(stride));
+    }
+    for (unsigned int member = 0; member < team; ++member)
+    {
+      Scratch[member]->Reserve(passes);
     }
     return Scratch;
   }
@@ -238,7 +387,8 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
                                  unsigned int             iterations,
                                  unsigned int             threads,
                                  const ProgressCallback & progress,
-                                 Workspace *              workspace)
+                                 Workspace *              workspace,
+                                 unsigned int             passesBetweenSynchronizations)
 {
   const std::size_t count = width * height;
   if (count == 0)
@@ -324,20 +474,27 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
   };
 
   const unsigned int team = static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, height)));
-  auto &             scratch = buffers.ReserveScratch(team, grid.Stride);
+  const unsigned int blockPasses =
+    std::min(iterations,
+             passesBetweenSynchronizations > 0 ? passesBetweenSynchronizations
+                                               : ChoosePassesBetweenSynchronizations(height, team));
+  auto & scratch = buffers.ReserveScratch(team, grid.Stride, blockPasses);
 
-  // Each member sweeps a fixed band of rows; after the barrier every member sees the whole new image. Member 0
-  // is the calling thread and reports progress; a progress callback that throws stops every member after the
-  // same barrier. The iteration after whose barrier the team stops is set by member 0 while others may still
-  // be leaving the previous barrier, so each member compares it with the iteration it has just finished.
   detail::ThreadTeamBarrier barrier(team);
-  std::atomic<unsigned int> stopAfterIteration{ iterations };
   std::exception_ptr        failure;
-  auto                      work = [&](unsigned int member)
+  // The pass (one pass a block) or the first pass of the block (blocks) after whose barrier the team stops; set by
+  // member 0 while others may still be leaving the previous barrier, so each member compares it with its own.
+  std::atomic<unsigned int> stopAfter{ iterations };
+
+  // One pass a block: each member sweeps a fixed band of rows; after the barrier every member sees the whole new
+  // image. Member 0 is the calling thread and reports progress; a progress callback that throws stops every
+  // member after the same barrier. The code of the kernel before blocks, kept as it was for small teams (2 cores:
+  // the blocked path's row-by-row wavefront costs more per row than it saves in barriers, docs/design.md 3.5).
+  auto sweepEveryPass = [&](unsigned int member)
   {
     const std::size_t   rowBegin = height * member / team;
     const std::size_t   rowEnd = height * (member + 1) / team;
-    const SweepFunction sweep = TheRowSweep().Sweep;
+    const SweepFunction sweep = TheRowSweep().Kernels->Sweep;
     float *             current = first;
     float *             next = second;
     // Every member prepares its own rows; the first sweep reads its neighbours' too.
@@ -345,7 +502,7 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
     barrier.Wait();
     for (unsigned int iteration = 0; iteration < iterations; ++iteration)
     {
-      sweep(grid, current, next, rowBegin, rowEnd, scratch[member]->Rows());
+      sweep(grid, current, next, rowBegin, rowEnd, scratch[member]->Rows(0));
       if (member == 0 && progress && iteration > 0)
       {
         try
@@ -355,11 +512,11 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
         catch (...)
         {
           failure = std::current_exception();
-          stopAfterIteration.store(iteration, std::memory_order_relaxed);
+          stopAfter.store(iteration, std::memory_order_relaxed);
         }
       }
       barrier.Wait();
-      if (stopAfterIteration.load(std::memory_order_relaxed) <= iteration)
+      if (stopAfter.load(std::memory_order_relaxed) <= iteration)
       {
         return;
       }
@@ -367,6 +524,74 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
     }
     // After the last barrier nobody reads the input any more, so \a relaxed may be \a depth.
     writeRows(current, rowBegin, rowEnd);
+  };
+
+  // Blocks of blockPasses passes (temporal blocking, RelaxBlock()): after the barrier that ends a block every
+  // member sees the whole image those passes made. Member 0 reports progress after each of its passes; a progress
+  // callback that throws stops every member at the barrier ending the same block, within about one pass of work.
+  auto relaxInBlocks = [&](unsigned int member)
+  {
+    const std::size_t  rowBegin = height * member / team;
+    const std::size_t  rowEnd = height * (member + 1) / team;
+    const RowKernels & kernels = *TheRowSweep().Kernels;
+    MemberScratch &    mine = *scratch[member];
+    float *            current = first;
+    float *            next = second;
+    // Every member prepares its own rows; the first pass reads its neighbours' too.
+    initialiseRows(rowBegin, rowEnd);
+    barrier.Wait();
+    for (unsigned int done = 0; done < iterations;)
+    {
+      const unsigned int passes = std::min(blockPasses, iterations - done);
+      auto               stopped = [&] { return stopAfter.load(std::memory_order_relaxed) <= done; };
+      // As with one pass a block: pass k (0-based) done by member 0 reports k, the passes the whole team has done.
+      auto passDone = [&](unsigned int pass)
+      {
+        const unsigned int reported = done + pass - 1;
+        if (member != 0 || !progress || reported == 0 || stopped())
+        {
+          return;
+        }
+        try
+        {
+          progress(reported);
+        }
+        catch (...)
+        {
+          failure = std::current_exception();
+          stopAfter.store(done, std::memory_order_relaxed);
+        }
+      };
+      if (passes == 1)
+      {
+        kernels.Sweep(grid, current, next, rowBegin, rowEnd, mine.Rows(0));
+        passDone(1);
+      }
+      else
+      {
+        RelaxBlock(kernels, grid, current, next, rowBegin, rowEnd, passes, mine, passDone, stopped);
+      }
+      barrier.Wait();
+      if (stopped())
+      {
+        return;
+      }
+      std::swap(current, next);
+      done += passes;
+    }
+    writeRows(current, rowBegin, rowEnd);
+  };
+
+  auto work = [&](unsigned int member)
+  {
+    if (blockPasses == 1)
+    {
+      sweepEveryPass(member);
+    }
+    else
+    {
+      relaxInBlocks(member);
+    }
   };
 
   // Helpers wait for the word to start, so that a helper the system refuses to create leaves nobody waiting.
@@ -396,7 +621,18 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
       helper.join();
     }
     // The result does not depend on the team size: do it all on this thread.
-    Relax(depth, fixed, relaxed, width, height, relaxation, anisotropy, iterations, 1, progress, workspace);
+    Relax(depth,
+          fixed,
+          relaxed,
+          width,
+          height,
+          relaxation,
+          anisotropy,
+          iterations,
+          1,
+          progress,
+          workspace,
+          passesBetweenSynchronizations);
     return;
   }
   start.set_value(true);
@@ -413,6 +649,20 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
   {
     progress(iterations);
   }
+}
+
+unsigned int
+BilateralDepthRelaxKernel::ChoosePassesBetweenSynchronizations(std::size_t height, unsigned int team)
+{
+  if (team <= LargestTeamWithoutBlocks)
+  {
+    return 1;
+  }
+  // A block of k passes relaxes about k + 1 rows per pass more than the band (the widened rows and the row above
+  // each pass's first), so k = band / 16 keeps that below about 7 %, while cutting the barriers (and the passes over
+  // the whole image in memory) k-fold; at most 16.
+  const std::size_t band = height / team;
+  return static_cast<unsigned int>(std::clamp<std::size_t>(band / 16, 1, 16));
 }
 
 bool

@@ -28,7 +28,9 @@ namespace itk
  * exponentials per pixel, a polynomial 2^x on whole vectors, relative error below 3e-7); one pass per row
  * computes both new edges of each pixel and its update, with no branch per pixel (image borders are edges of
  * weight 0, fixed pixels have an infinite self weight); rows are padded to whole vectors; a team of threads,
- * created once per call, sweeps fixed bands of rows and meets at a barrier after each iteration; nothing is
+ * created once per call, relaxes fixed bands of rows and meets at a barrier only after every block of several
+ * passes (temporal blocking: each thread computes again the rows near its neighbours' bands that its last pass of
+ * the block needs, running the block's passes as a wavefront down its band; docs/design.md); nothing is
  * allocated inside the iteration loop. Depths are held as pairs of floats, high + low, between iterations (a
  * single float cannot take the small late steps of a 70 mm depth); differences, weights and steps are floats.
  * Depths are held multiplied by sqrt(a log2 e), so that R = 2^-(x^2) for a difference x of held values.
@@ -38,8 +40,9 @@ namespace itk
  * option VR_RELAX_RUNTIME_DISPATCH, on by default). With the option off the compiler flags decide (e.g.
  * -march=native).
  *
- * Every pixel is computed by the same instructions whatever thread runs its row, so the result is bit-identical
- * for any number of threads with a given instruction set.
+ * Every pixel is computed by the same instructions from the same input values whatever thread runs its row and
+ * whatever the block, so the result is bit-identical for any number of threads and any passes between
+ * synchronizations with a given instruction set.
  *
  * \sa BilateralDepthRelaxFilter, ThreadTeamBarrier
  * \ingroup VesselReformation
@@ -48,12 +51,13 @@ class BilateralDepthRelaxKernel
 {
 public:
   /** Called by the calling thread after each completed iteration with the number of iterations done; may throw
-   * (for instance to abort), which stops the team after the current iteration and is rethrown by Relax(). */
+   * (for instance to abort), which stops the team at the end of the current block of passes (no further call) and
+   * is rethrown by Relax(). */
   using ProgressCallback = std::function<void(unsigned int completedIterations)>;
 
   /** Memory Relax() can keep from one call to the next: the depth buffers (about 20 bytes per pixel) and each
-   * thread's row buffers. Reusing one spares allocating and first touching them on every call (a few ms at
-   * 512 x 1024). One call at a time per workspace. */
+   * thread's row buffers (a few rows per pass of a block). Reusing one spares allocating and first touching them on
+   * every call (a few ms at 512 x 1024). One call at a time per workspace. */
   class Workspace
   {
   public:
@@ -73,7 +77,10 @@ public:
    * \a relaxed (same layout; may be the same buffer as \a depth). \a fixed (row-major, non-zero = fixed) may be
    * null. \a relaxation is w in [0, 1], \a anisotropy a >= 0 in mm^-2; the caller checks both. \a threads
    * (>= 1) is the size of the team; it never exceeds the number of rows. \a workspace (may be null) keeps the
-   * buffers for the next call. */
+   * buffers for the next call. \a passesBetweenSynchronizations is how many passes each thread makes on its band
+   * before the team meets (AutomaticPassesBetweenSynchronizations: the kernel's choice from the band height); it
+   * changes the speed only. \a progress is called after every pass, in order; one that throws stops the team at
+   * the end of its current block. */
   static void
   Relax(const float *            depth,
         const unsigned char *    fixed,
@@ -85,7 +92,22 @@ public:
         unsigned int             iterations,
         unsigned int             threads,
         const ProgressCallback & progress = ProgressCallback(),
-        Workspace *              workspace = nullptr);
+        Workspace *              workspace = nullptr,
+        unsigned int             passesBetweenSynchronizations = AutomaticPassesBetweenSynchronizations);
+
+  /** Relax()'s passesBetweenSynchronizations that leaves the choice to the kernel
+   * (ChoosePassesBetweenSynchronizations). */
+  static constexpr unsigned int AutomaticPassesBetweenSynchronizations = 0;
+
+  /** The largest team that meets after every pass when the choice is the kernel's. */
+  static constexpr unsigned int LargestTeamWithoutBlocks = 4;
+
+  /** The kernel's choice of passes between synchronizations for a team of \a team threads on \a height rows
+   * (docs/design.md 3.5): 1 (a barrier after every pass, the plain row sweep) for teams of up to
+   * LargestTeamWithoutBlocks, where the blocked row-by-row wavefront costs more than the barriers it saves (measured
+   * on 2 cores); for larger teams the band height / 16, between 1 and 16. */
+  static unsigned int
+  ChoosePassesBetweenSynchronizations(std::size_t height, unsigned int team);
 
   /** Depths, multiplied by sqrt(a log2 e) when that exceeds 1, of larger magnitude (mm) could overflow a float
    * difference or flux; Relax() is only for maps within this range (any scanner's field of view is a million

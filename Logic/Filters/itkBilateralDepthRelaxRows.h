@@ -6,8 +6,8 @@
 
 namespace itk
 {
-/** The row sweep of BilateralDepthRelaxKernel, one Jacobi iteration over a band of rows, compiled once per
- * instruction set in its own translation unit (itkBilateralDepthRelaxRows*.cxx, from
+/** The row kernels of BilateralDepthRelaxKernel (one Jacobi iteration over a band of rows, or row by row), compiled
+ * once per instruction set in its own translation unit (itkBilateralDepthRelaxRows*.cxx, from
  * itkBilateralDepthRelaxRows.hxx). Internal to the kernel. */
 namespace detail::BilateralDepthRelaxRows
 {
@@ -51,31 +51,33 @@ struct RowScratch
 /** Rows [rowBegin, rowEnd) of one Jacobi iteration from \a current into \a next (whole padded images). */
 using SweepFunction = void (*)(const RelaxGrid &, const float *, float *, std::size_t, std::size_t, RowScratch &);
 
+/** Starts a run of single rows (RowFunction) at row \a first of one Jacobi iteration: clears the edges above it at
+ * the image's top, or computes them by relaxing row first - 1 (\a above, the iteration's input) into
+ * scratch.DiscardedRow, exactly as a sweep starting there does. \a row is the input's row \a first. */
+using StartFunction =
+  void (*)(const RelaxGrid &, const float * above, const float * row, std::size_t first, RowScratch &);
+
+/** Relaxes row \a y of one Jacobi iteration from its input (\a row and \a below, null for the image's last row;
+ * each a padded high row followed by its low row) into \a out, using the edges above from \a scratch and leaving
+ * there the edges below for row y + 1. The same operations as a sweep, so the same bits. */
+using RowFunction =
+  void (*)(const RelaxGrid &, const float * row, const float * below, std::size_t y, float * out, RowScratch &);
+
+/** The row kernels of one instruction set. */
+struct RowKernels
+{
+  SweepFunction Sweep;
+  StartFunction Start;
+  RowFunction   Row;
+};
+
 /** 16 float lanes; only in builds with runtime dispatch, and only for processors with AVX-512 (x86-64-v4). */
-void
-SweepAVX512(const RelaxGrid & grid,
-            const float *     current,
-            float *           next,
-            std::size_t       rowBegin,
-            std::size_t       rowEnd,
-            RowScratch &      scratch);
+extern const RowKernels KernelsAVX512;
 /** 8 float lanes; only in builds with runtime dispatch, and only for processors with AVX2 and FMA (x86-64-v3). */
-void
-SweepAVX2(const RelaxGrid & grid,
-          const float *     current,
-          float *           next,
-          std::size_t       rowBegin,
-          std::size_t       rowEnd,
-          RowScratch &      scratch);
+extern const RowKernels KernelsAVX2;
 /** The build's own target: 4 lanes for baseline x86-64, or as wide as the compiler flags allow. */
-void
-SweepBaseline(const RelaxGrid & grid,
-              const float *     current,
-              float *           next,
-              std::size_t       rowBegin,
-              std::size_t       rowEnd,
-              RowScratch &      scratch);
-/** The instruction set SweepBaseline was compiled for, e.g. "x86-64". */
+extern const RowKernels KernelsBaseline;
+/** The instruction set KernelsBaseline was compiled for, e.g. "x86-64". */
 extern const char * const BaselineInstructionSet;
 } // namespace detail::BilateralDepthRelaxRows
 } // namespace itk

@@ -328,20 +328,22 @@ VR_ALWAYS_INLINE std::size_t
   return (grid.Width - 1) / V::Lanes * V::Lanes;
 }
 
-/** One Jacobi step of row y into \a out; leaves the edges below the row in scratch.Down*. */
+/** One Jacobi step of row y (input rows \a row and \a below) into \a out; leaves the edges below the row in
+ * scratch.Down*. The blocked passes' rows live in rings, so the two rows are given apart. */
 template<typename V, bool HasRowBelow, typename TWeight>
 VR_ALWAYS_INLINE void
-RelaxRow(const RelaxGrid &  grid,
-         const TWeight &    weight,
-         typename V::Float  lastVectorRightEdges,
-         const float *      current,
-         std::size_t        y,
-         float *            out,
-         const RowScratch & scratch)
+RelaxRowFrom(const RelaxGrid &  grid,
+             const TWeight &    weight,
+             typename V::Float  lastVectorRightEdges,
+             const float *      row,
+             const float *      below,
+             std::size_t        y,
+             float *            out,
+             const RowScratch & scratch)
 {
   const std::size_t stride = grid.Stride;
-  const RowPointers rows{ current + 2 * y * stride,
-                          current + 2 * (y + 1) * stride,
+  const RowPointers rows{ row,
+                          below,
                           stride,
                           grid.SelfWeight + y * stride,
                           scratch.UpWeight,
@@ -358,6 +360,28 @@ RelaxRow(const RelaxGrid &  grid,
     RelaxVector<V, HasRowBelow, false>(weight, rows, lastVectorRightEdges, x, leftWeight, leftFlux);
   }
   RelaxVector<V, HasRowBelow, true>(weight, rows, lastVectorRightEdges, lastVector, leftWeight, leftFlux);
+}
+
+/** One Jacobi step of row y of \a current (the whole padded image) into \a out; leaves the edges below the row in
+ * scratch.Down*. */
+template<typename V, bool HasRowBelow, typename TWeight>
+VR_ALWAYS_INLINE void
+RelaxRow(const RelaxGrid &  grid,
+         const TWeight &    weight,
+         typename V::Float  lastVectorRightEdges,
+         const float *      current,
+         std::size_t        y,
+         float *            out,
+         const RowScratch & scratch)
+{
+  RelaxRowFrom<V, HasRowBelow>(grid,
+                               weight,
+                               lastVectorRightEdges,
+                               current + 2 * y * grid.Stride,
+                               current + 2 * (y + 1) * grid.Stride,
+                               y,
+                               out,
+                               scratch);
 }
 
 /** One Jacobi step of rows y and y + 1 into \a out (two padded rows); uses the edges above row y from
@@ -486,6 +510,102 @@ SweepRowsWith(const RelaxGrid & grid,
   else
   {
     SweepRows<V, RangeWeight<V>>(grid, current, next, rowBegin, rowEnd, scratch);
+  }
+}
+
+// Blocks of passes (temporal blocking, itkBilateralDepthRelaxKernel.cxx) relax single rows held anywhere; one
+// pass a block uses SweepRows above.
+
+/** 1 in the lanes of a row's last vector whose column has a right neighbour, 0 elsewhere. */
+template<typename V>
+VR_ALWAYS_INLINE typename V::Float
+LastVectorRightEdges(const RelaxGrid & grid)
+{
+  typename V::Float edges;
+  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
+  {
+    // Only columns left of the last one have a right neighbour.
+    edges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
+  }
+  return edges;
+}
+
+/** The image's first row has no edges above it: weight and flux 0. */
+VR_ALWAYS_INLINE void
+ClearUpEdges(const RelaxGrid & grid, const RowScratch & scratch)
+{
+  for (std::size_t x = 0; x < grid.Stride; ++x)
+  {
+    scratch.UpWeight[x] = 0.0f;
+    scratch.UpFlux[x] = 0.0f;
+  }
+}
+
+/** StartFunction: the edges above row \a first, as SweepRows computes them for a band starting there. */
+template<typename V, typename TWeight>
+VR_ALWAYS_INLINE void
+StartRows(const RelaxGrid & grid, const float * above, const float * row, std::size_t first, RowScratch & scratch)
+{
+  ClearUpEdges(grid, scratch);
+  if (first > 0)
+  {
+    RelaxRowFrom<V, true>(
+      grid, TWeight{}, LastVectorRightEdges<V>(grid), above, row, first - 1, scratch.DiscardedRow, scratch);
+    SwapUpAndDown(scratch);
+  }
+}
+
+/** RowFunction: one row, as SweepRows relaxes it. */
+template<typename V, typename TWeight>
+VR_ALWAYS_INLINE void
+RelaxOneRow(const RelaxGrid & grid,
+            const float *     row,
+            const float *     below,
+            std::size_t       y,
+            float *           out,
+            RowScratch &      scratch)
+{
+  if (below)
+  {
+    RelaxRowFrom<V, true>(grid, TWeight{}, LastVectorRightEdges<V>(grid), row, below, y, out, scratch);
+  }
+  else
+  {
+    RelaxRowFrom<V, false>(grid, TWeight{}, LastVectorRightEdges<V>(grid), row, nullptr, y, out, scratch);
+  }
+  SwapUpAndDown(scratch);
+}
+
+template<typename V>
+VR_ALWAYS_INLINE void
+StartRowsWith(const RelaxGrid & grid, const float * above, const float * row, std::size_t first, RowScratch & scratch)
+{
+  if (grid.Isotropic)
+  {
+    StartRows<V, IsotropicWeight<V>>(grid, above, row, first, scratch);
+  }
+  else
+  {
+    StartRows<V, RangeWeight<V>>(grid, above, row, first, scratch);
+  }
+}
+
+template<typename V>
+VR_ALWAYS_INLINE void
+RelaxOneRowWith(const RelaxGrid & grid,
+                const float *     row,
+                const float *     below,
+                std::size_t       y,
+                float *           out,
+                RowScratch &      scratch)
+{
+  if (grid.Isotropic)
+  {
+    RelaxOneRow<V, IsotropicWeight<V>>(grid, row, below, y, out, scratch);
+  }
+  else
+  {
+    RelaxOneRow<V, RangeWeight<V>>(grid, row, below, y, out, scratch);
   }
 }
 

@@ -11,15 +11,32 @@ namespace itk
 {
 namespace detail::BilateralDepthRelaxRows
 {
+namespace
+{
 void
-SweepAVX2(const RelaxGrid & grid,
-          const float *     current,
-          float *           next,
-          std::size_t       rowBegin,
-          std::size_t       rowEnd,
-          RowScratch &      scratch)
+Sweep(const RelaxGrid & grid,
+      const float *     current,
+      float *           next,
+      std::size_t       rowBegin,
+      std::size_t       rowEnd,
+      RowScratch &      scratch)
 {
   SweepRowsWith<VectorsOf<8>>(grid, current, next, rowBegin, rowEnd, scratch);
 }
+
+void
+Start(const RelaxGrid & grid, const float * above, const float * row, std::size_t first, RowScratch & scratch)
+{
+  StartRowsWith<VectorsOf<8>>(grid, above, row, first, scratch);
+}
+
+void
+Row(const RelaxGrid & grid, const float * row, const float * below, std::size_t y, float * out, RowScratch & scratch)
+{
+  RelaxOneRowWith<VectorsOf<8>>(grid, row, below, y, out, scratch);
+}
+} // namespace
+
+const RowKernels KernelsAVX2{ Sweep, Start, Row };
 } // namespace detail::BilateralDepthRelaxRows
 } // namespace itk

@@ -28,15 +28,32 @@ const char * const BaselineInstructionSet = "x86-64";
 const char * const BaselineInstructionSet = "128-bit vectors";
 #endif
 
+namespace
+{
 void
-SweepBaseline(const RelaxGrid & grid,
-              const float *     current,
-              float *           next,
-              std::size_t       rowBegin,
-              std::size_t       rowEnd,
-              RowScratch &      scratch)
+Sweep(const RelaxGrid & grid,
+      const float *     current,
+      float *           next,
+      std::size_t       rowBegin,
+      std::size_t       rowEnd,
+      RowScratch &      scratch)
 {
   SweepRowsWith<BaselineVectors>(grid, current, next, rowBegin, rowEnd, scratch);
 }
+
+void
+Start(const RelaxGrid & grid, const float * above, const float * row, std::size_t first, RowScratch & scratch)
+{
+  StartRowsWith<BaselineVectors>(grid, above, row, first, scratch);
+}
+
+void
+Row(const RelaxGrid & grid, const float * row, const float * below, std::size_t y, float * out, RowScratch & scratch)
+{
+  RelaxOneRowWith<BaselineVectors>(grid, row, below, y, out, scratch);
+}
+} // namespace
+
+const RowKernels KernelsBaseline{ Sweep, Start, Row };
 } // namespace detail::BilateralDepthRelaxRows
 } // namespace itk

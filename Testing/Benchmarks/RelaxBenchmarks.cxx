@@ -19,6 +19,8 @@
 
 #include <algorithm>
 #include <exception>
+#include <string>
+#include <vector>
 
 namespace
 {
@@ -31,8 +33,10 @@ constexpr unsigned int Iterations = 500;
 constexpr double       Relaxation = 1.0;
 constexpr double       Anisotropy = 0.5;
 
+/** Relax_CPU/W/H (all cores), Relax_CPU/W/H/threads:N (a team of N threads, on any machine), and
+ * Relax_CPU_Passes/W/H/threads:N/passes:K (K passes between synchronizations instead of the kernel's choice). */
 void
-RelaxCPU(benchmark::State & state)
+RelaxCPU(benchmark::State & state, unsigned int threads, unsigned int passes)
 {
   const auto & map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
   auto         filter = itk::BilateralDepthRelaxFilter<DepthImage>::New();
@@ -41,6 +45,13 @@ RelaxCPU(benchmark::State & state)
   filter->SetRelaxation(Relaxation);
   filter->SetAnisotropy(Anisotropy);
   filter->SetNumberOfIterations(Iterations);
+  if (threads > 0)
+  {
+    // The team is min(work units, the threader's threads): set both so that the team has the threads asked.
+    filter->GetMultiThreader()->SetMaximumNumberOfThreads(threads);
+    filter->SetNumberOfWorkUnits(threads);
+  }
+  filter->SetPassesBetweenSynchronizations(passes);
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     filter->Modified();
@@ -48,9 +59,14 @@ RelaxCPU(benchmark::State & state)
     benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
   }
   // The filter's team: one thread per work unit, at most as many as the threader's threads.
-  const unsigned int threads =
+  const unsigned int team =
     std::min(filter->GetNumberOfWorkUnits(), filter->GetMultiThreader()->GetMaximumNumberOfThreads());
-  state.SetLabel(itk::BilateralDepthRelaxKernel::GetInstructionSet() + ", " + std::to_string(threads) + " threads");
+  // Which path ran: 1 pass is the plain sweep with a barrier after every pass, more the blocks.
+  const unsigned int blocks =
+    passes > 0 ? passes : itk::BilateralDepthRelaxKernel::ChoosePassesBetweenSynchronizations(state.range(1), team);
+  state.SetLabel(itk::BilateralDepthRelaxKernel::GetInstructionSet() + ", " + std::to_string(team) + " threads, " +
+                 std::to_string(blocks) + " passes between synchronizations" +
+                 (passes > 0 ? "" : " (kernel's choice)"));
 }
 
 /** The same relax with a narrower instruction set than the processor's widest: how a build runs elsewhere. */
@@ -58,7 +74,7 @@ void
 RelaxCPUWithInstructionSet(benchmark::State & state, const std::string & instructionSet)
 {
   itk::BilateralDepthRelaxKernel::SetInstructionSet(instructionSet);
-  RelaxCPU(state);
+  RelaxCPU(state, 0, 0);
   itk::BilateralDepthRelaxKernel::SetInstructionSet("");
 }
 
@@ -158,15 +174,31 @@ RelaxPlain(benchmark::State & state)
 }
 
 /** What every relax benchmark shares: a W x H image, milliseconds of real time, the median of \a repetitions; with
- * \a oneRun, one iteration per repetition, for those that take seconds per run. */
+ * \a oneRun, one iteration per repetition, for those that take seconds per run. \a threads and \a passes, where not
+ * 0, name RelaxCPU's team size and passes between synchronizations in the benchmark's name. */
 void
-Register(benchmark::internal::Benchmark * b, long width, long height, int repetitions, bool oneRun)
+Register(benchmark::internal::Benchmark * b,
+         long                             width,
+         long                             height,
+         int                              repetitions,
+         bool                             oneRun,
+         long                             threads = 0,
+         long                             passes = 0)
 {
-  b->Args({ width, height })
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime()
-    ->Repetitions(repetitions)
-    ->ReportAggregatesOnly();
+  std::vector<long>        args{ width, height };
+  std::vector<std::string> names{ "", "" };
+  if (threads > 0)
+  {
+    args.push_back(threads);
+    names.emplace_back("threads");
+  }
+  if (passes > 0)
+  {
+    args.push_back(passes);
+    names.emplace_back("passes");
+  }
+  b->Args(args)->ArgNames(names);
+  b->Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(repetitions)->ReportAggregatesOnly();
   if (oneRun)
   {
     b->Iterations(1);
@@ -190,7 +222,8 @@ const bool Registered = []
   {
     const bool largest = size.first == 2048;
     const bool large = size.first >= 1024;
-    Register(benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU), size.first, size.second, large ? 3 : 10, large);
+    Register(
+      benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU, 0u, 0u), size.first, size.second, large ? 3 : 10, large);
     if (size.second == 2 * size.first)
     {
       Register(benchmark::RegisterBenchmark("Relax_Steady", RelaxSteady, SteadyCase::Runoff),
@@ -208,6 +241,25 @@ const bool Registered = []
                size.second,
                largest ? 1 : (large ? 3 : 10),
                large);
+    }
+  }
+  // Team sizes for scaling: the same run compares them (docs/design.md, temporal blocking).
+  for (const unsigned int threads : { 1u, 2u, 4u, 8u, 16u })
+  {
+    Register(benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU, threads, 0u), 512, 1024, 10, false, threads);
+  }
+  // Fixed passes between synchronizations, to check the kernel's choice on a new machine.
+  for (const unsigned int threads : { 1u, 2u, 16u })
+  {
+    for (const unsigned int passes : { 1u, 4u, 8u, 16u, 32u })
+    {
+      Register(benchmark::RegisterBenchmark("Relax_CPU_Passes", RelaxCPU, threads, passes),
+               512,
+               1024,
+               5,
+               false,
+               threads,
+               passes);
     }
   }
   Register(benchmark::RegisterBenchmark("Relax_Generic", RelaxGeneric), 512, 1024, 3, true);

@@ -1,7 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // BilateralDepthRelaxKernel on its own: answers worked by hand on tiny rows, progress reporting, a progress
-// callback that throws (the team must stop, not hang), in-place use, results independent of the team size, and
-// every instruction set this processor runs against the plain reference.
+// callback that throws (the team must stop, not hang), in-place use, results independent of the team size and of
+// the passes between synchronizations (temporal blocking), and every instruction set this processor runs against the
+// plain reference.
 #include "PlainBilateralDepthRelax.h"
 
 #include "itkBilateralDepthRelaxKernel.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -26,12 +28,58 @@ Relax(const std::vector<float> &         depth,
       double                             w,
       double                             a,
       unsigned int                       iterations,
-      unsigned int                       threads = 1)
+      unsigned int                       threads = 1,
+      unsigned int                       passesBetweenSynchronizations = Kernel::AutomaticPassesBetweenSynchronizations)
 {
   std::vector<float> relaxed(depth.size(), -1.0f);
-  Kernel::Relax(
-    depth.data(), fixed.empty() ? nullptr : fixed.data(), relaxed.data(), width, height, w, a, iterations, threads);
+  Kernel::Relax(depth.data(),
+                fixed.empty() ? nullptr : fixed.data(),
+                relaxed.data(),
+                width,
+                height,
+                w,
+                a,
+                iterations,
+                threads,
+                {},
+                nullptr,
+                passesBetweenSynchronizations);
   return relaxed;
+}
+
+bool
+BitIdentical(const std::vector<float> & first, const std::vector<float> & second)
+{
+  return first.size() == second.size() && std::memcmp(first.data(), second.data(), first.size() * sizeof(float)) == 0;
+}
+
+/** A depth map like a CPR's: regions 25 mm apart in depth (jumps far above J), each a slope with noise of +-1 mm,
+ * and about 1 pixel in 12 fixed (the vessels' centres). */
+struct MapWithJumps
+{
+  std::vector<float>         Depth;
+  std::vector<unsigned char> Fixed;
+};
+
+MapWithJumps
+MakeMapWithJumps(std::size_t width, std::size_t height, unsigned int seed)
+{
+  std::mt19937                          generator(seed);
+  std::uniform_real_distribution<float> noise(-1.0f, 1.0f);
+  std::uniform_int_distribution<int>    fixedOneIn(0, 11);
+  MapWithJumps                          map;
+  map.Depth.resize(width * height);
+  map.Fixed.resize(width * height);
+  for (std::size_t y = 0; y < height; ++y)
+  {
+    for (std::size_t x = 0; x < width; ++x)
+    {
+      const int region = (x * 3 / width + y * 4 / height) % 3;
+      map.Depth[y * width + x] = 40.0f + 25.0f * region + 0.05f * static_cast<float>(x + y) + noise(generator);
+      map.Fixed[y * width + x] = fixedOneIn(generator) == 0 ? 1 : 0;
+    }
+  }
+  return map;
 }
 } // namespace
 
@@ -149,8 +197,8 @@ TEST(BilateralDepthRelaxKernel, InPlaceEqualsOutOfPlaceAndTeamSizeChangesNoBit)
   EXPECT_EQ(inPlace, reference);
 }
 
-// A workspace kept across calls of other sizes, masks and team sizes holds stale values where a call does not
-// write: none of them may reach a result.
+// A workspace kept across calls of other sizes, masks, team sizes and blocks of passes holds stale values where a
+// call does not write (rows of its rings, edges of passes a shorter block does not run): none may reach a result.
 TEST(BilateralDepthRelaxKernel, ReusedWorkspaceChangesNoBit)
 {
   struct Call
@@ -158,9 +206,11 @@ TEST(BilateralDepthRelaxKernel, ReusedWorkspaceChangesNoBit)
     std::size_t  Width, Height;
     unsigned int Threads;
     bool         Masked;
+    unsigned int Passes;
   };
-  const Call        calls[] = { { 70, 40, 2, true }, { 33, 17, 3, false }, { 70, 40, 2, false },
-                                { 129, 9, 1, true }, { 5, 61, 4, true },   { 70, 40, 2, true } };
+  const Call        calls[] = { { 70, 40, 2, true, 1 }, { 33, 17, 3, false, 9 }, { 70, 40, 2, false, 4 },
+                                { 129, 9, 1, true, 2 }, { 5, 61, 4, true, 12 },  { 70, 40, 2, true, 3 },
+                                { 70, 40, 2, true, 1 } };
   Kernel::Workspace workspace;
   unsigned int      seed = 40;
   for (const auto & call : calls)
@@ -177,7 +227,7 @@ TEST(BilateralDepthRelaxKernel, ReusedWorkspaceChangesNoBit)
         fixed[k] = (k % 7 == 2) ? 1 : 0;
       }
     }
-    const std::vector<float> fresh = Relax(depth, fixed, call.Width, call.Height, 1.0, 0.5, 40, call.Threads);
+    const std::vector<float> fresh = Relax(depth, fixed, call.Width, call.Height, 1.0, 0.5, 40, call.Threads, 1);
     std::vector<float>       reused(depth.size());
     Kernel::Relax(depth.data(),
                   call.Masked ? fixed.data() : nullptr,
@@ -189,8 +239,9 @@ TEST(BilateralDepthRelaxKernel, ReusedWorkspaceChangesNoBit)
                   40,
                   call.Threads,
                   {},
-                  &workspace);
-    EXPECT_EQ(reused, fresh) << call.Width << " x " << call.Height;
+                  &workspace,
+                  call.Passes);
+    EXPECT_TRUE(BitIdentical(reused, fresh)) << call.Width << " x " << call.Height << ", " << call.Passes << " passes";
   }
 }
 
@@ -251,4 +302,152 @@ TEST(BilateralDepthRelaxKernel, EveryInstructionSetAgreesWithPlainReference)
     }
   }
   Kernel::SetInstructionSet("");
+}
+
+// Temporal blocking: each thread runs several passes on its band, computing again the rows its neighbours own,
+// before the team meets. Every pixel must come out bit for bit as with one thread meeting after every pass: for
+// teams of 1, 2, 3, 8 and 16 threads (more threads than cores is fine), blocks of 1, 2, 3, 5 and 8 passes and of
+// more passes than a band has rows (40, and more than the iterations), odd heights, a single row, bands of one
+// row, and an iteration count that leaves a shorter last block. Fixed pixels keep their input bits.
+TEST(BilateralDepthRelaxKernel, PassesBetweenSynchronizationsChangeNoBit)
+{
+  struct Size
+  {
+    std::size_t Width, Height;
+  };
+  const Size         sizes[] = { { 45, 203 }, { 33, 17 }, { 130, 9 }, { 64, 1 }, { 7, 31 } };
+  const unsigned int iterations = 37;
+  unsigned int       seed = 70;
+  for (const auto & size : sizes)
+  {
+    const MapWithJumps map = MakeMapWithJumps(size.Width, size.Height, ++seed);
+    for (const double a : { 0.5, 0.0 })
+    {
+      const std::vector<float> reference =
+        Relax(map.Depth, map.Fixed, size.Width, size.Height, 1.0, a, iterations, 1, 1);
+      for (std::size_t k = 0; k < reference.size(); ++k)
+      {
+        if (map.Fixed[k])
+        {
+          ASSERT_EQ(std::memcmp(&reference[k], &map.Depth[k], sizeof(float)), 0) << "fixed pixel " << k << " moved";
+        }
+      }
+      for (const unsigned int threads : { 1u, 2u, 3u, 8u, 16u })
+      {
+        for (const unsigned int passes : { 1u, 2u, 3u, 5u, 8u, 40u, 100u })
+        {
+          EXPECT_TRUE(BitIdentical(
+            Relax(map.Depth, map.Fixed, size.Width, size.Height, 1.0, a, iterations, threads, passes), reference))
+            << size.Width << " x " << size.Height << ", a = " << a << ", " << threads << " threads, " << passes
+            << " passes between synchronizations";
+        }
+        EXPECT_TRUE(
+          BitIdentical(Relax(map.Depth, map.Fixed, size.Width, size.Height, 1.0, a, iterations, threads), reference))
+          << size.Width << " x " << size.Height << ", a = " << a << ", " << threads << " threads, the kernel's choice";
+      }
+    }
+  }
+}
+
+// The same with every instruction set the processor runs (the row kernels are compiled once for each), on a map
+// tall enough for the kernel's own choice of passes to exceed 1 with 8 threads (2 with 301 rows), and w < 1.
+TEST(BilateralDepthRelaxKernel, PassesBetweenSynchronizationsChangeNoBitWithEveryInstructionSet)
+{
+  const std::size_t  width = 77;
+  const std::size_t  height = 301;
+  const MapWithJumps map = MakeMapWithJumps(width, height, 5);
+  for (const std::string & instructionSet : Kernel::GetSupportedInstructionSets())
+  {
+    Kernel::SetInstructionSet(instructionSet);
+    const std::vector<float> reference = Relax(map.Depth, map.Fixed, width, height, 0.8, 0.5, 50, 1, 1);
+    for (const unsigned int threads : { 2u, 3u, 8u, 16u })
+    {
+      for (const unsigned int passes : { 0u, 4u, 19u })
+      {
+        EXPECT_TRUE(BitIdentical(Relax(map.Depth, map.Fixed, width, height, 0.8, 0.5, 50, threads, passes), reference))
+          << instructionSet << ", " << threads << " threads, " << passes << " passes between synchronizations";
+      }
+    }
+  }
+  Kernel::SetInstructionSet("");
+}
+
+// The kernel's choice (docs/design.md 3.5): teams of up to 4 threads meet after every pass whatever the height
+// (measured on 2 cores: the blocks' row-by-row wavefront costs more there than the barriers it saves); larger teams
+// take band height / 16 passes, at least 1 and at most 16. References worked by hand from the rule.
+TEST(BilateralDepthRelaxKernel, KernelChoosesOnePassForSmallTeamsAndBlocksForLargeOnes)
+{
+  for (const unsigned int team : { 1u, 2u, 3u, 4u })
+  {
+    for (const std::size_t height : { std::size_t{ 1 }, std::size_t{ 1024 }, std::size_t{ 100000 } })
+    {
+      EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(height, team), 1u) << team << " threads, " << height;
+    }
+  }
+  EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(1024, 5), 12u);    // band 204 rows
+  EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(1024, 8), 8u);     // band 128 rows
+  EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(1024, 16), 4u);    // band 64 rows
+  EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(1024, 64), 1u);    // band 16 rows
+  EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(100, 8), 1u);      // band 12 rows: below 1, so 1
+  EXPECT_EQ(Kernel::ChoosePassesBetweenSynchronizations(100000, 16), 16u); // band 6250 rows: at most 16
+}
+
+// Progress is reported after every pass, in order, whatever the block; an observer that throws inside a block
+// stops the whole team (no thread left waiting) and is not called again.
+TEST(BilateralDepthRelaxKernel, BlocksOfPassesReportEveryPassAndStopWhenAborted)
+{
+  std::vector<float> depth(40 * 90, 1.0f);
+  for (const unsigned int passes : { 2u, 4u, 7u, 30u })
+  {
+    std::vector<unsigned int> reported;
+    Kernel::Relax(
+      depth.data(),
+      nullptr,
+      depth.data(),
+      40,
+      90,
+      1.0,
+      0.5,
+      25,
+      3,
+      [&](unsigned int done) { reported.push_back(done); },
+      nullptr,
+      passes);
+    ASSERT_EQ(reported.size(), 25u) << passes << " passes between synchronizations";
+    for (unsigned int k = 0; k < 25; ++k)
+    {
+      EXPECT_EQ(reported[k], k + 1) << passes << " passes between synchronizations";
+    }
+  }
+  std::vector<float> relaxed(depth.size());
+  for (const unsigned int threads : { 1u, 2u, 4u })
+  {
+    for (const unsigned int passes : { 4u, 16u })
+    {
+      unsigned int calls = 0;
+      EXPECT_THROW(Kernel::Relax(
+                     depth.data(),
+                     nullptr,
+                     relaxed.data(),
+                     40,
+                     90,
+                     1.0,
+                     0.5,
+                     1000,
+                     threads,
+                     [&](unsigned int done)
+                     {
+                       ++calls;
+                       if (done == 6)
+                       {
+                         throw std::runtime_error("aborted");
+                       }
+                     },
+                     nullptr,
+                     passes),
+                   std::runtime_error)
+        << threads << " threads, " << passes << " passes";
+      EXPECT_EQ(calls, 6u) << threads << " threads, " << passes << " passes";
+    }
+  }
 }
