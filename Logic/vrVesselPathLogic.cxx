@@ -90,6 +90,7 @@ struct VesselPathLogic::Internals
   bool                       MeasurementValid{ false };
   ImageStamp                 MeasuredMask;
   std::vector<double>        MeasuredReferences;
+  itk::VesselReferenceMethod MeasuredMethod{ itk::VesselReferenceMethod::Interpolated };
 
   CPRFilterType::Pointer   CPRFilter = CPRFilterType::New();
   StackFilterType::Pointer StackFilter = StackFilterType::New();
@@ -345,6 +346,7 @@ VesselPathLogic::Internals::RunMeasurement()
   {
     LumenMeasurementParameters measurement;
     measurement.ReferenceArcLengths = Parameters.ReferencePoints;
+    measurement.ReferenceMethod = Parameters.ReferenceMethod;
     LumenMeasurement lumen = MeasureLumen(FrameSections, Mask, MaskName, measurement);
     Results.Lumen = std::move(lumen.Profile);
     Results.Stenosis = lumen.Summary;
@@ -358,6 +360,7 @@ VesselPathLogic::Internals::RunMeasurement()
   }
   MeasuredMask = ImageStamp::Of(Mask.GetPointer());
   MeasuredReferences = Parameters.ReferencePoints;
+  MeasuredMethod = Parameters.ReferenceMethod;
   MeasurementValid = true;
   ++Counts.Measurement;
 }
@@ -403,7 +406,7 @@ VesselPathLogic::Update()
     m->RunResampling();
   }
   if (!m->MeasurementValid || m->MeasuredMask != ImageStamp::Of(m->Mask.GetPointer()) ||
-      m->MeasuredReferences != p.ReferencePoints)
+      m->MeasuredReferences != p.ReferencePoints || m->MeasuredMethod != p.ReferenceMethod)
   {
     m->RunMeasurement();
   }

@@ -94,6 +94,7 @@ VesselPathParameters::operator==(const VesselPathParameters & other) const
          Width == other.Width && PixelSpacing == other.PixelSpacing && SectionSpacing == other.SectionSpacing &&
          AutomaticUp == other.AutomaticUp && (AutomaticUp || Up == other.Up) &&
          ViewAngleInDegrees == other.ViewAngleInDegrees && Interpolation == other.Interpolation &&
-         SlabThickness == other.SlabThickness && SlabMode == other.SlabMode && ReferencePoints == other.ReferencePoints;
+         SlabThickness == other.SlabThickness && SlabMode == other.SlabMode &&
+         ReferencePoints == other.ReferencePoints && ReferenceMethod == other.ReferenceMethod;
 }
 } // namespace vr

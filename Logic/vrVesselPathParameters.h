@@ -3,6 +3,7 @@
 #define vrVesselPathParameters_h
 
 #include "itkCPRResampleImageFilter.h"
+#include "itkVesselStenosis.h"
 #include "itkVector.h"
 #include "vrParameterName.h"
 
@@ -64,6 +65,9 @@ struct VesselPathParameters
 
   /** Arc lengths (mm, on the path read) of the reference points; empty: 5 % and 95 % of the path. */
   std::vector<double> ReferencePoints;
+  /** How the reference diameter is found: interpolated between the reference points, or a robust fit to the profile
+   * (docs/lumen-measurement.md). */
+  itk::VesselReferenceMethod ReferenceMethod{ itk::VesselReferenceMethod::Interpolated };
 
   /** Throws vr::InputError naming the parameter and its value when one is out of range or not finite. Whether
    * the range and the reference points lie on the path is known only once the path is: the logic checks that. */

@@ -40,6 +40,7 @@ const vr::CLIParameterMap ParameterFlags = {
   { vr::ParameterName::SlabThickness, "slabThickness" },
   { vr::ParameterName::SlabMode, "slabMode" },
   { vr::ParameterName::ReferencePoints, "referencePoints" },
+  { vr::ParameterName::ReferenceMethod, "referenceMethod" },
   { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
 };
 
@@ -121,6 +122,9 @@ ParametersFrom(const vr::CLIArguments & arguments)
   {
     parameters.ReferencePoints = Numbers(arguments, "referencePoints");
   }
+  parameters.ReferenceMethod = arguments.String("referenceMethod") == "robust"
+                                 ? itk::VesselReferenceMethod::RobustFit
+                                 : itk::VesselReferenceMethod::Interpolated;
   parameters.Validate();
   return parameters;
 }

@@ -123,11 +123,17 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   logic.SetParameters(parameters);
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 5);
+  // The reference method: the measurement alone.
+  parameters.ReferenceMethod = itk::VesselReferenceMethod::RobustFit;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 6);
+  EXPECT_EQ(logic.GetResults().Stenosis.Method, itk::VesselReferenceMethod::RobustFit);
   // The section spacing: the frame, the resampling and the measurement.
   parameters.SectionSpacing = 1.0;
   logic.SetParameters(parameters);
   logic.Update();
-  ExpectCounts(logic.GetStageCounts(), 3, 4, 6, 6);
+  ExpectCounts(logic.GetStageCounts(), 3, 4, 6, 7);
 }
 
 TEST(VesselPathLogic, ARefusedSegmentationLeavesNoStaleLumen)

@@ -289,6 +289,28 @@ TEST(VesselPathReformationModule, WithoutCenterlinesThePathComesFromTheSegmentat
   EXPECT_NEAR(std::stod(values.at("diameterStenosis")), 50.0, 3.0);
 }
 
+TEST(VesselPathReformationModule, TheRobustReferenceFindsTheSameStenosis)
+{
+  // The second reference method: a robust line through the profile, the stenotic dip weighted out; on a tube of one
+  // healthy radius it is the healthy diameter, so the stenosis is the same 50 %.
+  const TubeFiles files = MakeTubeFiles("robust");
+  const fs::path  returned = files.Folder / "returned.txt";
+  const ModuleRun run = RunModule({ files.Volume.string(),
+                                    files.Centerlines.string(),
+                                    (files.Folder / "cpr.nrrd").string(),
+                                    "--segmentation",
+                                    files.Mask.string(),
+                                    "--referenceMethod",
+                                    "robust",
+                                    "--returnparameterfile",
+                                    returned.string() });
+  ASSERT_EQ(run.ExitCode, 0) << run.Err;
+  auto values = ReturnedValues(returned);
+  EXPECT_EQ(values.at("referenceMethod"), "robust fit");
+  EXPECT_NEAR(std::stod(values.at("referenceDiameter")), 2.0 * HealthyRadius, 0.25);
+  EXPECT_NEAR(std::stod(values.at("diameterStenosis")), 50.0, 3.0);
+}
+
 /** A run that must fail: exit 1, the message naming \a named, no output written and an existing one kept. */
 void
 ExpectRefused(const TubeFiles & files, const std::vector<std::string> & extra, const std::string & named)
