@@ -151,10 +151,7 @@ private:
   OutputPixelType                           m_OutsideValue{};
   std::vector<double>                       m_SlabOffsets;
   /** Per plane, in the volume's continuous index: the centre, and the steps per mm along Lateral, Up and Tangent. */
-  std::vector<Vector<double, 3>> m_CenterIndex;
-  std::vector<Vector<double, 3>> m_LateralIndex;
-  std::vector<Vector<double, 3>> m_UpIndex;
-  std::vector<Vector<double, 3>> m_TangentIndex;
+  std::vector<detail::SectionIndexFrame> m_IndexFrames;
 };
 
 } // namespace itk

@@ -173,27 +173,7 @@ CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::BeforeThreadedGenerate
     m_UseVolumeMinimumAsDefault ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume)) : m_DefaultValue;
   m_SlabOffsets = detail::CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
 
-  const std::size_t planes = m_Sections.size();
-  m_CenterIndex.resize(planes);
-  m_LateralIndex.resize(planes);
-  m_UpIndex.resize(planes);
-  m_TangentIndex.resize(planes);
-  for (std::size_t k = 0; k < planes; ++k)
-  {
-    const auto &               section = m_Sections[k];
-    ContinuousIndex<double, 3> center;
-    ContinuousIndex<double, 3> lateral;
-    ContinuousIndex<double, 3> up;
-    ContinuousIndex<double, 3> tangent;
-    volume->TransformPhysicalPointToContinuousIndex(section.Center, center);
-    volume->TransformPhysicalPointToContinuousIndex(section.Center + section.Lateral, lateral);
-    volume->TransformPhysicalPointToContinuousIndex(section.Center + section.Up, up);
-    volume->TransformPhysicalPointToContinuousIndex(section.Center + section.Tangent, tangent);
-    m_CenterIndex[k] = center.GetVectorFromOrigin();
-    m_LateralIndex[k] = lateral - center;
-    m_UpIndex[k] = up - center;
-    m_TangentIndex[k] = tangent - center;
-  }
+  m_IndexFrames = detail::SectionIndexFrames(volume, m_Sections);
 }
 
 template<typename TVolumeImage, typename TOutputImage>
@@ -208,10 +188,10 @@ CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::DynamicThreadedGenerat
   for (SizeValueType p = 0; p < size[2]; ++p)
   {
     const auto                plane = static_cast<std::size_t>(start[2] + static_cast<IndexValueType>(p));
-    const Vector<double, 3> & center = m_CenterIndex[plane];
-    const Vector<double, 3> & lateral = m_LateralIndex[plane];
-    const Vector<double, 3> & up = m_UpIndex[plane];
-    const Vector<double, 3> & tangent = m_TangentIndex[plane];
+    const Vector<double, 3> & center = m_IndexFrames[plane].Center;
+    const Vector<double, 3> & lateral = m_IndexFrames[plane].Lateral;
+    const Vector<double, 3> & up = m_IndexFrames[plane].Up;
+    const Vector<double, 3> & tangent = m_IndexFrames[plane].Tangent;
     for (SizeValueType r = 0; r < size[1]; ++r)
     {
       const typename OutputImageType::IndexType rowStart{

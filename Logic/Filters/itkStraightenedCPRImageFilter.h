@@ -243,9 +243,7 @@ private:
   OutputPixelType                           m_OutsideValue{};
   std::vector<double>                       m_SlabOffsets;
   /** Per row, in the volume's continuous index: the centre, and the steps per mm along Lateral and Up. */
-  std::vector<Vector<double, 3>> m_RowCenterIndex;
-  std::vector<Vector<double, 3>> m_RowLateralIndex;
-  std::vector<Vector<double, 3>> m_RowNormalIndex;
+  std::vector<detail::SectionIndexFrame> m_RowIndexFrames;
 };
 
 } // namespace itk

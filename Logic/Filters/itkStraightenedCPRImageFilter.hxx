@@ -356,25 +356,7 @@ StraightenedCPRImageFilter<TVolumeImage, TOutputImage>::BeforeThreadedGenerateDa
     m_UseVolumeMinimumAsDefault ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume)) : m_DefaultValue;
   m_SlabOffsets = detail::CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
 
-  // The volume's continuous index is affine in the physical point: a row's samples are its centre's index plus
-  // multiples of Lateral's and Up's index steps.
-  const std::size_t rows = m_Sections.size();
-  m_RowCenterIndex.resize(rows);
-  m_RowLateralIndex.resize(rows);
-  m_RowNormalIndex.resize(rows);
-  for (std::size_t j = 0; j < rows; ++j)
-  {
-    const auto &               section = m_Sections[j];
-    ContinuousIndex<double, 3> center;
-    ContinuousIndex<double, 3> lateral;
-    ContinuousIndex<double, 3> normal;
-    volume->TransformPhysicalPointToContinuousIndex(section.Center, center);
-    volume->TransformPhysicalPointToContinuousIndex(section.Center + section.Lateral, lateral);
-    volume->TransformPhysicalPointToContinuousIndex(section.Center + section.Up, normal);
-    m_RowCenterIndex[j] = center.GetVectorFromOrigin();
-    m_RowLateralIndex[j] = lateral - center;
-    m_RowNormalIndex[j] = normal - center;
-  }
+  m_RowIndexFrames = detail::SectionIndexFrames(volume, m_Sections);
 }
 
 template<typename TVolumeImage, typename TOutputImage>
@@ -394,9 +376,9 @@ StraightenedCPRImageFilter<TVolumeImage, TOutputImage>::DynamicThreadedGenerateD
     const typename OutputImageType::IndexType rowStart{ { start[0], start[1] + static_cast<IndexValueType>(r) } };
     const auto                                j = static_cast<std::size_t>(rowStart[1]);
     const VesselPathSection &                 section = m_Sections[j];
-    const Vector<double, 3> &                 center = m_RowCenterIndex[j];
-    const Vector<double, 3> &                 lateral = m_RowLateralIndex[j];
-    const Vector<double, 3> &                 normal = m_RowNormalIndex[j];
+    const Vector<double, 3> &                 center = m_RowIndexFrames[j].Center;
+    const Vector<double, 3> &                 lateral = m_RowIndexFrames[j].Lateral;
+    const Vector<double, 3> &                 normal = m_RowIndexFrames[j].Up;
     const double                              bend = straightened ? m_LateralCurvature[j] : 0.0;
     OutputPixelType *                         outputRow = output->GetBufferPointer() + output->ComputeOffset(rowStart);
     unsigned char *                           maskRow = mask->GetBufferPointer() + mask->ComputeOffset(rowStart);
