@@ -6,7 +6,6 @@
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
-#include "vrNiftiHeaderCheck.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
@@ -92,9 +91,9 @@ Open2DImage(const std::string & path, const std::string & role)
       {
         detail::CheckImageIOIsOneWeRead(io->GetNameOfClass(), where, false);
       }
-      if (!IsURIName(path) && std::string(io->GetNameOfClass()) == "NiftiImageIO")
+      if (!IsURIName(path))
       {
-        detail::CheckNiftiHeader(path, where);
+        detail::CheckHeaderBeforeITKReads(*io, path, where);
       }
       io->SetFileName(path);
       io->ReadImageInformation();

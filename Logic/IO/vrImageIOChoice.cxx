@@ -1,6 +1,9 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrImageIOChoice.h"
 
+#include "vrMetaImageHeaderCheck.h"
+#include "vrNiftiHeaderCheck.h"
+
 #include "itkObjectFactoryBase.h"
 
 namespace vr::detail
@@ -21,5 +24,19 @@ CreateImageIOWithoutDICOM(const std::string & path)
     }
   }
   return nullptr;
+}
+
+void
+CheckHeaderBeforeITKReads(const itk::ImageIOBase & io, const std::string & path, const std::string & where)
+{
+  const std::string reader = io.GetNameOfClass();
+  if (reader == "NiftiImageIO")
+  {
+    CheckNiftiHeader(path, where);
+  }
+  else if (reader == "MetaImageIO")
+  {
+    CheckMetaImageHeader(path, where);
+  }
 }
 } // namespace vr::detail

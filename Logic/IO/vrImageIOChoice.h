@@ -15,6 +15,12 @@ namespace vr::detail
  * Null when no other ImageIO takes the file. */
 itk::ImageIOBase::Pointer
 CreateImageIOWithoutDICOM(const std::string & path);
+
+/** Our own check of the whole header, for the formats whose ITK reader trusts it, before \a io reads \a path: NIfTI
+ * (vrNiftiHeaderCheck.h) and MetaImage (vrMetaImageHeaderCheck.h). Throws vr::InputError "<where>: ..." naming the
+ * field at fault. Other formats (NRRD, whose reader checks its fields) are left to ITK. */
+void
+CheckHeaderBeforeITKReads(const itk::ImageIOBase & io, const std::string & path, const std::string & where);
 } // namespace vr::detail
 
 #endif

@@ -7,7 +7,6 @@
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
-#include "vrNiftiHeaderCheck.h"
 #include "vrURINames.h"
 
 // The reader pulls in the IO factory registration (see vrVolumeIO.cxx).
@@ -216,9 +215,9 @@ ReadSegmentationMask(const std::string & path, const std::vector<double> & label
     {
       detail::CheckImageIOIsOneWeRead(io->GetNameOfClass(), where, false);
     }
-    if (!uri && std::string(io->GetNameOfClass()) == "NiftiImageIO")
+    if (!uri)
     {
-      detail::CheckNiftiHeader(path, where);
+      detail::CheckHeaderBeforeITKReads(*io, path, where);
     }
     io->SetFileName(path);
     io->ReadImageInformation();

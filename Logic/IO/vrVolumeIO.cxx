@@ -7,7 +7,6 @@
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
-#include "vrNiftiHeaderCheck.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
@@ -103,9 +102,9 @@ InspectVolumeFile(const std::string & path)
       {
         detail::CheckImageIOIsOneWeRead(io->GetNameOfClass(), where, true);
       }
-      if (!uri && std::string(io->GetNameOfClass()) == "NiftiImageIO")
+      if (!uri)
       {
-        detail::CheckNiftiHeader(path, where);
+        detail::CheckHeaderBeforeITKReads(*io, path, where);
       }
       io->SetFileName(path);
       io->ReadImageInformation();

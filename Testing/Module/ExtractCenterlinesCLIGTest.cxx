@@ -491,6 +491,14 @@ TEST_F(ExtractCenterlinesBadInput, FuzzFindingsAreRefusedByName)
   const fs::path dicom = m_Folder / "mask.nrrd";
   fs::copy_file(fs::path(VR_FINDINGS_DIR) / "dicom-meta-explicit-assert" / "IM0018.dcm", dicom);
   ExpectRejected({ dicom.string() }, { "mask.nrrd" });
+  // A MetaImage header with NDims = -3, on which MetaIO read 2^64 numbers (the fifth fuzzing round's hang).
+  const fs::path mha = m_Folder / "mask.mha";
+  vr::test::WriteTextFile(mha.string(),
+                          "ObjectType = Image\nNDims =-3\nDimSize = 2 2 2\nElementType = MET_UCHAR\n"
+                          "ElementDataFile = LOCAL\n" +
+                            std::string(8, '\1'));
+  ExpectRejected({ mha.string() }, { "mask.mha: MetaImage header line 2: NDims = -3" });
+  fs::remove(mha);
 }
 
 TEST_F(ExtractCenterlinesBadInput, EmptyMask)

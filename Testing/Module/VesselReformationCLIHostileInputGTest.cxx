@@ -100,6 +100,23 @@ TEST_F(BadInputTest, CenterlineFilesFromFuzzing)
   }
 }
 
+// Issue 25, fifth fuzzing round: a MetaImage header with NDims = -3 made MetaIO read 2^64 numbers for DimSize, and the
+// module never returned. The fuzzer's file (its first byte picked the harness's extension), as a user's volume: refused
+// by name and line, by the program and in the host's process.
+TEST_F(BadInputTest, MetaImageVolumeWithNegativeDimensionsFromFuzzing)
+{
+  const std::string bytes =
+    ReadText(fs::path(VR_FUZZ_CORPUS_DIR) / "volume" / "crash-metaimage-negative-ndims-hang").substr(1);
+  const std::string mha = Write("hang.mha", bytes);
+  ExpectRejected({ mha, Centerlines() }, { "volume " + mha + ": MetaImage header line 2: NDims = -3: must be" });
+  const RunResult library =
+    RunInProcess(ReformationLibrary, { "VesselReformation", mha, Centerlines(), (m_Folder / "cpr.nrrd").string() });
+  EXPECT_EQ(library.ExitCode, 1) << library.Err;
+  EXPECT_TRUE(Contains(library.Err, "NDims = -3")) << library.Err;
+  EXPECT_EQ(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
+  fs::remove(mha);
+}
+
 TEST_F(BadInputTest, VTPWhoseBinaryHeadersDeclareMoreThanTheFileHolds)
 {
   // VTK 9.1 allocates what a binary array's size header declares before reading it (fuzzing found a compressed
