@@ -5,6 +5,7 @@
 #   scripts/fuzz.sh READER SECONDS [libFuzzer flags...]   one harness for SECONDS
 #   scripts/fuzz.sh all MINUTES [libFuzzer flags...]      every harness in turn, MINUTES in all (shared evenly), then
 #                                                        a table and the grown corpora merged into the seeds
+#   scripts/fuzz.sh R1,R2,... MINUTES [flags...]          as all, for the harnesses listed
 #
 # READER is one of volume, vtk, vtp, markups, tre, csv, arguments, nifti, nrrd, dicom (Testing/Fuzz/corpus/<READER>/
 # holds its seeds, Testing/Fuzz/dictionaries/<READER>.dict its dictionary, passed with -dict=). Give -seed=N among
@@ -34,9 +35,19 @@ what="$1"
 amount="$2"
 shift 2
 readers=(volume vtk vtp markups tre csv arguments nifti nrrd dicom)
-if [ "$what" = all ]; then
+if [ "$what" = all ] || [[ "$what" == *,* ]]; then
   selected=("${readers[@]}")
-  seconds=$((amount * 60 / ${#readers[@]}))
+  if [ "$what" != all ]; then
+    IFS=, read -r -a selected <<< "$what"
+    for reader in "${selected[@]}"; do
+      if [ ! -d "Testing/Fuzz/corpus/$reader" ]; then
+        echo "fuzz.sh: unknown reader $reader; use all or some of: ${readers[*]}" >&2
+        exit 2
+      fi
+    done
+    what=all # the table and the merge, for the harnesses listed
+  fi
+  seconds=$((amount * 60 / ${#selected[@]}))
 elif [ -d "Testing/Fuzz/corpus/$what" ]; then
   selected=("$what")
   seconds="$amount"
