@@ -36,93 +36,47 @@ OutputFileName(ReformationOutput output)
 }
 
 void
-OutputWriter::Add(ReformationOutput output, const std::string & path, const std::string & flag)
-{
-  if (Has(output))
-  {
-    throw InputError(flag + ": " + OutputFileName(output) + " is already reserved as " + path);
-  }
-  const std::size_t handle = m_Staged.Add(path, flag);
-  m_Reserved.push_back({ output, handle, path, flag });
-}
-
-bool
-OutputWriter::Has(ReformationOutput output) const
-{
-  for (const Reserved & reserved : m_Reserved)
-  {
-    if (reserved.Output == output)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-std::vector<std::string>
-OutputWriter::Paths() const
-{
-  std::vector<std::string> paths;
-  for (const Reserved & reserved : m_Reserved)
-  {
-    paths.push_back(reserved.Path);
-  }
-  return paths;
-}
-
-void
 OutputWriter::Write(const ReformationOutputs & outputs, double window, double level)
 {
-  // Checked before anything is staged, so that a missing output costs no writing.
-  for (const Reserved & reserved : m_Reserved)
-  {
-    if (reserved.Output == ReformationOutput::CutSurface && !outputs.Surface)
+  WriteReserved(
+    [&outputs](ReformationOutput output)
     {
-      throw InputError(reserved.Flag + " (" + reserved.Path + "): no cut surface was computed for these outputs");
-    }
-  }
-  for (const Reserved & reserved : m_Reserved)
-  {
-    m_Staged.Write(reserved.Handle,
-                   [&](const std::string & path)
-                   {
-                     switch (reserved.Output)
-                     {
-                       case ReformationOutput::CPR:
-                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.CPR), path);
-                         break;
-                       case ReformationOutput::CPRPNG:
-                         WriteWindowedPNG(ConvertVolumeNodeToDepthImage(outputs.CPR), window, level, path);
-                         break;
-                       case ReformationOutput::UnfilteredCPR:
-                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR), path);
-                         break;
-                       case ReformationOutput::Depth:
-                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.Depth), path);
-                         break;
-                       case ReformationOutput::RelaxedDepth:
-                         WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth), path);
-                         break;
-                       case ReformationOutput::FixedMask:
-                         WriteImage2D(ConvertVolumeNodeToMaskImage(outputs.FixedMask), path);
-                         break;
-                       case ReformationOutput::OwnerLabels:
-                         WriteImage2D(ConvertVolumeNodeToLabelImage(outputs.OwnerLabels), path);
-                         break;
-                       case ReformationOutput::CutSurface:
-                         // As 3D Slicer writes models: LPS, the space recorded in the file, so Slicer loads it in
-                         // place. The logic's surface is RAS.
-                         WriteSurface(outputs.Surface, path, CoordinateSpace::RAS, CoordinateSpace::LPS);
-                         break;
-                     }
-                   });
-  }
-}
-
-void
-OutputWriter::CommitAll()
-{
-  m_Staged.CommitAll();
+      return output == ReformationOutput::CutSurface && !outputs.Surface
+               ? std::string("no cut surface was computed for these outputs")
+               : std::string();
+    },
+    [&](ReformationOutput output, const std::string & path)
+    {
+      switch (output)
+      {
+        case ReformationOutput::CPR:
+          WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.CPR), path);
+          break;
+        case ReformationOutput::CPRPNG:
+          WriteWindowedPNG(ConvertVolumeNodeToDepthImage(outputs.CPR), window, level, path);
+          break;
+        case ReformationOutput::UnfilteredCPR:
+          WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.UnfilteredCPR), path);
+          break;
+        case ReformationOutput::Depth:
+          WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.Depth), path);
+          break;
+        case ReformationOutput::RelaxedDepth:
+          WriteImage2D(ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth), path);
+          break;
+        case ReformationOutput::FixedMask:
+          WriteImage2D(ConvertVolumeNodeToMaskImage(outputs.FixedMask), path);
+          break;
+        case ReformationOutput::OwnerLabels:
+          WriteImage2D(ConvertVolumeNodeToLabelImage(outputs.OwnerLabels), path);
+          break;
+        case ReformationOutput::CutSurface:
+          // As 3D Slicer writes models: LPS, the space recorded in the file, so Slicer loads it in place. The
+          // logic's surface is RAS.
+          WriteSurface(outputs.Surface, path, CoordinateSpace::RAS, CoordinateSpace::LPS);
+          break;
+      }
+    });
 }
 
 std::vector<std::string>

@@ -2,10 +2,9 @@
 #ifndef vrOutputWriter_h
 #define vrOutputWriter_h
 
-#include "vrStagedOutputs.h"
+#include "vrStagedOutputWriter.h"
 #include "vrVesselReformationLogic.h"
 
-#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -45,51 +44,22 @@ struct OutputSelection
 
 /** \class OutputWriter
  * \brief The one writer of a reformation's outputs (the command-line module, the viewer and the demo use it), all or
- * nothing through vr::StagedOutputs (docs/design.md section 5).
+ * nothing on the shape every output writer shares (vr::StagedOutputWriter: reserve before the work, write into
+ * staging, publish together; docs/design.md section 5).
  *
- * Each output is reserved first, before the work, so that a bad path fails at once; Write() then writes every
- * reserved output into the staging folder and CommitAll() publishes them together. Until CommitAll() nothing appears
- * and existing files of the same names are left as they were. The cut surface is written in LPS with "SPACE" recorded
- * in the file, as 3D Slicer writes models (vr::WriteSurface), from the logic's RAS surface.
+ * What is its own: the outputs (vr::ReformationOutput), the cut surface needed when it is reserved, and how each is
+ * written. The cut surface is written in LPS with "SPACE" recorded in the file, as 3D Slicer writes models
+ * (vr::WriteSurface), from the logic's RAS surface.
  * \ingroup VesselReformation
  */
-class OutputWriter
+class OutputWriter : public StagedOutputWriter<ReformationOutput>
 {
 public:
-  /** Reserves \a output at \a path (vr::StagedOutputs::Add: the folder is checked now).
-   * \param flag how the caller names it in messages ("--outputDepth", "cpr.png").
-   * Throws vr::InputError naming the flag; an output reserved twice is an error as well. */
-  void
-  Add(ReformationOutput output, const std::string & path, const std::string & flag);
-
-  /** \return whether \a output is reserved. */
-  bool
-  Has(ReformationOutput output) const;
-
-  /** \return the final paths of the reserved outputs, in the order they were reserved. */
-  std::vector<std::string>
-  Paths() const;
-
   /** Writes every reserved output of \a outputs into the staging folder. The PNG goes through \a window (> 0) and
    * \a level. Throws vr::InputError naming the flag and the path, or saying which output \a outputs lacks (the cut
    * surface when it was not computed); nothing is published then. */
   void
   Write(const ReformationOutputs & outputs, double window, double level);
-
-  /** Publishes every written output together (vr::StagedOutputs::CommitAll). */
-  void
-  CommitAll();
-
-private:
-  struct Reserved
-  {
-    ReformationOutput Output;
-    std::size_t       Handle;
-    std::string       Path;
-    std::string       Flag;
-  };
-  StagedOutputs         m_Staged;
-  std::vector<Reserved> m_Reserved;
 };
 
 /** Writes the outputs \a selection asks for into \a folder under their OutputFileName()s, all or nothing.

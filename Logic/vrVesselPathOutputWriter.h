@@ -2,11 +2,10 @@
 #ifndef vrVesselPathOutputWriter_h
 #define vrVesselPathOutputWriter_h
 
-#include "vrStagedOutputs.h"
+#include "vrStagedOutputWriter.h"
 #include "vrVesselPathLogic.h"
 
 #include <string>
-#include <vector>
 
 namespace vr
 {
@@ -26,36 +25,25 @@ enum class VesselPathOutput
 };
 
 /** \class VesselPathOutputWriter
- * \brief Writes the outputs of a single-vessel reading all or nothing (vr::StagedOutputs): each is reserved before
- * the work, written into staging, and published together by CommitAll().
+ * \brief Writes the outputs of a single-vessel reading all or nothing, on the shape every output writer shares
+ * (vr::StagedOutputWriter: each is reserved before the work, written into staging, and published together by
+ * CommitAll()). What is its own: the outputs (vr::VesselPathOutput), a lumen table's extension checked when it is
+ * reserved, what each output needs, and how it is written.
  * \ingroup VesselReformation
  */
-class VesselPathOutputWriter
+class VesselPathOutputWriter : public StagedOutputWriter<VesselPathOutput>
 {
 public:
-  /** Reserves \a output at \a path; \a flag names it in messages. Throws vr::InputError naming the flag when the
-   * folder is not writable, the path is taken twice, or a lumen table's extension is neither .csv nor .tsv. */
-  void
-  Add(VesselPathOutput output, const std::string & path, const std::string & flag);
-  bool
-  Has(VesselPathOutput output) const;
-  /** Writes every reserved output of \a results into staging. Throws vr::InputError naming the flag when an output
-   * asked for was not computed (a lumen table without a lumen) or a write fails. */
+  /** Writes every reserved output of \a results into staging. Throws vr::InputError naming the flag and the path
+   * when an output asked for was not computed (a lumen table without a lumen), before anything is written, or naming
+   * the flag when a write fails. */
   void
   Write(const VesselPathResults & results);
-  /** Publishes what Write() staged. */
-  void
-  CommitAll();
 
-private:
-  struct Reserved
-  {
-    VesselPathOutput Output;
-    std::size_t      Handle;
-    std::string      Flag;
-  };
-  StagedOutputs         m_Staged;
-  std::vector<Reserved> m_Reserved;
+protected:
+  /** A lumen table is CSV or TSV by its extension (vr::LumenTableSeparator): any other is refused by Add(). */
+  void
+  CheckPath(VesselPathOutput output, const std::string & path) const override;
 };
 } // namespace vr
 

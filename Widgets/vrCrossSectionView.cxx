@@ -2,10 +2,9 @@
 #include "vrCrossSectionView.h"
 
 #include "vrGreyImage.h"
+#include "vrSectionStepper.h"
 
-#include <QKeyEvent>
 #include <QPainter>
-#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +18,9 @@ CrossSectionView::CrossSectionView(QWidget * parent)
   setMinimumSize(160, 160);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setToolTip(tr("The cross-section perpendicular to the path at the position shown on the straightened CPR; the "
-                "circle has the section's lumen diameter. The wheel and the Up/Down keys move it by one section."));
+                "circle has the section's lumen diameter; %1.")
+               .arg(SectionStepper::Help()));
+  connect(new SectionStepper(this), &SectionStepper::stepped, this, &CrossSectionView::stepped);
 }
 
 void
@@ -96,32 +97,5 @@ CrossSectionView::paintEvent(QPaintEvent *)
   }
   painter.setPen(Qt::white);
   painter.drawText(QRectF(4.0, 2.0, width() - 8.0, 18.0), Qt::AlignLeft | Qt::AlignVCenter, m_Caption);
-}
-
-void
-CrossSectionView::wheelEvent(QWheelEvent * event)
-{
-  const int notches = -event->angleDelta().y() / 120;
-  if (notches != 0)
-  {
-    emit stepped(notches);
-  }
-  event->accept();
-}
-
-void
-CrossSectionView::keyPressEvent(QKeyEvent * event)
-{
-  switch (event->key())
-  {
-    case Qt::Key_Up:
-      emit stepped(-1);
-      return;
-    case Qt::Key_Down:
-      emit stepped(1);
-      return;
-    default:
-      QWidget::keyPressEvent(event);
-  }
 }
 } // namespace vr

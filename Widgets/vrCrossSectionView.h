@@ -16,7 +16,7 @@ namespace vr
  * middle), through window and level, with a cross at the path point and, when the lumen was measured, a circle of
  * the section's diameter (display only: the measurement is the logic's). QPainter draws it.
  *
- * The wheel and the Up/Down keys step the position by one section (stepped()), as in the straightened CPR.
+ * The wheel, Up/Down and Page Up/Down step the position as in the straightened CPR (vr::SectionStepper; stepped()).
  * \sa VesselPathPanel
  * \ingroup VesselReformation
  */
@@ -66,10 +66,6 @@ signals:
 protected:
   void
   paintEvent(QPaintEvent * event) override;
-  void
-  wheelEvent(QWheelEvent * event) override;
-  void
-  keyPressEvent(QKeyEvent * event) override;
 
 private:
   VolumeImageType::ConstPointer m_Stack;

@@ -2,11 +2,10 @@
 #include "vrStraightenedCPRView.h"
 
 #include "vrGreyImage.h"
+#include "vrSectionStepper.h"
 
-#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
-#include <QWheelEvent>
 
 #include <algorithm>
 
@@ -19,8 +18,9 @@ StraightenedCPRView::StraightenedCPRView(QWidget * parent)
   setMinimumSize(120, 200);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setToolTip(tr("The straightened CPR of the vessel path: left-drag rolls it about the path, right-click puts the "
-                "cross-section at that row, the wheel and the Up/Down keys move the cross-section by one section "
-                "(Page Up/Down by ten)."));
+                "cross-section at that row, %1.")
+               .arg(SectionStepper::Help()));
+  connect(new SectionStepper(this), &SectionStepper::stepped, this, &StraightenedCPRView::stepped);
 }
 
 void
@@ -154,39 +154,5 @@ StraightenedCPRView::mouseReleaseEvent(QMouseEvent * event)
     emit rollDragged(DegreesPerPixel * (event->localPos().x() - m_DragStart.x()), true);
   }
   m_Drag = Qt::NoButton;
-}
-
-void
-StraightenedCPRView::wheelEvent(QWheelEvent * event)
-{
-  // Wheel down moves down the image: towards the path's end.
-  const int notches = -event->angleDelta().y() / 120;
-  if (notches != 0)
-  {
-    emit stepped(notches);
-  }
-  event->accept();
-}
-
-void
-StraightenedCPRView::keyPressEvent(QKeyEvent * event)
-{
-  switch (event->key())
-  {
-    case Qt::Key_Up:
-      emit stepped(-1);
-      return;
-    case Qt::Key_Down:
-      emit stepped(1);
-      return;
-    case Qt::Key_PageUp:
-      emit stepped(-10);
-      return;
-    case Qt::Key_PageDown:
-      emit stepped(10);
-      return;
-    default:
-      QWidget::keyPressEvent(event);
-  }
 }
 } // namespace vr

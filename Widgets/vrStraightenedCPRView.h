@@ -18,7 +18,8 @@ namespace vr
  *
  * - left-drag horizontally rolls the image about the path: rollDragged() reports DegreesPerPixel per pixel;
  * - right-click or right-drag puts the cross-section at the row under the mouse (rowPicked());
- * - the wheel and the Up/Down keys step the cross-section by one section (Page Up/Down by ten; stepped()).
+ * - the wheel and the Up/Down keys step the cross-section by one section, Page Up/Down by ten (vr::SectionStepper,
+ *   as in the cross-section view; stepped()).
  * \sa VesselPathPanel
  * \ingroup VesselReformation
  */
@@ -90,10 +91,6 @@ protected:
   mouseMoveEvent(QMouseEvent * event) override;
   void
   mouseReleaseEvent(QMouseEvent * event) override;
-  void
-  wheelEvent(QWheelEvent * event) override;
-  void
-  keyPressEvent(QKeyEvent * event) override;
 
 private:
   DepthImageType::ConstPointer m_Image;

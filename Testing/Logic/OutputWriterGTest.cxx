@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// The one writer of a reformation's outputs (vrOutputWriter.h) and the one description of the filter settings
-// (vrFilterSettingsText.h): the files and their contents, the cut surface in LPS with its marker, all or nothing.
+// The one writer of a reformation's outputs (vrOutputWriter.h), the single-vessel reading's writer on the same shape
+// (vrVesselPathOutputWriter.h), and the one description of the filter settings (vrFilterSettingsText.h): the files
+// and their contents, the cut surface in LPS with its marker, all or nothing.
 
 #include "itkCTAPhantom.h"
 #include "vrFilterSettingsText.h"
@@ -8,7 +9,9 @@
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
 #include "vrOutputWriter.h"
+#include "vrVesselPathOutputWriter.h"
 #include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
 
 #include "vrTestFiles.h"
 
@@ -71,6 +74,56 @@ SpaceMarker(vtkPolyData * surface)
 {
   auto * space = vtkStringArray::SafeDownCast(surface->GetFieldData()->GetAbstractArray("SPACE"));
   return space && space->GetNumberOfValues() == 1 ? space->GetValue(0) : std::string("(no SPACE array)");
+}
+
+/** An image of \a size whose pixel k (in buffer order) holds \a value(k): contents a test can name by hand. */
+template<typename TImage, typename TValue>
+typename TImage::Pointer
+NumberedImage(const typename TImage::SizeType & size, TValue value)
+{
+  auto image = TImage::New();
+  image->SetRegions(typename TImage::RegionType(size));
+  image->Allocate();
+  const auto count = image->GetLargestPossibleRegion().GetNumberOfPixels();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    image->GetBufferPointer()[k] = value(k);
+  }
+  return image;
+}
+
+/** A single-vessel reading's results made by hand: a 3 x 4 CPR holding 0.5 k, a fold mask of alternate pixels, a
+ * 2 x 2 x 3 cross-section stack holding k; no point image, no lumen. */
+vr::VesselPathResults
+HandMadeVesselPathResults()
+{
+  vr::VesselPathResults results;
+  results.CPR = NumberedImage<vr::DepthImageType>({ { 3, 4 } }, [](std::size_t k) { return 0.5f * k; });
+  results.FoldMask = NumberedImage<vr::MaskImageType>({ { 3, 4 } }, [](std::size_t k) { return k % 2; });
+  results.CrossSections =
+    NumberedImage<vr::VolumeImageType>({ { 2, 2, 3 } }, [](std::size_t k) { return static_cast<float>(k); });
+  return results;
+}
+
+/** Whether \a written holds \a expected's pixels, in order. */
+template<typename TImage, typename TExpected>
+bool
+SamePixels(const TImage * written, const TExpected * expected)
+{
+  const auto count = expected->GetLargestPossibleRegion().GetNumberOfPixels();
+  return written->GetLargestPossibleRegion().GetSize() == expected->GetLargestPossibleRegion().GetSize() &&
+         std::equal(expected->GetBufferPointer(), expected->GetBufferPointer() + count, written->GetBufferPointer());
+}
+
+std::size_t
+Occurrences(const std::string & text, const std::string & word)
+{
+  std::size_t count = 0;
+  for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + word.size()))
+  {
+    ++count;
+  }
+  return count;
 }
 } // namespace
 
@@ -202,4 +255,95 @@ TEST(OutputWriter, WritesNothingOnAnAbandonedRunAndRefusesAnEmptySelection)
                                 900.0,
                                 200.0),
                vr::InputError);
+}
+
+// The single-vessel writer: each reserved output, nothing else, with the hand-made results' pixels.
+TEST(VesselPathOutputWriter, WritesEachReservedOutputAndNothingElse)
+{
+  const vr::VesselPathResults results = HandMadeVesselPathResults();
+  ScopedTemporaryFolder       folder;
+  vr::VesselPathOutputWriter  writer;
+  writer.Add(vr::VesselPathOutput::CPR, folder.File("cpr.nrrd"), "--outputCPR");
+  writer.Add(vr::VesselPathOutput::FoldMask, folder.File("folds.nrrd"), "--outputFoldMask");
+  writer.Add(vr::VesselPathOutput::CrossSections, folder.File("sections.nrrd"), "--outputCrossSections");
+  EXPECT_TRUE(writer.Has(vr::VesselPathOutput::FoldMask));
+  EXPECT_FALSE(writer.Has(vr::VesselPathOutput::Points));
+  EXPECT_FALSE(writer.Has(vr::VesselPathOutput::LumenTable));
+  writer.Write(results);
+  // Staged, not published: the folder holds the run's staging folder alone until CommitAll.
+  const std::vector<std::string> staged = folder.Entries();
+  ASSERT_EQ(staged.size(), 1u);
+  EXPECT_EQ(staged[0].rfind(".vr-staging-", 0), 0u) << staged[0];
+  writer.CommitAll();
+  const std::vector<std::string> expected = { "cpr.nrrd", "folds.nrrd", "sections.nrrd" };
+  EXPECT_EQ(folder.Entries(), expected) << "no staging folder left behind either";
+  EXPECT_TRUE(SamePixels(vr::ReadDepthImage(folder.File("cpr.nrrd")).GetPointer(), results.CPR.GetPointer()));
+  EXPECT_TRUE(SamePixels(vr::ReadMaskImage(folder.File("folds.nrrd")).GetPointer(), results.FoldMask.GetPointer()));
+  EXPECT_TRUE(
+    SamePixels(vr::ReadVolume(folder.File("sections.nrrd")).GetPointer(), results.CrossSections.GetPointer()));
+}
+
+// An output asked for but not computed is refused naming its flag (once) and what is missing; nothing is published,
+// an older file of the same name is kept.
+TEST(VesselPathOutputWriter, WritesNothingWhenAnOutputWasNotComputed)
+{
+  struct Case
+  {
+    vr::VesselPathOutput Output;
+    const char *         Name;
+    const char *         Flag;
+    const char *         Missing;
+  };
+  const Case cases[] = {
+    { vr::VesselPathOutput::LumenTable, "lumen.csv", "--outputLumenTable", "no lumen to tabulate" },
+    { vr::VesselPathOutput::Points, "points.nrrd", "--outputPoints", "the point image" },
+  };
+  for (const Case & missing : cases)
+  {
+    SCOPED_TRACE(missing.Flag);
+    vr::VesselPathResults results = HandMadeVesselPathResults();
+    ScopedTemporaryFolder folder;
+    vr::test::WriteTextFile(folder.File(missing.Name), "an older file");
+    {
+      vr::VesselPathOutputWriter writer;
+      writer.Add(vr::VesselPathOutput::CPR, folder.File("cpr.nrrd"), "--outputCPR");
+      writer.Add(missing.Output, folder.File(missing.Name), missing.Flag);
+      try
+      {
+        writer.Write(results);
+        ADD_FAILURE() << "an output that was not computed must be refused";
+      }
+      catch (const vr::InputError & error)
+      {
+        EXPECT_EQ(Occurrences(error.what(), missing.Flag), 1u) << error.what();
+        EXPECT_NE(std::string(error.what()).find(missing.Missing), std::string::npos) << error.what();
+      }
+    } // the failed run ends: its staging folder goes
+    EXPECT_EQ(folder.Entries(), std::vector<std::string>{ missing.Name });
+    EXPECT_EQ(vr::test::ReadTextFile(folder.File(missing.Name)), "an older file");
+  }
+}
+
+// A lumen table is CSV or TSV by its extension: any other is refused when it is reserved, before any work, and an
+// output reserved twice is refused as the reformation's writer refuses it.
+TEST(VesselPathOutputWriter, RefusesALumenTableOfAnotherExtensionAndAnOutputReservedTwiceAtOnce)
+{
+  ScopedTemporaryFolder folder;
+  {
+    vr::VesselPathOutputWriter writer;
+    try
+    {
+      writer.Add(vr::VesselPathOutput::LumenTable, folder.File("lumen.txt"), "--outputLumenTable");
+      ADD_FAILURE() << "a lumen table named .txt must be refused";
+    }
+    catch (const vr::InputError & error)
+    {
+      EXPECT_NE(std::string(error.what()).find("--outputLumenTable"), std::string::npos) << error.what();
+      EXPECT_NE(std::string(error.what()).find("lumen.txt"), std::string::npos) << error.what();
+    }
+    EXPECT_FALSE(writer.Has(vr::VesselPathOutput::LumenTable));
+    writer.Add(vr::VesselPathOutput::CPR, folder.File("cpr.nrrd"), "--outputCPR");
+    EXPECT_THROW(writer.Add(vr::VesselPathOutput::CPR, folder.File("again.nrrd"), "--outputCPR"), vr::InputError);
+  }
+  EXPECT_EQ(folder.Entries(), std::vector<std::string>{});
 }

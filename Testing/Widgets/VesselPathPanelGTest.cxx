@@ -320,6 +320,50 @@ TEST_F(VesselPathPanelTest, MovingTheCrossSectionMovesTheMarkersOfAllThreeViewsT
   EXPECT_NEAR(visited[2] - visited[1], 5.0 * Panel().GetLogic().GetResults().SectionSpacing, 1e-6);
 }
 
+// Every view that moves the cross-section takes the same keys and wheel (docs/viewer.md): Up/Down one section, Page
+// Up/Down ten, a wheel notch one (down: towards the path's end); the cross-section view shows the section reached.
+TEST_F(VesselPathPanelTest, EveryViewMovesTheCrossSectionByTheSameKeysAndWheel)
+{
+  OpenALeafPath();
+  ASSERT_TRUE(Panel().HasPath());
+  const int count = static_cast<int>(Panel().GetLogic().GetResults().Sections.size());
+  ASSERT_GE(count, 30) << "the path is too short to step ten sections either way";
+  const int       middle = count / 2;
+  QWidget * const views[] = { Panel().GetCrossSectionView(), Panel().GetStraightenedView() };
+  for (QWidget * view : views)
+  {
+    SCOPED_TRACE(view->metaObject()->className());
+    view->setFocus();
+    Panel().SetSectionIndex(middle);
+    int        expected = middle;
+    const auto moved = [&](const char * how, int sections)
+    {
+      SCOPED_TRACE(how);
+      expected += sections;
+      EXPECT_EQ(Panel().GetSectionIndex(), expected);
+      EXPECT_EQ(static_cast<int>(Panel().GetCrossSectionView()->GetSliceIndex()), expected);
+    };
+    QTest::keyClick(view, Qt::Key_PageDown);
+    moved("Page Down", 10);
+    QTest::keyClick(view, Qt::Key_Down);
+    moved("Down", 1);
+    QTest::keyClick(view, Qt::Key_PageUp);
+    moved("Page Up", -10);
+    QTest::keyClick(view, Qt::Key_Up);
+    moved("Up", -1);
+    SendWheel(view, -2);
+    moved("two wheel notches down", 2);
+    SendWheel(view, 1);
+    moved("a wheel notch up", -1);
+    QTest::keyClick(view, Qt::Key_A);
+    moved("a key that moves nothing", 0);
+  }
+  // Near the path's end, Page Down stops at the last section.
+  Panel().SetSectionIndex(count - 3);
+  QTest::keyClick(Panel().GetCrossSectionView(), Qt::Key_PageDown);
+  EXPECT_EQ(Panel().GetSectionIndex(), count - 1);
+}
+
 TEST_F(VesselPathPanelTest, ThePlotsMinimalLumenDiameterIsTheExportedTables)
 {
   OpenALeafPath();
