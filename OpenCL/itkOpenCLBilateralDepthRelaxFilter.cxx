@@ -297,6 +297,26 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   m_DeviceState = std::move(state);
 }
 
+std::size_t
+OpenCLBilateralDepthRelaxFilter::GetWorkspaceBytes(const SizeType & size, bool coarserGrids)
+{
+  if (this->GetSolver() == BilateralDepthRelaxSolver::Steady)
+  {
+    return Superclass::GetWorkspaceBytes(size, coarserGrids);
+  }
+  const std::size_t width = size[0];
+  const std::size_t height = size[1];
+  std::size_t       bytes = width * height * sizeof(float); // RelaxOnDevice()'s low plane
+  if (m_DeviceState && m_DeviceState->Info.IsCPU)
+  {
+    const KernelShape & shape = m_DeviceState->Shape;
+    const std::size_t   vectorWidth = shape.VectorWidth;
+    const std::size_t   pitch = vectorWidth + RoundUp(width, vectorWidth * shape.VectorsPerItem) + vectorWidth;
+    bytes += 2 * 2 * pitch * height * sizeof(float) + pitch * height;
+  }
+  return bytes;
+}
+
 void
 OpenCLBilateralDepthRelaxFilter::GenerateData()
 {
