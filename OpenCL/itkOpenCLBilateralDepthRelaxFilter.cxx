@@ -304,17 +304,15 @@ OpenCLBilateralDepthRelaxFilter::GetWorkspaceBytes(const SizeType & size, bool c
   {
     return Superclass::GetWorkspaceBytes(size, coarserGrids);
   }
-  const std::size_t width = size[0];
-  const std::size_t height = size[1];
-  std::size_t       bytes = width * height * sizeof(float); // RelaxOnDevice()'s low plane
-  if (m_DeviceState && m_DeviceState->Info.IsCPU)
+  if (!m_DeviceState || !m_DeviceState->Info.IsCPU)
   {
-    const KernelShape & shape = m_DeviceState->Shape;
-    const std::size_t   vectorWidth = shape.VectorWidth;
-    const std::size_t   pitch = vectorWidth + RoundUp(width, vectorWidth * shape.VectorsPerItem) + vectorWidth;
-    bytes += 2 * 2 * pitch * height * sizeof(float) + pitch * height;
+    return 0; // a GPU's buffers are in its own memory
   }
-  return bytes;
+  // RelaxOnDevice()'s two buffers of high and low planes and the mask, on rows of the layout's pitch.
+  const KernelShape & shape = m_DeviceState->Shape;
+  const std::size_t   vectorWidth = shape.VectorWidth;
+  const std::size_t   pitch = vectorWidth + RoundUp(size[0], vectorWidth * shape.VectorsPerItem) + vectorWidth;
+  return 2 * 2 * pitch * size[1] * sizeof(float) + pitch * size[1];
 }
 
 void
