@@ -4,22 +4,26 @@
 // phantom, after a small update has converted the inputs and warmed every filter (so the volume, the tree and the
 // code are not counted). The growth of the peak resident memory is printed beside it.
 //
-//   MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom runoff|thorax] [--tolerance F]
+//   MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom runoff|thorax|aorta] [--tolerance F]
 //
-// Prints the allocated and predicted bytes per view pixel, and the prediction for the path the update took (a steady
-// solve that lagged weights finish, as the run-off phantom's, allocates no coarser grid; the check counts them, as
-// whether a solve starts from them depends on the map). With --tolerance, exits 1 when the prediction for that path
-// differs by more than the fraction F of the allocated bytes, or the check's prediction falls short of them by more.
-// Linux (glibc) only: the resident peak is VmHWM of /proc/self/status, reset through /proc/self/clear_refs.
+// With --phantom aorta, the VMTK aorta MRA of VR_SHARED_DATA_DIR (real data). Prints the allocated and predicted
+// bytes per view pixel, and the prediction for the path the update took (a steady solve that lagged weights finish,
+// as the run-off phantom's and the aorta's, allocates no coarser grid; the check counts them, as whether a solve
+// starts from them depends on the map). With --tolerance, exits 1 when the prediction for that path differs by more
+// than the fraction F of the allocated bytes, or the check's prediction falls short of them by more. Linux (glibc)
+// only: the resident peak is VmHWM of /proc/self/status, reset through /proc/self/clear_refs.
 #include "itkCTAPhantom.h"
 #include "itkMultiThreaderBase.h"
 #include "vrAllocationCounter.h"
+#include "vrCenterlineIO.h"
 #include "vrMemoryBudget.h"
 #include "vrNodeConversion.h"
 #include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -85,15 +89,27 @@ main(int argc, char ** argv)
   }
   try
   {
-    auto phantom =
-      itk::MakeCTAPhantom(itk::ParseCTAPhantomKind(phantomName), 3.0); // coarse: the volume is not measured
-    phantom.Source->Update();
     vr::VesselReformationLogic logic;
-    logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), "phantom"));
-    logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom.Tree, "centerlines"));
+    vr::ReformationParameters  parameters;
+    if (phantomName == "aorta")
+    {
+      // The VMTK aorta MRA (real data), its up direction chosen automatically as the benchmarks view it.
+      const std::filesystem::path folder = std::filesystem::path(VR_SHARED_DATA_DIR) / "vmtk-aorta-mra";
+      logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(vr::ReadVolume((folder / "aorta.mha").string()), "aorta"));
+      logic.SetCenterlineNode(
+        vr::ConvertTreeToCenterlineNode(vr::ReadCenterlines((folder / "aorta-centerline.vtp").string()), "centerline"));
+      parameters.AutomaticUp = true;
+    }
+    else
+    {
+      auto phantom =
+        itk::MakeCTAPhantom(itk::ParseCTAPhantomKind(phantomName), 3.0); // coarse: the volume is not measured
+      phantom.Source->Update();
+      logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), "phantom"));
+      logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom.Tree, "centerlines"));
+      parameters.AngleInDegrees = phantom.DesignAngleInDegrees;
+    }
     logic.SetSurfaceEnabled(surface);
-    vr::ReformationParameters parameters;
-    parameters.AngleInDegrees = phantom.DesignAngleInDegrees;
     parameters.Backend = vr::RelaxBackend::CPU;
     parameters.Solver =
       solver == "steady" ? itk::BilateralDepthRelaxSolver::Steady : itk::BilateralDepthRelaxSolver::Jacobi;
