@@ -298,11 +298,11 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
 }
 
 std::size_t
-OpenCLBilateralDepthRelaxFilter::GetWorkspaceBytes(const SizeType & size, bool coarserGrids)
+OpenCLBilateralDepthRelaxFilter::GetWorkspaceBytes(const SizeType & size)
 {
   if (this->GetSolver() == BilateralDepthRelaxSolver::Steady)
   {
-    return Superclass::GetWorkspaceBytes(size, coarserGrids);
+    return Superclass::GetWorkspaceBytes(size);
   }
   if (!m_DeviceState || !m_DeviceState->Info.IsCPU)
   {

@@ -103,7 +103,7 @@ public:
    * is downloaded through (4 bytes a pixel) is freed at the end of the update. Steady runs on the CPU: the
    * superclass's bytes. */
   std::size_t
-  GetWorkspaceBytes(const SizeType & size, bool coarserGrids = true) override;
+  GetWorkspaceBytes(const SizeType & size) override;
 
 protected:
   OpenCLBilateralDepthRelaxFilter();

@@ -162,14 +162,14 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GetNumberOfHostThreads()
 
 template<typename TImage, typename TMaskImage>
 std::size_t
-BilateralDepthRelaxFilter<TImage, TMaskImage>::GetWorkspaceBytes(const SizeType & size, bool coarserGrids)
+BilateralDepthRelaxFilter<TImage, TMaskImage>::GetWorkspaceBytes(const SizeType & size)
 {
   const std::size_t  width = size[0];
   const std::size_t  height = size[1];
   const unsigned int threads = this->GetNumberOfHostThreads();
   if (m_Solver == BilateralDepthRelaxSolver::Steady)
   {
-    return BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(width, height, threads, coarserGrids);
+    return BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(width, height, threads);
   }
   // RelaxOnHostFast(): the mask as bytes unless it is already, and the kernel's buffers (none when w = 0).
   std::size_t bytes = 0;
