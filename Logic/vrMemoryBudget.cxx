@@ -26,24 +26,21 @@ Gibibytes(double bytes)
 } // namespace
 
 double
-EstimateReformationBytes(const itk::Size<2> & size, itk::BilateralDepthRelaxSolver solver, bool surface)
+EstimateReformationBytes(const itk::Size<2> & size, std::size_t relaxWorkspaceBytes, bool surface)
 {
-  // Bytes per view pixel at the peak of an update, measured as the growth of the peak resident memory
-  // (Testing/Tools/MeasureReformationMemory, the same at 256 x 512, 512 x 1024 and 1024 x 2048 within 2 %):
-  // - every update: the centerline raster, the depth assignment, the depth filter's outputs, the relaxed depth and
-  //   the Jacobi passes' second buffer, both CPR images and the output nodes of all of them: 92;
-  // - the steady solver's workspace instead of the Jacobi buffer (its multigrid levels, regions and CG vectors): 74;
+  // Bytes per view pixel at the peak of an update besides the relaxation's workspace, counted as allocated bytes
+  // (Testing/Tools/MeasureReformationMemory; 71.0-71.3 and 83.8-83.9 at 256 x 512, 512 x 1024 and 1024 x 2048):
+  // - every update: the centerline raster, the depth assignment, the depth filter's outputs, the relaxed depth, both
+  //   CPR images and the output nodes of all of them: 71;
   // - the cut surface: points, scalars and two triangles a pixel: 84.
-  double perPixel = 92.0;
-  if (solver == itk::BilateralDepthRelaxSolver::Steady)
-  {
-    perPixel += 74.0;
-  }
+  // The relax filter keeps its workspace through the stages after it, so it adds to the peak whole.
+  double perPixel = 71.0;
   if (surface)
   {
     perPixel += 84.0;
   }
-  return perPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]);
+  return perPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]) +
+         static_cast<double>(relaxWorkspaceBytes);
 }
 
 double
@@ -66,10 +63,10 @@ AvailableMemoryInBytes()
 }
 
 void
-CheckViewFitsInMemory(const itk::CPRViewGeometry &   view,
-                      bool                           sizeGiven,
-                      itk::BilateralDepthRelaxSolver solver,
-                      bool                           surface)
+CheckViewFitsInMemory(const itk::CPRViewGeometry &                           view,
+                      bool                                                   sizeGiven,
+                      itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & relax,
+                      bool                                                   surface)
 {
   const auto &       size = view.GetSize();
   std::ostringstream origin;
@@ -88,7 +85,7 @@ CheckViewFitsInMemory(const itk::CPRViewGeometry &   view,
     throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
                      parameter);
   }
-  const double needed = EstimateReformationBytes(size, solver, surface);
+  const double needed = EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface);
   const double available = AvailableMemoryInBytes();
   if (needed > available)
   {

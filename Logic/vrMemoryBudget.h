@@ -2,8 +2,11 @@
 #ifndef vrMemoryBudget_h
 #define vrMemoryBudget_h
 
-#include "itkBilateralDepthRelaxSolver.h"
+#include "itkBilateralDepthRelaxFilter.h"
+#include "itkImage.h"
 #include "itkSize.h"
+
+#include <cstddef>
 
 namespace itk
 {
@@ -13,14 +16,16 @@ class CPRViewGeometry;
 namespace vr
 {
 /** \param size a view's size in pixels.
- * \param solver the relaxation's solver (the steady one keeps a larger workspace).
+ * \param relaxWorkspaceBytes the workspace the relax filter allocates for a depth map of that size and keeps through
+ * the later stages (BilateralDepthRelaxFilter::GetWorkspaceBytes).
  * \param surface whether the update builds the cut surface.
- * \return the bytes the reformation of that view needs at its peak: depth, mask, labels, relaxation workspace, both
- * CPRs, the output nodes and the surface; within 10 % of what an update really takes (a test measures it). */
+ * \return the bytes the reformation of that view allocates at its peak: the stages' images and nodes (depth, mask,
+ * labels, relaxed depth, both CPRs, the output nodes; measured per view pixel), the relaxation's workspace as its
+ * filter reports it, and the surface. A test counts what updates allocate: with the workspace of the path a solve
+ * takes, within 10 % (measured: 0.2 %); CheckViewFitsInMemory() counts the most a steady solve allocates (its
+ * coarser grids), 14 to 21 % above an update whose solve needs none (docs/design.md 3.7). */
 double
-EstimateReformationBytes(const itk::Size<2> &           size,
-                         itk::BilateralDepthRelaxSolver solver = itk::BilateralDepthRelaxSolver::Jacobi,
-                         bool                           surface = true);
+EstimateReformationBytes(const itk::Size<2> & size, std::size_t relaxWorkspaceBytes, bool surface = true);
 
 /** \return the memory this process may still allocate, in bytes (MemAvailable of /proc/meminfo, else the free
  * physical pages). */
@@ -28,13 +33,13 @@ double
 AvailableMemoryInBytes();
 
 /** Refuses, before anything is allocated, a view of more than INT_MAX pixels a side or one whose reformation would
- * need more than AvailableMemoryInBytes() (EstimateReformationBytes() with \a solver and \a surface): vr::InputError
- * naming the view size (\a sizeGiven) or else the pixel spacing it follows from. */
+ * need more than AvailableMemoryInBytes() (EstimateReformationBytes() with \a relax's workspace and \a surface):
+ * vr::InputError naming the view size (\a sizeGiven) or else the pixel spacing it follows from. */
 void
-CheckViewFitsInMemory(const itk::CPRViewGeometry &   view,
-                      bool                           sizeGiven,
-                      itk::BilateralDepthRelaxSolver solver,
-                      bool                           surface);
+CheckViewFitsInMemory(const itk::CPRViewGeometry &                           view,
+                      bool                                                   sizeGiven,
+                      itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & relax,
+                      bool                                                   surface);
 } // namespace vr
 
 #endif

@@ -578,7 +578,7 @@ VesselReformationLogic::Update()
     }
     detail::RethrowFilterError("view", error);
   }
-  CheckViewFitsInMemory(d.Depth->GetView(), d.Parameters.ImageSize[0] > 0, d.Parameters.Solver, d.SurfaceEnabled);
+  CheckViewFitsInMemory(d.Depth->GetView(), d.Parameters.ImageSize[0] > 0, *d.Relax, d.SurfaceEnabled);
   d.PlanProgress();
 
   const StageCounts before = GetStageExecutionCounts();

@@ -297,6 +297,24 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   m_DeviceState = std::move(state);
 }
 
+std::size_t
+OpenCLBilateralDepthRelaxFilter::GetWorkspaceBytes(const SizeType & size)
+{
+  if (this->GetSolver() == BilateralDepthRelaxSolver::Steady)
+  {
+    return Superclass::GetWorkspaceBytes(size);
+  }
+  if (!m_DeviceState || !m_DeviceState->Info.IsCPU)
+  {
+    return 0; // a GPU's buffers are in its own memory
+  }
+  // RelaxOnDevice()'s two buffers of high and low planes and the mask, on rows of the layout's pitch.
+  const KernelShape & shape = m_DeviceState->Shape;
+  const std::size_t   vectorWidth = shape.VectorWidth;
+  const std::size_t   pitch = vectorWidth + RoundUp(size[0], vectorWidth * shape.VectorsPerItem) + vectorWidth;
+  return 2 * 2 * pitch * size[1] * sizeof(float) + pitch * size[1];
+}
+
 void
 OpenCLBilateralDepthRelaxFilter::GenerateData()
 {

@@ -97,6 +97,14 @@ public:
   void
   SetKernelLayoutForTesting(unsigned int vectorWidth, bool gpuLayout);
 
+  /** Jacobi: where the device is a CPU, whose memory is the host's, the device's two buffers of high and low planes
+   * and the mask on rows of the layout's pitch, which the filter keeps between updates (known once the device is
+   * prepared: PrepareDevice() or an update; 0 before); a GPU's are in its own memory (0). The low plane the result
+   * is downloaded through (4 bytes a pixel) is freed at the end of the update. Steady runs on the CPU: the
+   * superclass's bytes. */
+  std::size_t
+  GetWorkspaceBytes(const SizeType & size) override;
+
 protected:
   OpenCLBilateralDepthRelaxFilter();
   ~OpenCLBilateralDepthRelaxFilter() override;

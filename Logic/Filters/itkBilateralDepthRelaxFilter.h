@@ -71,6 +71,7 @@ public:
   using MaskImageType = TMaskImage;
   using PixelType = typename ImageType::PixelType;
   using RegionType = typename ImageType::RegionType;
+  using SizeType = typename ImageType::SizeType;
 
   itkNewMacro(Self);
   itkTypeMacro(BilateralDepthRelaxFilter, ImageToImageFilter);
@@ -138,6 +139,17 @@ public:
     return m_SteadyReport.Converged ? std::string()
                                     : BilateralDepthRelaxSteadySolver::Describe(m_SteadyReport, m_SteadyTolerance);
   }
+
+  /** The bytes of the workspace an update of a depth map of \a size allocates and the filter keeps from one update
+   * to the next, with this filter's solver, iterations, passes and host threads, for a float map within the fast
+   * kernel's range: BilateralDepthRelaxKernel::GetWorkspaceBytes for Jacobi (and the mask as bytes when its pixels
+   * are not), BilateralDepthRelaxSteadySolver::GetWorkspaceBytes for Steady (the same whether a solve starts from
+   * the coarser grids or not: they lie in the image's grid's scratch arrays).
+   * A steady update also holds the relaxed map in float and the mask in bytes while it runs (5 bytes a pixel), which
+   * it frees again. The memory check of a reformation asks this before an update. Virtual: the OpenCL filter counts
+   * what it holds in host memory. */
+  virtual std::size_t
+  GetWorkspaceBytes(const SizeType & size);
 
   /** Optional fixed mask, same size as the depth image: non-zero pixels keep their depth. */
   itkSetInputMacro(FixedMask, MaskImageType);

@@ -161,6 +161,28 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GetNumberOfHostThreads()
 }
 
 template<typename TImage, typename TMaskImage>
+std::size_t
+BilateralDepthRelaxFilter<TImage, TMaskImage>::GetWorkspaceBytes(const SizeType & size)
+{
+  const std::size_t  width = size[0];
+  const std::size_t  height = size[1];
+  const unsigned int threads = this->GetNumberOfHostThreads();
+  if (m_Solver == BilateralDepthRelaxSolver::Steady)
+  {
+    return BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(width, height, threads);
+  }
+  // RelaxOnHostFast(): the mask as bytes unless it is already, and the kernel's buffers (none when w = 0).
+  std::size_t bytes = 0;
+  if constexpr (!std::is_same<typename MaskImageType::PixelType, unsigned char>::value)
+  {
+    bytes += width * height * sizeof(unsigned char);
+  }
+  const unsigned int iterations = m_Relaxation == 0.0 ? 0 : m_NumberOfIterations;
+  return bytes + BilateralDepthRelaxKernel::GetWorkspaceBytes(
+                   width, height, iterations, threads, m_PassesBetweenSynchronizations);
+}
+
+template<typename TImage, typename TMaskImage>
 void
 BilateralDepthRelaxFilter<TImage, TMaskImage>::RelaxOnHost()
 {

@@ -651,6 +651,36 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
   }
 }
 
+std::size_t
+BilateralDepthRelaxKernel::GetWorkspaceBytes(std::size_t  width,
+                                             std::size_t  height,
+                                             unsigned int iterations,
+                                             unsigned int threads,
+                                             unsigned int passesBetweenSynchronizations)
+{
+  if (width == 0 || height == 0 || iterations == 0)
+  {
+    return 0;
+  }
+  // As Relax() and the buffers above allocate them: AlignedBuffer rounds every count up to RowAlignment floats.
+  auto aligned = [](std::size_t count) { return (count + RowAlignment - 1) / RowAlignment * RowAlignment; };
+  const std::size_t  stride = aligned(width);
+  const std::size_t  paddedCount = height * stride;
+  std::size_t        floats = 2 * aligned(2 * paddedCount + RowAlignment) + aligned(paddedCount);
+  const auto         team = static_cast<unsigned int>(std::max<std::size_t>(1, std::min<std::size_t>(threads, height)));
+  const unsigned int passes =
+    std::min(iterations,
+             passesBetweenSynchronizations > 0 ? passesBetweenSynchronizations
+                                               : ChoosePassesBetweenSynchronizations(height, team));
+  std::size_t memberFloats = passes * (aligned(4 * stride) + aligned(2 * stride));
+  if (passes > 1)
+  {
+    memberFloats += aligned((passes - 1) * RingRows * 2 * stride + RowAlignment);
+  }
+  floats += team * memberFloats;
+  return floats * sizeof(float);
+}
+
 unsigned int
 BilateralDepthRelaxKernel::ChoosePassesBetweenSynchronizations(std::size_t height, unsigned int team)
 {

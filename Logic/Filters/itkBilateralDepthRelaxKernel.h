@@ -95,6 +95,18 @@ public:
         Workspace *              workspace = nullptr,
         unsigned int             passesBetweenSynchronizations = AutomaticPassesBetweenSynchronizations);
 
+  /** The bytes Relax() allocates for a \a width x \a height map with \a iterations passes (none when 0), a team of
+   * \a threads and \a passesBetweenSynchronizations, all of which a workspace keeps: the two depth buffers of high
+   * and low parts and the pixels' own weights on rows padded to RowAlignment floats (20 bytes per padded pixel), and
+   * per team member a pass's row edges and discarded row (six padded rows) for each pass of a block, with a ring of
+   * three double rows for each pass but the last. The workspace's own bookkeeping (tens of bytes) is left out. */
+  static std::size_t
+  GetWorkspaceBytes(std::size_t  width,
+                    std::size_t  height,
+                    unsigned int iterations,
+                    unsigned int threads,
+                    unsigned int passesBetweenSynchronizations = AutomaticPassesBetweenSynchronizations);
+
   /** Relax()'s passesBetweenSynchronizations that leaves the choice to the kernel
    * (ChoosePassesBetweenSynchronizations). */
   static constexpr unsigned int AutomaticPassesBetweenSynchronizations = 0;

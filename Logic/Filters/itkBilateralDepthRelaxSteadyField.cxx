@@ -9,7 +9,13 @@
 
 namespace itk::detail::BilateralDepthRelaxSteady
 {
-Field::Field(FieldBuffers & buffers, Bands & bands, Level & finest, long width, long height, double anisotropy)
+Field::Field(FieldBuffers & buffers,
+             Bands &        bands,
+             Level &        finest,
+             long           width,
+             long           height,
+             double         anisotropy,
+             Lender *       lender)
   : Width(width)
   , Height(height)
   , Stride(PaddedStride(width))
@@ -22,19 +28,19 @@ Field::Field(FieldBuffers & buffers, Bands & bands, Level & finest, long width, 
 {
   const std::size_t size = PaddedSize(width, height);
   bool              fresh = false;
-  Depth = buffers.Depth.Reserve(size, fresh);
-  WeightRight = buffers.WeightRight.Reserve(size, fresh);
-  WeightDown = buffers.WeightDown.Reserve(size, fresh);
-  Fixed = buffers.Fixed.Reserve(size, fresh);
-  Active = buffers.Active.Reserve(size, fresh);
-  Residual = buffers.Residual.Reserve(size, fresh);
-  Z = buffers.Z.Reserve(size, fresh);
-  Delta = buffers.Delta.Reserve(size, fresh);
-  Direction = buffers.Direction.Reserve(size, fresh);
-  HessianC = buffers.HessianC.Reserve(size, fresh);
-  HessianE = buffers.HessianE.Reserve(size, fresh);
-  HessianN = buffers.HessianN.Reserve(size, fresh);
-  Saved = buffers.Saved.Reserve(size, fresh);
+  Depth = buffers.Depth.Reserve(size, fresh, lender);
+  WeightRight = buffers.WeightRight.Reserve(size, fresh, lender);
+  WeightDown = buffers.WeightDown.Reserve(size, fresh, lender);
+  Fixed = buffers.Fixed.Reserve(size, fresh, lender);
+  Active = buffers.Active.Reserve(size, fresh, lender);
+  Residual = buffers.Residual.Reserve(size, fresh, lender);
+  Z = buffers.Z.Reserve(size, fresh, lender);
+  Delta = buffers.Delta.Reserve(size, fresh, lender);
+  Direction = buffers.Direction.Reserve(size, fresh, lender);
+  HessianC = buffers.HessianC.Reserve(size, fresh, lender);
+  HessianE = buffers.HessianE.Reserve(size, fresh, lender);
+  HessianN = buffers.HessianN.Reserve(size, fresh, lender);
+  Saved = buffers.Saved.Reserve(size, fresh, lender);
   const std::size_t rows = static_cast<std::size_t>(height);
   buffers.RowLowest.assign(rows, 0.0);
   buffers.RowHighest.assign(rows, 0.0);
@@ -44,6 +50,16 @@ Field::Field(FieldBuffers & buffers, Bands & bands, Level & finest, long width, 
   // residual.
   finest.B = Residual;
   finest.X = Z;
+}
+
+void
+Field::LendScratchTo(Lender & lender)
+{
+  const std::size_t bytes = PaddedSize(Width, Height) * sizeof(float);
+  for (float * array : { Residual, Z, Delta, Direction, HessianC, HessianE, HessianN, Saved })
+  {
+    lender.Add(array, bytes);
+  }
 }
 
 std::size_t

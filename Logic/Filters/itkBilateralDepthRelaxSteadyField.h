@@ -34,7 +34,19 @@ struct FieldBuffers
 class Field
 {
 public:
-  Field(FieldBuffers & buffers, Bands & bands, Level & finest, long width, long height, double anisotropy);
+  /** With \a lender, the arrays are spans of its memory (a coarser grid of the nested iteration). */
+  Field(FieldBuffers & buffers,
+        Bands &        bands,
+        Level &        finest,
+        long           width,
+        long           height,
+        double         anisotropy,
+        Lender *       lender = nullptr);
+
+  /** Lends the scratch arrays, whose values no outer iteration keeps for the next (residual, corrections, search
+   * directions, Hessian), to \a lender. */
+  void
+  LendScratchTo(Lender & lender);
 
   /** Index of pixel (x, y). */
   long

@@ -8,6 +8,7 @@
 #include "itkThreadTeam.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace itk::detail::BilateralDepthRelaxSteady
@@ -33,14 +34,79 @@ PaddedSize(long width, long height)
   return static_cast<std::size_t>(PaddedStride(width) * (height + 3));
 }
 
-/** Values kept from one solve to the next; zero-filled when (re)sized, so ghost cells start at zero. */
+/** Memory that a finer grid lends a coarser grid's solve of the nested iteration: the finer grid's scratch arrays,
+ * whose values it does not need while the coarser grid is solved (it computes them again afterwards). Spans are
+ * handed out first fit, 64-byte aligned, zero-filled; ZeroTaken() zeroes what was handed out again, so that the
+ * lender's arrays are as freshly sized ones (ghost cells zero) when it takes them back. Holds no allocation. */
+class Lender
+{
+public:
+  /** Spans at most: a finer grid lends its eight scratch arrays and its first coarse level's sixteen. */
+  static constexpr std::size_t MaximumSpans = 32;
+
+  /** Forgets the spans (a new lending: arrays given spans of an earlier one take new ones). */
+  void
+  Clear();
+
+  /** Lends \a bytes at \a begin (ignored when MaximumSpans are lent). */
+  void
+  Add(void * begin, std::size_t bytes);
+
+  /** \a bytes zero-filled from the first span with room, or null when none has. */
+  void *
+  Take(std::size_t bytes);
+
+  /** Zeroes every byte handed out since Clear() or the last call, and takes it back. */
+  void
+  ZeroTaken();
+
+  /** Which lending the spans belong to. */
+  std::uint64_t
+  GetLending() const
+  {
+    return m_Lending;
+  }
+
+private:
+  struct Span
+  {
+    char *      Begin;
+    std::size_t Bytes;
+    std::size_t Used;
+    std::size_t Taken;
+  };
+  Span          m_Spans[MaximumSpans]{};
+  std::size_t   m_Count{ 0 };
+  std::uint64_t m_Lending{ 0 };
+};
+
+/** Values kept from one solve to the next; zero-filled when (re)sized, so ghost cells start at zero. With a Lender, a
+ * span of its memory instead (zero-filled when taken; the same span for the rest of that lending), and the array's
+ * own values are freed; without one, or when the lender has no room, its own. */
 template<typename T>
 class Array
 {
 public:
   T *
-  Reserve(std::size_t count, bool & fresh)
+  Reserve(std::size_t count, bool & fresh, Lender * lender = nullptr)
   {
+    if (lender)
+    {
+      if (m_Lent && m_Lending == lender->GetLending() && m_LentCount == count)
+      {
+        return m_Lent;
+      }
+      if (void * lent = lender->Take(count * sizeof(T)))
+      {
+        std::vector<T>().swap(m_Values);
+        m_Lent = static_cast<T *>(lent);
+        m_LentCount = count;
+        m_Lending = lender->GetLending();
+        fresh = true;
+        return m_Lent;
+      }
+    }
+    m_Lent = nullptr;
     if (m_Values.size() != count)
     {
       m_Values.assign(count, T{});
@@ -51,6 +117,9 @@ public:
 
 private:
   std::vector<T> m_Values;
+  T *            m_Lent{ nullptr };
+  std::size_t    m_LentCount{ 0 };
+  std::uint64_t  m_Lending{ 0 };
 };
 
 /** One grid of the multigrid hierarchy. Points (x, y), 0 <= x < Width, 0 <= y < Height, live at At(x, y) in
@@ -99,9 +168,14 @@ struct Level
     return Width * Height >= ParallelPoints;
   }
 
-  /** Sizes the arrays (the finest level has no X, B, interpolation and activity arrays of its own). */
+  /** Sizes the arrays (the finest level has no X, B, interpolation and activity arrays of its own), in \a lender's
+   * memory when given. */
   void
-  Allocate(long width, long height, bool coarse);
+  Allocate(long width, long height, bool coarse, Lender * lender = nullptr);
+
+  /** Lends a coarse level's arrays to \a lender (Build computes them again). */
+  void
+  LendTo(Lender & lender);
 
   /** w(p, p + (DX, DY)). */
   template<int DX, int DY>

@@ -379,16 +379,17 @@ Multigrid::LevelCountFor(long width, long height)
   return count;
 }
 
-Multigrid::Multigrid(MultigridBuffers & buffers, Bands & bands, long width, long height)
+Multigrid::Multigrid(MultigridBuffers & buffers, Bands & bands, long width, long height, Lender * lender)
   : m_Buffers(buffers)
   , m_Bands(bands)
+  , m_Lender(lender)
 {
   // Three residual rows per team member for ResidualAndRestrict, zero-padded; the finest level's are the widest.
   buffers.ResidualRows.assign(static_cast<std::size_t>(3 * PaddedStride(width)) * bands.GetSize(), 0.0f);
   // Every level the hierarchy may take, now: Build never moves the levels, so references to them (the finest level's
   // in the solver) stay valid.
   buffers.Levels.resize(std::max(LevelCountFor(width, height), buffers.Levels.size()));
-  buffers.Levels[0].Allocate(width, height, false);
+  buffers.Levels[0].Allocate(width, height, false, lender);
 }
 
 void
@@ -408,7 +409,7 @@ Multigrid::Build()
   {
     const Level & f = levels[count - 1];
     Level &       c = levels[count];
-    c.Allocate((f.Width + 1) / 2, (f.Height + 1) / 2, true);
+    c.Allocate((f.Width + 1) / 2, (f.Height + 1) / 2, true, m_Lender);
     const bool parallel = c.IsParallel();
     m_Bands.ForRows(c.Height,
                     parallel,

@@ -37,8 +37,9 @@ public:
   static constexpr long CoarsestPoints = 64;
 
   /** A hierarchy over a \a width x \a height finest level, whose operator C, E, N the caller fills and whose right-hand
-   * side B and correction X the caller points at arrays of the level's layout. */
-  Multigrid(MultigridBuffers & buffers, Bands & bands, long width, long height);
+   * side B and correction X the caller points at arrays of the level's layout. With \a lender, the levels' arrays are
+   * spans of its memory (a coarser grid of the nested iteration). */
+  Multigrid(MultigridBuffers & buffers, Bands & bands, long width, long height, Lender * lender = nullptr);
 
   /** The levels a hierarchy over a \a width x \a height finest level has. */
   static std::size_t
@@ -60,6 +61,16 @@ public:
   Cycle()
   {
     CycleFrom(0);
+  }
+
+  /** Lends the first coarse level's arrays (when built) to \a lender; the next Build computes them again. */
+  void
+  LendTo(Lender & lender)
+  {
+    if (m_LevelCount > 1)
+    {
+      m_Buffers.Levels[1].LendTo(lender);
+    }
   }
 
   /** Levels in the hierarchy (1 before the first Build). */
@@ -104,6 +115,7 @@ private:
   MultigridBuffers & m_Buffers;
   Bands &            m_Bands;
   std::size_t        m_LevelCount{ 1 };
+  Lender *           m_Lender;
 };
 } // namespace itk::detail::BilateralDepthRelaxSteady
 

@@ -27,6 +27,10 @@ OuterLoop::Run(double                   tolerance,
     // Floating regions took their mean input depth above; the active pixels start from the coarser solution, whose
     // weights may join or split regions again.
     m_Field.StartFrom(start.Values, start.Width, start.Height);
+    if (start.Lent)
+    {
+      start.Lent->ZeroTaken();
+    }
     m_Signature = m_Field.ComputeWeights();
     m_Report.FloatingPixels = m_Field.ClassifyRegions(changed);
     if (changed)

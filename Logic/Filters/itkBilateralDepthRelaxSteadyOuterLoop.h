@@ -30,12 +30,14 @@ public:
     bool Slowed{ false };
   };
 
-  /** A coarser grid's solution to start from (see Field::StartFrom); none when Values is null. */
+  /** A coarser grid's solution to start from (see Field::StartFrom); none when Values is null. When it lies in
+   * memory the field lent (Lent), that is zeroed (given back) once the start is read, before any outer iteration. */
   struct Start
   {
     const float * Values{ nullptr };
     long          Width{ 0 };
     long          Height{ 0 };
+    Lender *      Lent{ nullptr };
   };
   using ProgressCallback = std::function<void(double fraction)>;
 

@@ -23,15 +23,20 @@ namespace itk
 {
 namespace Steady = detail::BilateralDepthRelaxSteady;
 
-/** Everything a solve allocates: the image's grid, and the coarser grid's map, solution and buffers. */
+/** Everything a solve allocates: the image's grid, and the coarser grid's map, solution and buffers. The coarser
+ * grid's map, arrays and solution are spans of this grid's scratch arrays (Lent), which it does not need until the
+ * start is read from that solution: the nested iteration allocates no more than the image's own grid, its coarser
+ * grids' rows aside. */
 struct BilateralDepthRelaxSteadySolver::Workspace::Buffers
 {
-  Steady::BandBuffers        Bands;
-  Steady::MultigridBuffers   Multigrid;
-  Steady::FieldBuffers       Field;
-  std::vector<float>         CoarseDepth, CoarseRelaxed;
-  std::vector<unsigned char> CoarseFixed;
-  std::unique_ptr<Buffers>   Coarse;
+  Steady::BandBuffers          Bands;
+  Steady::MultigridBuffers     Multigrid;
+  Steady::FieldBuffers         Field;
+  Steady::Lender               Lent;
+  Steady::Array<float>         CoarseDepth;
+  Steady::Array<unsigned char> CoarseFixed;
+  Steady::Array<float>         CoarseRelaxed;
+  std::unique_ptr<Buffers>     Coarse;
 };
 
 namespace
@@ -42,15 +47,14 @@ using Report = BilateralDepthRelaxSteadySolver::Report;
 /** The share of a nested solve's progress that the coarser grids take (they hold a third of the pixels). */
 constexpr double CoarseProgressShare = 0.25;
 
-/** The bytes of one grid's own buffers (no coarser grid). */
+/** The bytes of one grid's padded arrays: the depths (double), FieldBuffers' floats, the finest level's operator and
+ * the coarse levels. A coarser grid of the nested iteration has them in its finer grid's scratch arrays. */
 std::size_t
-GridBytes(long w, long h, unsigned int threads)
+GridArrayBytes(long w, long h)
 {
-  // The finest grid: the depths (double), FieldBuffers' floats, the finest level's operator.
   std::size_t bytes =
     Steady::PaddedSize(w, h) *
     (sizeof(double) + sizeof(float) * (Steady::FieldBuffers::FloatArrays + Steady::Level::FinestArrays));
-  // The coarse levels, down to the coarsest, and the coarsest's dense factor.
   long levelWidth = w;
   long levelHeight = h;
   for (std::size_t level = 1; level < Steady::Multigrid::LevelCountFor(w, h); ++level)
@@ -59,8 +63,23 @@ GridBytes(long w, long h, unsigned int threads)
     levelHeight = (levelHeight + 1) / 2;
     bytes += Steady::PaddedSize(levelWidth, levelHeight) * sizeof(float) * Steady::Level::CoarseArrays;
   }
+  return bytes;
+}
+
+/** The bytes of one grid's other buffers, which every grid allocates itself: the coarsest level's dense factor and
+ * the rows. */
+std::size_t
+GridRowBytes(long w, long h, unsigned int threads)
+{
+  long levelWidth = w;
+  long levelHeight = h;
+  for (std::size_t level = 1; level < Steady::Multigrid::LevelCountFor(w, h); ++level)
+  {
+    levelWidth = (levelWidth + 1) / 2;
+    levelHeight = (levelHeight + 1) / 2;
+  }
   const std::size_t coarsest = static_cast<std::size_t>(levelWidth * levelHeight);
-  bytes += coarsest * coarsest * sizeof(double) + coarsest * (sizeof(long) + sizeof(char) + sizeof(double));
+  std::size_t bytes = coarsest * coarsest * sizeof(double) + coarsest * (sizeof(long) + sizeof(char) + sizeof(double));
   // Rows: per row sums, extremes, maxima, signatures, run starts, counts; per team member a scratch row and three
   // residual rows.
   const std::size_t stride = static_cast<std::size_t>(Steady::PaddedStride(w));
@@ -76,6 +95,7 @@ GridBytes(long w, long h, unsigned int threads)
  * coarser grid) from the coarser grid's solution, solved the same way (nested iteration, recursively). */
 Report
 SolveGrid(Buffers &                                                 buffers,
+          Steady::Lender *                                          lender,
           const float *                                             depth,
           const unsigned char *                                     fixed,
           float *                                                   relaxed,
@@ -103,8 +123,8 @@ SolveGrid(Buffers &                                                 buffers,
     ownProgress = report;
   }
   Steady::Bands      bands(buffers.Bands, threads, h, Steady::PaddedStride(w));
-  Steady::Multigrid  multigrid(buffers.Multigrid, bands, w, h);
-  Steady::Field      field(buffers.Field, bands, multigrid.Finest(), w, h, anisotropy);
+  Steady::Multigrid  multigrid(buffers.Multigrid, bands, w, h, lender);
+  Steady::Field      field(buffers.Field, bands, multigrid.Finest(), w, h, anisotropy, lender);
   Steady::Correction correction(field, multigrid, bands);
   field.Load(depth, fixed);
   // From the input first: where lagged weights converge fast (no depth step near the kernel's inflection), that is
@@ -119,25 +139,36 @@ SolveGrid(Buffers &                                                 buffers,
   {
     fromInput = outcome.OuterIterations;
     buildsFromInput = outcome.HierarchyBuilds;
+    // The scratch arrays, whose values the outer iterations below compute again, hold the coarser grid's map,
+    // arrays and solution until the start is read from that.
+    Steady::Lender & lent = buffers.Lent;
+    lent.Clear();
+    // Taken back as freshly sized arrays (ghost cells zero) once the start is read (OuterLoop::Run), or here when a
+    // solve throws before (the workspace is used again).
+    auto                                                 zeroTaken = [](Steady::Lender * taken) { taken->ZeroTaken(); };
+    std::unique_ptr<Steady::Lender, decltype(zeroTaken)> lending(&lent, zeroTaken);
+    multigrid.LendTo(lent);
+    field.LendScratchTo(lent);
     const std::size_t coarsePixels = static_cast<std::size_t>(coarseWidth * coarseHeight);
-    buffers.CoarseDepth.resize(coarsePixels);
-    buffers.CoarseFixed.resize(coarsePixels);
-    buffers.CoarseRelaxed.resize(coarsePixels);
+    bool              fresh = false;
+    float *           coarseDepth = buffers.CoarseDepth.Reserve(coarsePixels, fresh, &lent);
+    unsigned char *   coarseFixed = buffers.CoarseFixed.Reserve(coarsePixels, fresh, &lent);
+    float *           coarseRelaxed = buffers.CoarseRelaxed.Reserve(coarsePixels, fresh, &lent);
     if (!buffers.Coarse)
     {
       buffers.Coarse = std::make_unique<Buffers>();
     }
-    Steady::CoarsenMap(
-      bands, depth, fixed, w, h, buffers.CoarseDepth.data(), buffers.CoarseFixed.data(), coarseWidth, coarseHeight);
+    Steady::CoarsenMap(bands, depth, fixed, w, h, coarseDepth, coarseFixed, coarseWidth, coarseHeight);
     BilateralDepthRelaxSteadySolver::ProgressCallback coarseProgress;
     if (progress)
     {
       coarseProgress = [&report](double fraction) { report(CoarseProgressShare * fraction); };
     }
     coarse = SolveGrid(*buffers.Coarse,
-                       buffers.CoarseDepth.data(),
-                       buffers.CoarseFixed.data(),
-                       buffers.CoarseRelaxed.data(),
+                       &lent,
+                       coarseDepth,
+                       coarseFixed,
+                       coarseRelaxed,
                        coarseWidth,
                        coarseHeight,
                        Steady::CoarseAnisotropyFactor * anisotropy,
@@ -155,7 +186,7 @@ SolveGrid(Buffers &                                                 buffers,
     const unsigned int left =
       settings.MaximumOuterIterations > fromInput ? settings.MaximumOuterIterations - fromInput : 0;
     outcome = Steady::OuterLoop(field, multigrid, correction)
-                .Run(tolerance, ownProgress, left, { buffers.CoarseRelaxed.data(), coarseWidth, coarseHeight }, false);
+                .Run(tolerance, ownProgress, left, { coarseRelaxed, coarseWidth, coarseHeight, &lent }, false);
   }
   Report result;
   // The energy, one exponential per edge, only for a solve that stopped short (Describe).
@@ -181,10 +212,7 @@ BilateralDepthRelaxSteadySolver::Workspace::Workspace()
 BilateralDepthRelaxSteadySolver::Workspace::~Workspace() = default;
 
 std::size_t
-BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t  width,
-                                                   std::size_t  height,
-                                                   unsigned int threads,
-                                                   bool         coarserGrids)
+BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads)
 {
   if (width == 0 || height == 0)
   {
@@ -192,15 +220,16 @@ BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t  width,
   }
   long        w = static_cast<long>(width);
   long        h = static_cast<long>(height);
-  std::size_t bytes = GridBytes(w, h, threads);
-  // The coarser grids of the nested iteration: their maps (depth, fixed, solution) and their own buffers.
+  std::size_t bytes = GridArrayBytes(w, h) + GridRowBytes(w, h, threads);
+  // The coarser grids of the nested iteration, where a solve takes them: their maps, arrays and solutions lie in the
+  // finer grid's scratch arrays; only their rows are their own.
   long coarseWidth = 0;
   long coarseHeight = 0;
-  while (coarserGrids && Steady::HasCoarserStart(w, h, coarseWidth, coarseHeight))
+  while (Steady::HasCoarserStart(w, h, coarseWidth, coarseHeight))
   {
     w = coarseWidth;
     h = coarseHeight;
-    bytes += static_cast<std::size_t>(w * h) * (2 * sizeof(float) + 1) + GridBytes(w, h, threads);
+    bytes += GridRowBytes(w, h, threads);
   }
   return bytes;
 }
@@ -240,6 +269,7 @@ BilateralDepthRelaxSteadySolver::Solve(const float *            depth,
   }
   Workspace ownWorkspace;
   return SolveGrid(*(workspace ? workspace : &ownWorkspace)->m_Buffers,
+                   nullptr,
                    depth,
                    fixed,
                    relaxed,

@@ -139,9 +139,9 @@ public:
   static std::string
   Describe(const Report & report, double tolerance);
 
-  /** Buffers kept from one solve to the next (about 94 bytes per pixel at 512 x 1024, 128 once a solve started from
-   * the coarser grids; GetWorkspaceBytes says how many for a size): reusing one spares allocating and first touching
-   * them. One solve at a time per workspace. */
+  /** Buffers kept from one solve to the next (about 94 bytes per pixel at 512 x 1024, whether a solve started from
+   * the coarser grids or not; GetWorkspaceBytes says how many for a size): reusing one spares allocating and first
+   * touching them. One solve at a time per workspace. */
   class Workspace
   {
   public:
@@ -178,14 +178,16 @@ public:
         Workspace *              workspace = nullptr,
         const Settings &         settings = DefaultSettings());
 
-  /** The bytes a solve of a \a width x \a height map with \a threads threads allocates (its workspace): 56 per
-   * padded pixel for the depths and the finest grid's vectors, 12 for its operator, 64 per point of each coarser
-   * level (about a third as many points in all), and rows. The floating regions add 48 bytes for each run of pixels
-   * beyond one per row that vanishing weights split a row into. With \a coarserGrids, also the coarser grids of the
-   * nested iteration, which a solve allocates (and its workspace keeps) once lagged weights slow down: the most a
-   * solve allocates, about a third more. */
+  /** The bytes a solve of a \a width x \a height map with \a threads threads allocates at most (its workspace keeps
+   * them): 56 per padded pixel for the depths and the finest grid's vectors, 12 for its operator, 64 per point of
+   * each coarser level (about a third as many points in all), and rows. The floating regions add 48 bytes for each
+   * run of pixels beyond one per row that vanishing weights split a row into. The coarser grids of the nested
+   * iteration, which a solve takes once lagged weights slow down, add only their rows: their maps, arrays and
+   * solutions are spans of the finer grid's scratch arrays (residual, corrections, search directions, Hessian, first
+   * coarse level), whose values that grid computes again once it has read its start, so the figure is the same
+   * whichever path a solve takes (the most either allocates, within 0.2 %). */
   static std::size_t
-  GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads = 1, bool coarserGrids = true);
+  GetWorkspaceBytes(std::size_t width, std::size_t height, unsigned int threads = 1);
 
   /** The most outer iterations on the image's own grid a solve takes by default: with the coarser grids' start the
    * thoracic phantom takes at most 13 at any size measured (256 x 512 to 2048 x 4096; 124 from the input at

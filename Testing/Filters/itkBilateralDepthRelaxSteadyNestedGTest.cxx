@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -208,4 +209,55 @@ TEST(BilateralDepthRelaxSteadyNested, ProgressRisesAcrossTheGridsAndAThrowingCal
                              }),
                std::runtime_error);
   EXPECT_EQ(calls, 4u);
+}
+
+// The coarser grids borrow the finer grid's scratch arrays and give them back zeroed: a workspace whose solve threw
+// while a coarser grid was being solved (its arrays lent, dirty) then gives the same bits as a fresh one, and so
+// does a third solve after a completed nested one.
+TEST(BilateralDepthRelaxSteadyNested, AWorkspaceLentToACoarserGridThatThrewChangesNoBit)
+{
+  const Map          map = ThoraxMap(256, 512);
+  std::vector<float> fresh(map.Depth.size());
+  const auto         report = Solver::Solve(
+    map.Depth.data(), map.Fixed.data(), fresh.data(), map.Width, map.Height, Anisotropy, Solver::DefaultTolerance, 2);
+  ASSERT_GE(report.Grids, 2u);
+
+  Solver::Workspace  workspace;
+  std::vector<float> relaxed(map.Depth.size());
+  unsigned int       calls = 0;
+  EXPECT_THROW(Solver::Solve(
+                 map.Depth.data(),
+                 map.Fixed.data(),
+                 relaxed.data(),
+                 map.Width,
+                 map.Height,
+                 Anisotropy,
+                 Solver::DefaultTolerance,
+                 2,
+                 [&](double)
+                 {
+                   if (++calls == 4) // the coarser grid's first call (see the test above)
+                   {
+                     throw std::runtime_error("stop");
+                   }
+                 },
+                 &workspace),
+               std::runtime_error);
+  for (int solve = 0; solve < 2; ++solve)
+  {
+    std::fill(relaxed.begin(), relaxed.end(), 0.0f);
+    const auto again = Solver::Solve(map.Depth.data(),
+                                     map.Fixed.data(),
+                                     relaxed.data(),
+                                     map.Width,
+                                     map.Height,
+                                     Anisotropy,
+                                     Solver::DefaultTolerance,
+                                     2,
+                                     Solver::ProgressCallback(),
+                                     &workspace);
+    EXPECT_EQ(again.Grids, report.Grids);
+    EXPECT_EQ(again.OuterIterations, report.OuterIterations);
+    EXPECT_EQ(std::memcmp(relaxed.data(), fresh.data(), fresh.size() * sizeof(float)), 0) << "solve " << solve;
+  }
 }
