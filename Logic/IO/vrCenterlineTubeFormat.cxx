@@ -2,6 +2,7 @@
 #include "vrCenterlineFormats.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
+#include "vrMetaIOWords.h"
 #include "vrText.h"
 
 #include "itkSpatialObjectReader.h"
@@ -217,9 +218,18 @@ CheckTubeFile(const std::string & path)
     }
     else if (key == "PointDim")
     {
-      const auto names = Tokens(value);
+      // The value MetaIO keeps (after the run of "=", ":" and blanks, without trailing blanks), split as MetaTube
+      // splits it.
+      const std::size_t first = value.find_first_not_of("=: \t");
+      const auto        names = MetaIOWords(first == std::string::npos ? std::string() : Trim(value.substr(first)));
+      if (names.empty())
+      {
+        fail("PointDim = " + Trim(value).substr(0, 40) +
+             ": must be field names separated by single spaces, each of at most " +
+             std::to_string(MaximumMetaIOWordLength) + " characters");
+      }
       fields = names.size();
-      if (fields == 0 || fields > MaximumPointFields)
+      if (fields > MaximumPointFields)
       {
         fail("PointDim names " + std::to_string(fields) + " fields; from 1 to " + std::to_string(MaximumPointFields) +
              " are accepted");

@@ -2,6 +2,7 @@
 #include "vrMetaImageHeaderCheck.h"
 
 #include "vrInputError.h"
+#include "vrMetaIOWords.h"
 #include "vrText.h"
 
 #include <algorithm>
@@ -221,6 +222,13 @@ CheckMetaImageHeaderBytes(const char * bytes, std::size_t count, const std::stri
         if (dimensions == 0 || seen.count("DimSize") == 0 || seen.count("ElementType") == 0)
         {
           fail("comes before NDims, DimSize and ElementType");
+        }
+        // A file list ("LIST 2D") or a numbered pattern ("slice%03d.raw 1 40 1") MetaIO splits into words as it
+        // splits a tube's PointDim, and goes wrong where the tube reader did.
+        if ((value.rfind("LIST", 0) == 0 || value.find('%') != std::string::npos) && MetaIOWords(value).empty())
+        {
+          fail("= " + value.substr(0, 40) + ": a file list or pattern must be words separated by single spaces, " +
+               "each of at most " + std::to_string(MaximumMetaIOWordLength) + " characters");
         }
         return; // MetaIO's header ends here; the voxels (or a file list) follow.
       }

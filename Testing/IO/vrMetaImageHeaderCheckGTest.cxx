@@ -193,6 +193,11 @@ TEST(MetaImageHeaderCheck, RefusesLinesMetaIOWouldSplitOtherwise)
   ExpectRefused("ObjectType = Image\nNDims = 3\nElementType = MET_SHORT\nElementDataFile = LOCAL\n",
                 "ElementDataFile comes before NDims, DimSize and ElementType");
   ExpectRefused(WithLine("ElementDataFile", "ElementDataFile = "), "names no data file");
+  // A file list or pattern MetaIO splits into words, wrongly on a run of spaces (as it did a tube's PointDim).
+  ExpectRefused(WithLine("ElementDataFile", "ElementDataFile = LIST  2D"), "a file list or pattern must be words");
+  ExpectRefused(WithLine("ElementDataFile", "ElementDataFile = slice%03d.raw 1  4 1"), "separated by single spaces");
+  EXPECT_EQ(CheckMessage(WithLine("ElementDataFile", "ElementDataFile = slice%03d.raw 1 4 1")), "");
+  EXPECT_EQ(CheckMessage(WithLine("ElementDataFile", "ElementDataFile = my  voxels.raw")), "") << "one file name";
 }
 
 TEST(MetaImageHeaderCheck, RefusesTheFuzzersHang)

@@ -170,6 +170,23 @@ TEST_F(BadInputTest, TubeFileDeclaringTwoBillionPoints)
                                    "ObjectType = Scene\nNDims = 3\nNObjects = 4\nObjectType = Tube\nNDims = 3\nID = 1\n"
                                    "ParentID = -1\nPointDim = x y z r\nNPoints = 1\nPoints = \n0.5 0.5 0.5 1.5\n");
   ExpectRejected({ Volume(), short_ }, { "short.tre", "NObjects = 4" });
+  // A PointDim with a run of spaces: MetaIO counts it as more than one separator and then reads its array's unset last
+  // entries (the sixth fuzzing round's find, a wild pointer in MetaTube::M_Read); and a field name longer than the 80
+  // bytes MetaIO copies it into.
+  const auto tube = [](const std::string & pointDim)
+  {
+    return "ObjectType = Scene\nNDims = 3\nNObjects = 1\nObjectType = Tube\nNDims = 3\nID = 1\nParentID = -1\n"
+           "PointDim = " +
+           pointDim + "\nNPoints = 1\nPoints = \n0.5 0.5 0.5 1.5\n";
+  };
+  ExpectRejected({ Volume(), Write("spaces.tre", tube("x y    z r")) },
+                 { "spaces.tre", "PointDim = x y    z r: must be field names separated by single spaces" });
+  ExpectRejected({ Volume(), Write("word.tre", tube("x y z " + std::string(80, 'r'))) },
+                 { "word.tre", "each of at most 79 characters" });
+  ExpectRejected({ Volume(), Write("tab.tre", tube("x y\tz r")) }, { "tab.tre", "PointDim" });
+  const std::string found =
+    Write("found.tre", ReadText(fs::path(VR_FUZZ_CORPUS_DIR) / "tre" / "crash-pointdim-space-run-wild-pointer"));
+  ExpectRejected({ Volume(), found }, { "centerline file " + found + ": object 4 (Tube): PointDim = id x y z red green " });
 }
 
 TEST_F(BadInputTest, MarkupsNestedAHundredThousandDeep)
