@@ -7,12 +7,11 @@
 // last iterate and says how far it got; the filter passes that on as its warning; the progress rises across the
 // grids.
 #include "PlainBilateralDepthRelax.h"
+#include "vrTestDepthMaps.h"
 #include "vrTestImages.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkBilateralDepthRelaxSteadySolver.h"
-#include "itkCPRDepthImageFilter.h"
-#include "itkCTAPhantom.h"
 
 #include <gtest/gtest.h>
 
@@ -34,29 +33,13 @@ constexpr double Anisotropy = 1.0 / 9.0;
  * the input it took 34 at 256 x 512 and 54 at 512 x 1024 (and 19 at 128 x 256, whose grid is solved from its input). */
 constexpr unsigned int FineOuterIterationBound = 16;
 
-struct Map
-{
-  std::vector<float>         Depth;
-  std::vector<unsigned char> Fixed;
-  unsigned int               Width;
-  unsigned int               Height;
-};
+/** The thoracic phantom's scan-line depth map and fixed mask at its design angle. */
+using Map = vr::test::DepthMapBuffers;
 
-/** The thoracic phantom's scan-line depth map and fixed mask at its design angle on a W x H grid. */
 Map
 ThoraxMap(unsigned int width, unsigned int height)
 {
-  const auto phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax);
-  auto       filter = itk::CPRDepthImageFilter<itk::Image<float, 2>>::New();
-  filter->SetCenterlineTree(phantom.Tree);
-  itk::CPRViewSpecification view;
-  view.AngleInDegrees = phantom.DesignAngleInDegrees;
-  view.ImageSize = { { width, height } };
-  filter->SetViewSpecification(view);
-  filter->Update();
-  return {
-    vr::test::PixelsOf(filter->GetDepthOutput()), vr::test::PixelsOf(filter->GetFixedMaskOutput()), width, height
-  };
+  return vr::test::ThoraxDepthMapBuffers(width, height);
 }
 
 std::vector<double>
