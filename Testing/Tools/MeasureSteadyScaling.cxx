@@ -9,6 +9,7 @@
 #include "PlainBilateralDepthRelax.h"
 #include "vrBenchmarkScene.h"
 #include "vrCenterlineIO.h"
+#include "vrTestDepthMaps.h"
 #include "vrVolumeIO.h"
 
 #include "itkBilateralDepthRelaxSteadySolver.h"
@@ -28,13 +29,7 @@ namespace
 using Solver = itk::BilateralDepthRelaxSteadySolver;
 double Anisotropy = 1.0 / 9.0; // J = 3 mm, the filter's default; --anisotropy a to change
 
-struct Map
-{
-  std::vector<float>         Depth;
-  std::vector<unsigned char> Fixed;
-  unsigned int               Width;
-  unsigned int               Height;
-};
+using Map = vr::test::DepthMapBuffers;
 
 Map
 MapOf(const vr::test::PhantomDepthMap & map, unsigned int width, unsigned int height)
