@@ -5,7 +5,8 @@
 // some corrupt files: here an abort ends this process only. Before GDCM opens a file, "file <path>" is appended to
 // the progress file, so the parent can name the file that a crash or a failure happened in. Its last line is "done"
 // on success, or "error <scan|none|read N|message|write>" followed by ITK's description (or the message) on the
-// lines after it. Exit status: 0 done, 1 error, 2 wrong arguments.
+// lines after it. Each file is also sorted into series alone before the folder is, since GDCM asserts in the sort too.
+// Exit status: 0 done, 1 error, 2 wrong arguments.
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileWriter.h"
@@ -15,6 +16,7 @@
 #include "itkObject.h"
 
 #include <gdcmImageReader.h>
+#include <gdcmSerieHelper.h>
 #include <gdcmTrace.h>
 
 #include <fcntl.h>
@@ -77,6 +79,34 @@ protected:
   ~TracingGDCMImageIO() override = default;
 };
 
+/** gdcm::SerieHelper given one file: SetDirectory adds a folder's files one by one with this protected call. */
+class OneFileSerieHelper : public gdcm::SerieHelper
+{
+public:
+  using gdcm::SerieHelper::AddFileName;
+};
+
+/** Runs GDCM's series sort (gdcm::SerieHelper, called as itk::GDCMSeriesFileNames calls it below) on \a file alone.
+ * The sort reads attributes of its own (position, orientation, series details), and GDCM asserts on some of them
+ * (a value whose VR differs from the one the attribute expects): a file that kills the sort dies here, named. */
+void
+SortAlone(const std::string & file)
+{
+  OneFileSerieHelper helper;
+  helper.SetUseSeriesDetails(true);
+  helper.SetLoadMode(gdcm::LD_NOSEQ | gdcm::LD_NOSHADOW);
+  helper.AddFileName(file);
+  for (gdcm::FileList * files = helper.GetFirstSingleSerieUIDFileSet(); files != nullptr;
+       files = helper.GetNextSingleSerieUIDFileSet())
+  {
+    if (!files->empty())
+    {
+      helper.CreateUniqueSeriesIdentifier(files->front().GetPointer());
+      helper.OrderFileList(files);
+    }
+  }
+}
+
 /** Ends with "error <what failed>" and ITK's description (or our message) on the lines after it. */
 int
 Fail(const std::string & what, const std::string & description)
@@ -110,8 +140,8 @@ main(int argc, char * argv[])
   gdcm::Trace::SetError(false);
   itk::Object::GlobalWarningDisplayOff();
 
-  // Every file of the folder parsed once, one at a time: a file that makes GDCM abort while the series are sorted
-  // out below is named here first.
+  // Every file of the folder parsed and sorted once, alone: a file that makes GDCM abort while the series are
+  // sorted out below is named here first.
   std::vector<std::string> entries;
   std::error_code          error;
   for (const auto & entry : std::filesystem::directory_iterator(folder, error))
@@ -128,6 +158,7 @@ main(int argc, char * argv[])
     gdcm::ImageReader reader; // as the series scan reads it: the header, then the image description
     reader.SetFileName(file.c_str());
     reader.Read(); // a file that is not DICOM is simply not read, here and in the scan
+    SortAlone(file);
   }
   Report("scan");
 

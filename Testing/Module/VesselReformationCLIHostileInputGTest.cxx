@@ -325,6 +325,39 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
   EXPECT_FALSE(Contains(run.Err, "GDCM")) << run.Err;
 }
 
+// Issue 25, sixth fuzzing round: a one-file folder (the dicom harness's input: each file a 4-byte little-endian length
+// and its bytes) on which GDCM asserts (gdcmAttribute.h:445) while it sorts the folder's files into series. The
+// message named the folder only; the reader process now sorts each file alone first, so the file is named. Alone and
+// in a good series, by the program and in the host's process.
+TEST_F(BadInputTest, DICOMFileOnWhichGDCMsSeriesSortAsserts)
+{
+  const std::string packed = ReadText(fs::path(VR_FUZZ_CORPUS_DIR) / "dicom" / "crash-gdcm-sort-attribute-assert");
+  ASSERT_GE(packed.size(), 4u);
+  const std::size_t length = static_cast<unsigned char>(packed[0]) | (static_cast<unsigned char>(packed[1]) << 8) |
+                             (static_cast<unsigned char>(packed[2]) << 16) |
+                             (std::size_t{ static_cast<unsigned char>(packed[3]) } << 24);
+  ASSERT_EQ(length + 4, packed.size()) << "one file in the finding";
+  const fs::path alone = m_Folder / "sort-assert";
+  fs::create_directories(alone);
+  const std::string file = (alone / "IM0001.dcm").string();
+  Write("sort-assert/IM0001.dcm", packed.substr(4));
+  {
+    const RunResult run = ExpectRejected({ alone.string(), Centerlines() },
+                                         { "the DICOM file " + file + " is corrupt", "gdcmAttribute.h", "not read" });
+    EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
+  }
+  const RunResult library = RunInProcess(
+    ReformationLibrary, { "VesselReformation", alone.string(), Centerlines(), (m_Folder / "cpr.nrrd").string() });
+  EXPECT_EQ(library.ExitCode, 1) << library.Err;
+  EXPECT_TRUE(Contains(library.Err, "the DICOM file " + file)) << library.Err;
+  EXPECT_EQ(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
+
+  const fs::path mixed = m_Folder / "series-with-sort-assert";
+  WriteDicomSeries(mixed);
+  fs::copy_file(file, mixed / "IM0001.dcm");
+  ExpectRejected({ mixed.string(), Centerlines() }, { "the DICOM file " + (mixed / "IM0001.dcm").string() });
+}
+
 TEST_F(BadInputTest, APNGNamedLikeAVolume)
 {
   // ITK picks its reader by content: a PNG named .nrrd would reach libpng, whose default error handler (ITK 5.2's
