@@ -24,6 +24,46 @@ DividedByDiagonal(float value, float diagonal)
   return diagonal > 0.0f ? quotient : 0.0f;
 }
 
+/** term(0) + ... + term(count - 1) by \a combine, in Lanes partial results: term(i) goes into lane i mod Lanes, and the
+ * lanes are combined in order at the end, so the result has the same bits on any machine and for any vector width
+ * the compiler picks. \a combine is a sum or a maximum; TValue{} is its identity for the values summed here. */
+template<typename TValue, typename TTerm, typename TCombine>
+inline __attribute__((always_inline)) TValue
+CombineInLanes(long count, TTerm term, TCombine combine)
+{
+  TValue lanes[Lanes] = {};
+  long   i = 0;
+  for (; i + Lanes <= count; i += Lanes)
+  {
+    for (long j = 0; j < Lanes; ++j)
+    {
+      lanes[j] = combine(lanes[j], term(i + j));
+    }
+  }
+  for (long j = 0; i < count; ++i, ++j)
+  {
+    lanes[j] = combine(lanes[j], term(i));
+  }
+  TValue result{};
+  for (long j = 0; j < Lanes; ++j)
+  {
+    result = combine(result, lanes[j]);
+  }
+  return result;
+}
+
+inline double
+Plus(double a, double b)
+{
+  return a + b;
+}
+
+inline float
+Larger(float a, float b)
+{
+  return a > b ? a : b;
+}
+
 } // namespace
 
 VR_STEADY_ROW_LOOP void
@@ -429,25 +469,8 @@ EnergyChangeRow(const double * __restrict d,
         EdgeEnergyChange(static_cast<float>(below[x] - d[x]), step * (deltaBelow[x] - delta[x]), anisotropy, scale);
     }
   }
-  double lanes[Lanes] = {};
-  long   i = 0;
-  for (; i + Lanes <= width; i += Lanes)
-  {
-    for (long j = 0; j < Lanes; ++j)
-    {
-      lanes[j] += scratch[i + j];
-    }
-  }
-  for (long j = 0; i < width; ++i, ++j)
-  {
-    lanes[j] += scratch[i];
-  }
-  double sum = 0.0;
-  for (long j = 0; j < Lanes; ++j)
-  {
-    sum += lanes[j];
-  }
-  return sum;
+  return CombineInLanes<double>(
+    width, [scratch](long i) { return static_cast<double>(scratch[i]); }, Plus);
 }
 
 VR_STEADY_ROW_LOOP void
@@ -463,76 +486,21 @@ AddRow(double * __restrict depth, const float * __restrict delta, float step, do
 VR_STEADY_ROW_LOOP double
 RowDot(const float * __restrict a, const float * __restrict b, long count)
 {
-  double lanes[Lanes] = {};
-  long   i = 0;
-  for (; i + Lanes <= count; i += Lanes)
-  {
-    for (long j = 0; j < Lanes; ++j)
-    {
-      lanes[j] += static_cast<double>(a[i + j]) * b[i + j];
-    }
-  }
-  for (long j = 0; i < count; ++i, ++j)
-  {
-    lanes[j] += static_cast<double>(a[i]) * b[i];
-  }
-  double sum = 0.0;
-  for (long j = 0; j < Lanes; ++j)
-  {
-    sum += lanes[j];
-  }
-  return sum;
+  return CombineInLanes<double>(
+    count, [a, b](long i) { return static_cast<double>(a[i]) * b[i]; }, Plus);
 }
 
 VR_STEADY_ROW_LOOP float
 RowMaximum(const float * __restrict r, const float * __restrict s, long count)
 {
-  float lanes[Lanes] = {};
-  long  i = 0;
-  for (; i + Lanes <= count; i += Lanes)
-  {
-    for (long j = 0; j < Lanes; ++j)
-    {
-      const float value = std::abs(r[i + j]) * s[i + j];
-      lanes[j] = lanes[j] > value ? lanes[j] : value;
-    }
-  }
-  for (long j = 0; i < count; ++i, ++j)
-  {
-    const float value = std::abs(r[i]) * s[i];
-    lanes[j] = lanes[j] > value ? lanes[j] : value;
-  }
-  float largest = 0.0f;
-  for (long j = 0; j < Lanes; ++j)
-  {
-    largest = largest > lanes[j] ? largest : lanes[j];
-  }
-  return largest;
+  return CombineInLanes<float>(
+    count, [r, s](long i) { return std::abs(r[i]) * s[i]; }, Larger);
 }
 
 VR_STEADY_ROW_LOOP float
 RowMaximumOverDiagonal(const float * __restrict r, const float * __restrict c, long count)
 {
-  float lanes[Lanes] = {};
-  long  i = 0;
-  for (; i + Lanes <= count; i += Lanes)
-  {
-    for (long j = 0; j < Lanes; ++j)
-    {
-      const float value = DividedByDiagonal(std::abs(r[i + j]), c[i + j]);
-      lanes[j] = lanes[j] > value ? lanes[j] : value;
-    }
-  }
-  for (long j = 0; i < count; ++i, ++j)
-  {
-    const float value = DividedByDiagonal(std::abs(r[i]), c[i]);
-    lanes[j] = lanes[j] > value ? lanes[j] : value;
-  }
-  float largest = 0.0f;
-  for (long j = 0; j < Lanes; ++j)
-  {
-    largest = largest > lanes[j] ? largest : lanes[j];
-  }
-  return largest;
+  return CombineInLanes<float>(
+    count, [r, c](long i) { return DividedByDiagonal(std::abs(r[i]), c[i]); }, Larger);
 }
 } // namespace itk::detail::BilateralDepthRelaxSteady
