@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkBilateralDepthRelaxKernel.h"
 
+#include "itkBilateralDepthRelaxInstructionSets.h"
 #include "itkBilateralDepthRelaxRows.h"
 #include "itkThreadTeamBarrier.h"
 
@@ -37,51 +38,31 @@ struct RowSweep
   const char *       InstructionSet;
 };
 
-#if defined(VR_RELAX_RUNTIME_DISPATCH)
-/** Whether the processor runs code built with -march=x86-64-v3 (\a level 3) or -v4 (\a level 4). GCC 12 knows
- * the levels by name; otherwise the features the sweep can use are asked one by one. */
-bool
-SupportsLevel(int level)
-{
-  __builtin_cpu_init();
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
-  return level == 4 ? __builtin_cpu_supports("x86-64-v4") : __builtin_cpu_supports("x86-64-v3");
-#else
-  const bool level3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") &&
-                      __builtin_cpu_supports("bmi") && __builtin_cpu_supports("bmi2");
-  return level == 3 ? level3
-                    : level3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-                        __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
-                        __builtin_cpu_supports("avx512vl");
-#endif
-}
-
-/** The instruction sets this processor runs (CPUID), widest first. */
+/** The instruction sets this processor runs (CPUID, shared with the steady solver), widest first. */
 std::vector<RowSweep>
 FindRowSweeps()
 {
   std::vector<RowSweep> sweeps;
-  if (SupportsLevel(4))
+  for (const detail::InstructionSet set : detail::RunnableInstructionSets())
   {
-    sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsAVX512, "AVX-512" });
+    switch (set)
+    {
+#if defined(VR_RELAX_RUNTIME_DISPATCH)
+      case detail::InstructionSet::AVX512:
+        sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsAVX512, "AVX-512" });
+        break;
+      case detail::InstructionSet::AVX2:
+        sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsAVX2, "AVX2+FMA" });
+        break;
+#endif
+      default:
+        // Without runtime dispatch the compiler's target flags (e.g. -march=native) decide the vector width.
+        sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsBaseline,
+                           detail::BilateralDepthRelaxRows::BaselineInstructionSet });
+    }
   }
-  if (SupportsLevel(3))
-  {
-    sweeps.push_back({ &detail::BilateralDepthRelaxRows::KernelsAVX2, "AVX2+FMA" });
-  }
-  sweeps.push_back(
-    { &detail::BilateralDepthRelaxRows::KernelsBaseline, detail::BilateralDepthRelaxRows::BaselineInstructionSet });
   return sweeps;
 }
-#else
-/** Without runtime dispatch the compiler's target flags (e.g. -march=native) decide the vector width. */
-std::vector<RowSweep>
-FindRowSweeps()
-{
-  return { { &detail::BilateralDepthRelaxRows::KernelsBaseline,
-             detail::BilateralDepthRelaxRows::BaselineInstructionSet } };
-}
-#endif
 
 const std::vector<RowSweep> &
 RowSweeps()

@@ -27,7 +27,7 @@ Correction::Solve(double target, bool newton)
       const long row = m_Field.At(0, y);
       std::copy(m_Field.Z + row, m_Field.Z + row + width, m_Field.Direction + row);
       std::fill(m_Field.Delta + row, m_Field.Delta + row + width, 0.0f);
-      return RowDot(m_Field.Residual + row, m_Field.Z + row, width);
+      return Rows().RowDot(m_Field.Residual + row, m_Field.Z + row, width);
     });
   for (unsigned int iteration = 0; iteration < MaximumInnerIterations; ++iteration)
   {
@@ -36,21 +36,21 @@ Correction::Solve(double target, bool newton)
     auto applyRow = [&](long y, float * product)
     {
       const long row = m_Field.At(0, y);
-      ApplyRow5(product,
-                m_Field.Direction + row,
-                m_Field.Direction + row + s,
-                m_Field.Direction + row - s,
-                opC + row,
-                opE + row,
-                opN + row,
-                opN + row - s,
-                width);
+      Rows().ApplyRow5(product,
+                       m_Field.Direction + row,
+                       m_Field.Direction + row + s,
+                       m_Field.Direction + row - s,
+                       opC + row,
+                       opE + row,
+                       opN + row,
+                       opN + row - s,
+                       width);
     };
     const double curvature = m_Bands.SumRows(
       [&](long y, float * product)
       {
         applyRow(y, product);
-        return RowDot(m_Field.Direction + m_Field.At(0, y), product, width);
+        return Rows().RowDot(m_Field.Direction + m_Field.At(0, y), product, width);
       });
     m_NegativeCurvature = newton && !(curvature > 0.0) && rz > 0.0;
     if (m_NegativeCurvature)
@@ -72,8 +72,8 @@ Correction::Solve(double target, bool newton)
         {
           const long row = m_Field.At(0, y);
           applyRow(y, product);
-          UpdateRow(m_Field.Delta + row, m_Field.Residual + row, m_Field.Direction + row, product, alpha, width);
-          maxima[static_cast<std::size_t>(y)] = RowMaximumOverDiagonal(m_Field.Residual + row, l.C + row, width);
+          Rows().UpdateRow(m_Field.Delta + row, m_Field.Residual + row, m_Field.Direction + row, product, alpha, width);
+          maxima[static_cast<std::size_t>(y)] = Rows().RowMaximumOverDiagonal(m_Field.Residual + row, l.C + row, width);
         }
       });
     if (*std::max_element(maxima.begin(), maxima.end()) <= target)
@@ -85,7 +85,7 @@ Correction::Solve(double target, bool newton)
       [&](long y, float *)
       {
         const long row = m_Field.At(0, y);
-        return RowDot(m_Field.Residual + row, m_Field.Z + row, width);
+        return Rows().RowDot(m_Field.Residual + row, m_Field.Z + row, width);
       });
     const float beta = static_cast<float>(rzNext / rz);
     rz = rzNext;
@@ -95,7 +95,8 @@ Correction::Solve(double target, bool newton)
                     {
                       for (long y = y0; y < y1; ++y)
                       {
-                        DirectionRow(m_Field.Direction + m_Field.At(0, y), m_Field.Z + m_Field.At(0, y), beta, width);
+                        Rows().DirectionRow(
+                          m_Field.Direction + m_Field.At(0, y), m_Field.Z + m_Field.At(0, y), beta, width);
                       }
                     });
   }
@@ -116,7 +117,7 @@ Correction::SearchNegativeCurvature(float & step)
                       const long row = m_Field.At(0, y);
                       std::copy(m_Field.Direction + row, m_Field.Direction + row + m_Field.Width, m_Field.Delta + row);
                       maxima[static_cast<std::size_t>(y)] =
-                        RowMaximum(m_Field.Delta + row, m_Field.Active + row, m_Field.Width);
+                        Rows().RowMaximum(m_Field.Delta + row, m_Field.Active + row, m_Field.Width);
                     }
                   });
   step = 0.0f;

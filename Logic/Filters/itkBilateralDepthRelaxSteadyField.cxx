@@ -158,13 +158,13 @@ Field::ComputeWeights()
                     {
                       const long row = At(0, y);
                       signatures[static_cast<std::size_t>(y)] =
-                        WeightRow(WeightRight + row,
-                                  WeightDown + row,
-                                  Depth + row,
-                                  y + 1 < Height ? Depth + row + Stride : nullptr,
-                                  Scale,
-                                  Isotropic,
-                                  Width);
+                        Rows().WeightRow(WeightRight + row,
+                                         WeightDown + row,
+                                         Depth + row,
+                                         y + 1 < Height ? Depth + row + Stride : nullptr,
+                                         Scale,
+                                         Isotropic,
+                                         Width);
                     }
                   });
   std::uint64_t signature = 0;
@@ -181,14 +181,15 @@ Field::Assemble(bool hessian)
   Level &               l = Finest;
   std::vector<double> & maxima = m_Buffers.RowMaxima;
   const long            s = Stride;
-  m_Bands.ForRows(Height,
-                  true,
-                  [&](long y0, long y1)
-                  {
-                    for (long y = y0; y < y1; ++y)
-                    {
-                      const long row = At(0, y);
-                      (hessian ? AssembleOperatorAndHessianRow : AssembleOperatorRow)(l.C + row,
+  m_Bands.ForRows(
+    Height,
+    true,
+    [&](long y0, long y1)
+    {
+      for (long y = y0; y < y1; ++y)
+      {
+        const long row = At(0, y);
+        (hessian ? Rows().AssembleOperatorAndHessianRow : Rows().AssembleOperatorRow)(l.C + row,
                                                                                       l.E + row,
                                                                                       l.N + row,
                                                                                       HessianC + row,
@@ -205,9 +206,9 @@ Field::Assemble(bool hessian)
                                                                                       WeightDown + row - s,
                                                                                       TwiceAnisotropy,
                                                                                       Width);
-                      maxima[static_cast<std::size_t>(y)] = RowMaximumOverDiagonal(Residual + row, l.C + row, Width);
-                    }
-                  });
+        maxima[static_cast<std::size_t>(y)] = Rows().RowMaximumOverDiagonal(Residual + row, l.C + row, Width);
+      }
+    });
   return *std::max_element(maxima.begin(), maxima.end());
 }
 
@@ -220,15 +221,15 @@ Field::EnergyChange(float step)
     {
       const long row = At(0, y);
       const bool last = y + 1 == Height;
-      return EnergyChangeRow(Depth + row,
-                             last ? nullptr : Depth + row + Stride,
-                             Delta + row,
-                             Delta + row + Stride,
-                             step,
-                             anisotropy,
-                             Scale,
-                             scratch,
-                             Width);
+      return Rows().EnergyChangeRow(Depth + row,
+                                    last ? nullptr : Depth + row + Stride,
+                                    Delta + row,
+                                    Delta + row + Stride,
+                                    step,
+                                    anisotropy,
+                                    Scale,
+                                    scratch,
+                                    Width);
     });
 }
 
@@ -248,7 +249,7 @@ Field::ApplyCorrection(float step)
                   {
                     for (long y = y0; y < y1; ++y)
                     {
-                      AddRow(Depth + At(0, y), Delta + At(0, y), step, Lowest, Highest, Width);
+                      Rows().AddRow(Depth + At(0, y), Delta + At(0, y), step, Lowest, Highest, Width);
                     }
                   });
 }

@@ -1,7 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The steady solver's grid, bands and row kernels alone: the range weight against std::exp and its underflow rule,
-// a row's weights and their signature, the operator and residual rows against the stencil written out, and the
-// bands' sums, which must not depend on the team's size.
+// a row's weights and their signature, the operator and residual rows against the stencil written out (with the
+// kernels of every instruction set the processor runs), and the bands' sums, which must not depend on the team's
+// size.
 #include "itkBilateralDepthRelaxRangeWeight.h"
 #include "itkBilateralDepthRelaxSteadyGrid.h"
 #include "itkBilateralDepthRelaxSteadyRows.h"
@@ -12,6 +13,7 @@
 #include <cfloat>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace
@@ -19,6 +21,21 @@ namespace
 namespace Steady = itk::detail::BilateralDepthRelaxSteady;
 
 constexpr double Anisotropy = 1.0 / 9.0;
+
+/** The row kernels of every instruction set this processor runs, widest first, with a name for messages. */
+std::vector<std::pair<const char *, const Steady::RowKernels *>>
+EveryRunnableRowKernels()
+{
+  std::vector<std::pair<const char *, const Steady::RowKernels *>> kernels;
+  for (const auto set : itk::detail::RunnableInstructionSets())
+  {
+    const char * name = set == itk::detail::InstructionSet::AVX512 ? "AVX-512"
+                        : set == itk::detail::InstructionSet::AVX2 ? "AVX2"
+                                                                   : "baseline";
+    kernels.emplace_back(name, &Steady::RowsFor(set));
+  }
+  return kernels;
+}
 
 float
 ScaleOf(double anisotropy)
@@ -56,23 +73,27 @@ TEST(BilateralDepthRelaxSteadyRows, RangeWeightIsTheGaussianAndVanishesBeyondThe
 // 2x + 2 down).
 TEST(BilateralDepthRelaxSteadyRows, WeightRowAndItsSignature)
 {
-  const long          width = 5;
-  std::vector<double> d{ 0.0, 0.0, 50.0, 50.0, 50.0 };
-  std::vector<double> below{ 0.0, 1.0, 50.0, 0.0, 50.0 };
-  std::vector<float>  right(width, -1.0f), down(width, -1.0f);
-  const float         scale = ScaleOf(Anisotropy);
-  const auto signature = Steady::WeightRow(right.data(), down.data(), d.data(), below.data(), scale, false, width);
-  EXPECT_FLOAT_EQ(right[0], 1.0f);
-  EXPECT_EQ(right[1], 0.0f) << "a 50 mm jump";
-  EXPECT_FLOAT_EQ(right[2], 1.0f);
-  EXPECT_EQ(right[4], 0.0f) << "no edge beyond the last column";
-  EXPECT_NEAR(down[1], std::exp(-Anisotropy), 3e-7);
-  EXPECT_EQ(down[3], 0.0f);
-  // Vanishing: right edge at x = 1 (column sum 3), down at x = 3 (8).
-  EXPECT_EQ(signature, (std::uint64_t{ 2 } << 32) + 3 + 8);
-  Steady::WeightRow(right.data(), down.data(), d.data(), nullptr, scale, true, width);
-  EXPECT_EQ(right, (std::vector<float>{ 1.0f, 1.0f, 1.0f, 1.0f, 0.0f }));
-  EXPECT_EQ(down, std::vector<float>(width, 0.0f));
+  for (const auto & [name, kernels] : EveryRunnableRowKernels())
+  {
+    const Steady::RowKernels & rows = *kernels;
+    const long                 width = 5;
+    std::vector<double>        d{ 0.0, 0.0, 50.0, 50.0, 50.0 };
+    std::vector<double>        below{ 0.0, 1.0, 50.0, 0.0, 50.0 };
+    std::vector<float>         right(width, -1.0f), down(width, -1.0f);
+    const float                scale = ScaleOf(Anisotropy);
+    const auto signature = rows.WeightRow(right.data(), down.data(), d.data(), below.data(), scale, false, width);
+    EXPECT_FLOAT_EQ(right[0], 1.0f);
+    EXPECT_EQ(right[1], 0.0f) << name << ": a 50 mm jump";
+    EXPECT_FLOAT_EQ(right[2], 1.0f);
+    EXPECT_EQ(right[4], 0.0f) << name << ": no edge beyond the last column";
+    EXPECT_NEAR(down[1], std::exp(-Anisotropy), 3e-7);
+    EXPECT_EQ(down[3], 0.0f);
+    // Vanishing: right edge at x = 1 (column sum 3), down at x = 3 (8).
+    EXPECT_EQ(signature, (std::uint64_t{ 2 } << 32) + 3 + 8);
+    rows.WeightRow(right.data(), down.data(), d.data(), nullptr, scale, true, width);
+    EXPECT_EQ(right, (std::vector<float>{ 1.0f, 1.0f, 1.0f, 1.0f, 0.0f }));
+    EXPECT_EQ(down, std::vector<float>(width, 0.0f));
+  }
 }
 
 // A v and b - A v on a 5-point row, against the stencil (A v)_p = C_p v_p - sum_q w_pq v_q written out.
@@ -94,18 +115,22 @@ TEST(BilateralDepthRelaxSteadyRows, OperatorAndResidualRowsFollowTheStencil)
   const long p = stride + 1; // (0, 1): the middle row, one ghost column on the left
   e[p - 1] = 0.0f;           // no coupling to the ghost column
   e[p + width - 1] = 0.0f;   // nor beyond the last column
-  std::vector<float> product(width), residual(width);
-  Steady::ApplyRow5(product.data(), &v[p], &v[p + stride], &v[p - stride], &c[p], &e[p], &n[p], &n[p - stride], width);
-  Steady::ResidualRow5(
-    residual.data(), &v[p], &v[p + stride], &v[p - stride], &b[p], &c[p], &e[p], &n[p], &n[p - stride], width);
-  for (long x = 0; x < width; ++x)
+  for (const auto & [name, kernels] : EveryRunnableRowKernels())
   {
-    const long   q = p + x;
-    const double expected = static_cast<double>(c[q]) * v[q] - static_cast<double>(e[q]) * v[q + 1] -
-                            static_cast<double>(e[q - 1]) * v[q - 1] - static_cast<double>(n[q]) * v[q + stride] -
-                            static_cast<double>(n[q - stride]) * v[q - stride];
-    EXPECT_NEAR(product[x], expected, 1e-5) << x;
-    EXPECT_NEAR(residual[x], b[q] - expected, 1e-5) << x;
+    const Steady::RowKernels & rows = *kernels;
+    std::vector<float>         product(width), residual(width);
+    rows.ApplyRow5(product.data(), &v[p], &v[p + stride], &v[p - stride], &c[p], &e[p], &n[p], &n[p - stride], width);
+    rows.ResidualRow5(
+      residual.data(), &v[p], &v[p + stride], &v[p - stride], &b[p], &c[p], &e[p], &n[p], &n[p - stride], width);
+    for (long x = 0; x < width; ++x)
+    {
+      const long   q = p + x;
+      const double expected = static_cast<double>(c[q]) * v[q] - static_cast<double>(e[q]) * v[q + 1] -
+                              static_cast<double>(e[q - 1]) * v[q - 1] - static_cast<double>(n[q]) * v[q + stride] -
+                              static_cast<double>(n[q - stride]) * v[q - stride];
+      EXPECT_NEAR(product[x], expected, 1e-5) << name << ", x = " << x;
+      EXPECT_NEAR(residual[x], b[q] - expected, 1e-5) << name << ", x = " << x;
+    }
   }
 }
 
@@ -139,7 +164,7 @@ TEST(BilateralDepthRelaxSteadyRows, BandsCoverEveryRowOnceAndSumTheSameForAnyTea
     for (long y = 0; y < height; ++y)
       ASSERT_EQ(visits[static_cast<std::size_t>(y)].load(), 1) << threads << " threads, row " << y;
     const double sum =
-      bands.SumRows([&](long y, float *) { return Steady::RowDot(&a[y * stride], &b[y * stride], width); });
+      bands.SumRows([&](long y, float *) { return Steady::Rows().RowDot(&a[y * stride], &b[y * stride], width); });
     if (threads == 1)
     {
       reference = sum;
@@ -150,5 +175,33 @@ TEST(BilateralDepthRelaxSteadyRows, BandsCoverEveryRowOnceAndSumTheSameForAnyTea
       EXPECT_NEAR(sum, plain, 1e-9);
     }
     EXPECT_EQ(sum, reference) << threads << " threads";
+  }
+}
+
+// The solver's kernels are those of the widest instruction set the processor runs (the same choice as the Jacobi
+// sweep's), and each runnable set has a table of its own, every entry filled.
+TEST(BilateralDepthRelaxSteadyRows, TheSolverRunsTheWidestInstructionSet)
+{
+  const auto kernels = EveryRunnableRowKernels();
+  ASSERT_FALSE(kernels.empty());
+  EXPECT_EQ(&Steady::Rows(), kernels.front().second);
+  EXPECT_EQ(itk::detail::RunnableInstructionSets().back(), itk::detail::InstructionSet::Baseline);
+  for (std::size_t k = 0; k < kernels.size(); ++k)
+  {
+    for (std::size_t j = 0; j < k; ++j)
+    {
+      EXPECT_NE(kernels[j].second, kernels[k].second) << kernels[j].first << " and " << kernels[k].first;
+    }
+    const Steady::RowKernels & rows = *kernels[k].second;
+    for (const void * entry : { reinterpret_cast<const void *>(rows.SmoothRow5),
+                                reinterpret_cast<const void *>(rows.SmoothRow9),
+                                reinterpret_cast<const void *>(rows.RestrictRow),
+                                reinterpret_cast<const void *>(rows.ProlongRow),
+                                reinterpret_cast<const void *>(rows.EnergyChangeRow),
+                                reinterpret_cast<const void *>(rows.RowMaximumOverDiagonal),
+                                reinterpret_cast<const void *>(rows.BuildGalerkinRowFrom9) })
+    {
+      EXPECT_NE(entry, nullptr) << kernels[k].first;
+    }
   }
 }
