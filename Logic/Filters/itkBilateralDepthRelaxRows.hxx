@@ -436,6 +436,31 @@ RelaxRowPair(const RelaxGrid &  grid,
                                             lowerLeftFlux);
 }
 
+/** 1 in the lanes of a row's last vector whose column has a right neighbour, 0 elsewhere. */
+template<typename V>
+VR_ALWAYS_INLINE typename V::Float
+LastVectorRightEdges(const RelaxGrid & grid)
+{
+  typename V::Float edges;
+  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
+  {
+    // Only columns left of the last one have a right neighbour.
+    edges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
+  }
+  return edges;
+}
+
+/** The image's first row has no edges above it: weight and flux 0. */
+VR_ALWAYS_INLINE void
+ClearUpEdges(const RelaxGrid & grid, const RowScratch & scratch)
+{
+  for (std::size_t x = 0; x < grid.Stride; ++x)
+  {
+    scratch.UpWeight[x] = 0.0f;
+    scratch.UpFlux[x] = 0.0f;
+  }
+}
+
 /** One Jacobi iteration of rows [rowBegin, rowEnd): reads \a current (all rows), writes those rows of \a next.
  * The edges above the band come from relaxing the row above into a discarded row with the very same code, so
  * a band boundary changes no bit. */
@@ -448,18 +473,9 @@ SweepRows(const RelaxGrid & grid,
           std::size_t       rowEnd,
           RowScratch &      scratch)
 {
-  const TWeight     weight{};
-  typename V::Float lastVectorRightEdges;
-  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
-  {
-    // Only columns left of the last one have a right neighbour.
-    lastVectorRightEdges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
-  }
-  for (std::size_t x = 0; x < grid.Stride; ++x)
-  {
-    scratch.UpWeight[x] = 0.0f;
-    scratch.UpFlux[x] = 0.0f;
-  }
+  const TWeight           weight{};
+  const typename V::Float lastVectorRightEdges = LastVectorRightEdges<V>(grid);
+  ClearUpEdges(grid, scratch);
   if (rowBegin > 0)
   {
     RelaxRow<V, true>(grid, weight, lastVectorRightEdges, current, rowBegin - 1, scratch.DiscardedRow, scratch);
@@ -515,31 +531,6 @@ SweepRowsWith(const RelaxGrid & grid,
 
 // Blocks of passes (temporal blocking, itkBilateralDepthRelaxKernel.cxx) relax single rows held anywhere; one
 // pass a block uses SweepRows above.
-
-/** 1 in the lanes of a row's last vector whose column has a right neighbour, 0 elsewhere. */
-template<typename V>
-VR_ALWAYS_INLINE typename V::Float
-LastVectorRightEdges(const RelaxGrid & grid)
-{
-  typename V::Float edges;
-  for (std::size_t lane = 0; lane < V::Lanes; ++lane)
-  {
-    // Only columns left of the last one have a right neighbour.
-    edges[lane] = (LastVectorOfRow<V>(grid) + lane + 1 < grid.Width) ? 1.0f : 0.0f;
-  }
-  return edges;
-}
-
-/** The image's first row has no edges above it: weight and flux 0. */
-VR_ALWAYS_INLINE void
-ClearUpEdges(const RelaxGrid & grid, const RowScratch & scratch)
-{
-  for (std::size_t x = 0; x < grid.Stride; ++x)
-  {
-    scratch.UpWeight[x] = 0.0f;
-    scratch.UpFlux[x] = 0.0f;
-  }
-}
 
 /** StartFunction: the edges above row \a first, as SweepRows computes them for a band starting there. */
 template<typename V, typename TWeight>
