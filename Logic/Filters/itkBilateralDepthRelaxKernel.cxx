@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkBilateralDepthRelaxKernel.h"
 
+#include "itkBilateralDepthRelaxArrays.h"
 #include "itkBilateralDepthRelaxInstructionSets.h"
 #include "itkBilateralDepthRelaxRows.h"
 #include "itkThreadTeamBarrier.h"
@@ -87,59 +88,18 @@ DepthScale(double anisotropy)
   return anisotropy > 0.0 ? std::sqrt(anisotropy / std::log(2.0)) : 1.0;
 }
 
-/** Values aligned to a cache line, zero-filled. */
-template<typename TValue>
-class AlignedBuffer
-{
-public:
-  explicit AlignedBuffer(std::size_t count)
-    : m_Data(Allocate(count))
-  {
-  }
-  TValue *
-  Get() const
-  {
-    return m_Data.get();
-  }
-
-private:
-  static constexpr std::align_val_t Alignment{ 64 };
-  static TValue *
-  Allocate(std::size_t count)
-  {
-    if (count > std::numeric_limits<std::size_t>::max() / sizeof(TValue) - RowAlignment)
-    {
-      throw std::bad_alloc();
-    }
-    const std::size_t rounded = (count + RowAlignment - 1) / RowAlignment * RowAlignment;
-    auto *            data = static_cast<TValue *>(::operator new[](rounded * sizeof(TValue), Alignment));
-    std::fill_n(data, rounded, TValue{});
-    return data;
-  }
-  struct Deleter
-  {
-    void
-    operator()(TValue * data) const
-    {
-      ::operator delete[](data, Alignment);
-    }
-  };
-  std::unique_ptr<TValue[], Deleter> m_Data;
-};
-
 /** A thread's row buffers, in two allocations. */
 class ThreadScratch
 {
 public:
   explicit ThreadScratch(std::size_t stride)
-    : m_Edges(4 * stride)
-    , m_DiscardedRow(2 * stride)
   {
-    m_Rows.UpWeight = m_Edges.Get();
-    m_Rows.UpFlux = m_Edges.Get() + stride;
-    m_Rows.DownWeight = m_Edges.Get() + 2 * stride;
-    m_Rows.DownFlux = m_Edges.Get() + 3 * stride;
-    m_Rows.DiscardedRow = m_DiscardedRow.Get();
+    float * const edges = m_Edges.Reserve(4 * stride);
+    m_Rows.UpWeight = edges;
+    m_Rows.UpFlux = edges + stride;
+    m_Rows.DownWeight = edges + 2 * stride;
+    m_Rows.DownFlux = edges + 3 * stride;
+    m_Rows.DiscardedRow = m_DiscardedRow.Reserve(2 * stride);
   }
   RowScratch &
   Rows()
@@ -148,31 +108,9 @@ public:
   }
 
 private:
-  AlignedBuffer<float> m_Edges;
-  AlignedBuffer<float> m_DiscardedRow;
-  RowScratch           m_Rows{};
-};
-
-/** An AlignedBuffer that keeps its memory while later requests fit in it. */
-class ReusableBuffer
-{
-public:
-  /** At least \a count floats: zero where newly allocated, finite values of an earlier call elsewhere. */
-  float *
-  Reserve(std::size_t count)
-  {
-    if (count > m_Capacity)
-    {
-      m_Buffer.reset();
-      m_Buffer = std::make_unique<AlignedBuffer<float>>(count);
-      m_Capacity = count;
-    }
-    return m_Buffer->Get();
-  }
-
-private:
-  std::unique_ptr<AlignedBuffer<float>> m_Buffer;
-  std::size_t                           m_Capacity{ 0 };
+  detail::ReusableArray<float> m_Edges;
+  detail::ReusableArray<float> m_DiscardedRow;
+  RowScratch                   m_Rows{};
 };
 
 /** Input rows a pass of a block keeps for the next: rows y and y + 1 are read while row y + 2 is written. */
@@ -199,8 +137,7 @@ public:
     if (passes > 1 && passes - 1 > m_RingPasses)
     {
       // The right neighbour of the last vector of the last ring row reads one vector past it.
-      m_Ring.reset();
-      m_Ring = std::make_unique<AlignedBuffer<float>>((passes - 1) * RingRows * 2 * m_Stride + RowAlignment);
+      m_RingRows = m_Ring.Reserve((passes - 1) * RingRows * 2 * m_Stride + RowAlignment);
       m_RingPasses = passes - 1;
     }
     NextRow.resize(std::max<std::size_t>(NextRow.size(), passes));
@@ -218,7 +155,7 @@ public:
   float *
   RingRow(unsigned int pass, std::size_t y)
   {
-    return m_Ring->Get() + (pass * RingRows + y % RingRows) * 2 * m_Stride;
+    return m_RingRows + (pass * RingRows + y % RingRows) * 2 * m_Stride;
   }
 
   /** Per pass of the block being run: the next row to relax, and whether its edges above were set up. */
@@ -228,7 +165,8 @@ public:
 private:
   std::size_t                                 m_Stride;
   std::vector<std::unique_ptr<ThreadScratch>> m_Passes;
-  std::unique_ptr<AlignedBuffer<float>>       m_Ring;
+  detail::ReusableArray<float>                m_Ring;
+  float *                                     m_RingRows{ nullptr };
   std::size_t                                 m_RingPasses{ 0 };
 };
 
@@ -323,9 +261,9 @@ RelaxBlock(const RowKernels & kernels,
 /** The depth pairs (ping-pong), the self weights and each team member's row buffers. */
 struct BilateralDepthRelaxKernel::Workspace::Buffers
 {
-  ReusableBuffer                              First;
-  ReusableBuffer                              Second;
-  ReusableBuffer                              SelfWeight;
+  detail::ReusableArray<float>                First;
+  detail::ReusableArray<float>                Second;
+  detail::ReusableArray<float>                SelfWeight;
   std::vector<std::unique_ptr<MemberScratch>> Scratch;
   std::size_t                                 ScratchStride{ 0 };
 
@@ -643,7 +581,8 @@ BilateralDepthRelaxKernel::GetWorkspaceBytes(std::size_t  width,
   {
     return 0;
   }
-  // As Relax() and the buffers above allocate them: AlignedBuffer rounds every count up to RowAlignment floats.
+  // As Relax() and the buffers above allocate them: ReusableArray rounds every count up to RowAlignment floats.
+  static_assert(detail::ReusableArray<float>::Granule == RowAlignment);
   auto aligned = [](std::size_t count) { return (count + RowAlignment - 1) / RowAlignment * RowAlignment; };
   const std::size_t  stride = aligned(width);
   const std::size_t  paddedCount = height * stride;

@@ -5,6 +5,7 @@
 #ifndef itkBilateralDepthRelaxSteadyGrid_h
 #define itkBilateralDepthRelaxSteadyGrid_h
 
+#include "itkBilateralDepthRelaxArrays.h"
 #include "itkThreadTeam.h"
 
 #include <cstddef>
@@ -34,93 +35,11 @@ PaddedSize(long width, long height)
   return static_cast<std::size_t>(PaddedStride(width) * (height + 3));
 }
 
-/** Memory that a finer grid lends a coarser grid's solve of the nested iteration: the finer grid's scratch arrays,
- * whose values it does not need while the coarser grid is solved (it computes them again afterwards). Spans are
- * handed out first fit, 64-byte aligned, zero-filled; ZeroTaken() zeroes what was handed out again, so that the
- * lender's arrays are as freshly sized ones (ghost cells zero) when it takes them back. Holds no allocation. */
-class Lender
-{
-public:
-  /** Spans at most: a finer grid lends its eight scratch arrays and its first coarse level's sixteen. */
-  static constexpr std::size_t MaximumSpans = 32;
-
-  /** Forgets the spans (a new lending: arrays given spans of an earlier one take new ones). */
-  void
-  Clear();
-
-  /** Lends \a bytes at \a begin (ignored when MaximumSpans are lent). */
-  void
-  Add(void * begin, std::size_t bytes);
-
-  /** \a bytes zero-filled from the first span with room, or null when none has. */
-  void *
-  Take(std::size_t bytes);
-
-  /** Zeroes every byte handed out since Clear() or the last call, and takes it back. */
-  void
-  ZeroTaken();
-
-  /** Which lending the spans belong to. */
-  std::uint64_t
-  GetLending() const
-  {
-    return m_Lending;
-  }
-
-private:
-  struct Span
-  {
-    char *      Begin;
-    std::size_t Bytes;
-    std::size_t Used;
-    std::size_t Taken;
-  };
-  Span          m_Spans[MaximumSpans]{};
-  std::size_t   m_Count{ 0 };
-  std::uint64_t m_Lending{ 0 };
-};
-
-/** Values kept from one solve to the next; zero-filled when (re)sized, so ghost cells start at zero. With a Lender, a
- * span of its memory instead (zero-filled when taken; the same span for the rest of that lending), and the array's
- * own values are freed; without one, or when the lender has no room, its own. */
+/** The solver's arrays: kept from one solve to the next, zero-filled when (re)sized, some lent by a finer grid
+ * (itkBilateralDepthRelaxArrays.h). */
 template<typename T>
-class Array
-{
-public:
-  T *
-  Reserve(std::size_t count, bool & fresh, Lender * lender = nullptr)
-  {
-    if (lender)
-    {
-      if (m_Lent && m_Lending == lender->GetLending() && m_LentCount == count)
-      {
-        return m_Lent;
-      }
-      if (void * lent = lender->Take(count * sizeof(T)))
-      {
-        std::vector<T>().swap(m_Values);
-        m_Lent = static_cast<T *>(lent);
-        m_LentCount = count;
-        m_Lending = lender->GetLending();
-        fresh = true;
-        return m_Lent;
-      }
-    }
-    m_Lent = nullptr;
-    if (m_Values.size() != count)
-    {
-      m_Values.assign(count, T{});
-      fresh = true;
-    }
-    return m_Values.data();
-  }
-
-private:
-  std::vector<T> m_Values;
-  T *            m_Lent{ nullptr };
-  std::size_t    m_LentCount{ 0 };
-  std::uint64_t  m_Lending{ 0 };
-};
+using Array = ReusableArray<T>;
+using detail::Lender;
 
 /** One grid of the multigrid hierarchy. Points (x, y), 0 <= x < Width, 0 <= y < Height, live at At(x, y) in
  * padded arrays whose ghost border stays zero: coefficients, corrections and residuals all vanish outside the grid
