@@ -21,6 +21,14 @@ for tool in "$module" "$writer"; do
 done
 rm -rf "$work"
 mkdir -p "$work/kept"
+# A copy of the module, its library and the DICOM reader process, so that a rebuild of the build folder during a long
+# campaign cannot fail runs (a half-linked library reads as "file too short").
+frozen=$work/programs
+mkdir -p "$frozen/cli-modules" "$frozen/libexec/VesselReformation"
+cp "$module" "$build"/cli-modules/libVesselReformationLib.so "$frozen/cli-modules/"
+cp "$build/libexec/VesselReformation/vrReadDicomSeries" "$frozen/libexec/VesselReformation/"
+module=$frozen/cli-modules/VesselReformation
+export LD_LIBRARY_PATH=$frozen/cli-modules${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 "$writer" "$data/aorta.mha" "$work/series"
 centerlines=$data/aorta-centerline.vtp
 
