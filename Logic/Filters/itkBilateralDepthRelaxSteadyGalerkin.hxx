@@ -121,8 +121,8 @@ GalerkinEntry(const Level & f, const Level & c, long k, long p0)
 }
 
 /** Coarse row \a J's operator. Each coarse point's entries read the interpolation and the finer operator only and
- * write that point's own entries, so no point of the row depends on another (ivdep tells the vectoriser so). An
- * inactive point has no interpolation to or from it, so its entries come out 0 without a test. */
+ * write that point's own entries, so no point of the row depends on another (ivdep, in Clang assume_safety, tells the
+ * vectoriser so). An inactive point has no interpolation to or from it, so its entries come out 0 without a test. */
 template<bool NinePoint>
 [[gnu::always_inline]] inline void
 BuildGalerkinRowOf(const Level & f, Level & c, long J)
@@ -130,7 +130,11 @@ BuildGalerkinRowOf(const Level & f, Level & c, long J)
   const long k0 = c.At(0, J);
   const long p00 = f.At(0, 2 * J);
   const long width = c.Width;
+#if defined(__clang__)
+#pragma clang loop vectorize(assume_safety)
+#else
 #pragma GCC ivdep
+#endif
   for (long I = 0; I < width; ++I)
   {
     const long   k = k0 + I;
