@@ -5,12 +5,15 @@
 // some corrupt files: here an abort ends this process only. Before GDCM opens a file, "file <path>" is appended to
 // the progress file, so the parent can name the file that a crash or a failure happened in. Its last line is "done"
 // on success, or "error <scan|none|read N|message|write>" followed by ITK's description (or the message) on the
-// lines after it. Each file is also sorted into series alone before the folder is, since GDCM asserts in the sort too.
+// lines after it. Each file is also sorted into series alone before the folder is, since GDCM asserts in the sort too,
+// and the series' geometry attributes are checked file by file before the volume is handed over
+// (vrDicomSliceGeometry.h).
 // Exit status: 0 done, 1 error, 2 wrong arguments.
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileWriter.h"
 #include "vrDICOMIdentity.h"
+#include "vrDicomSliceGeometry.h"
 #include "itkImageSeriesReader.h"
 #include "itkMetaImageIO.h"
 #include "itkObject.h"
@@ -25,6 +28,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -206,10 +210,35 @@ main(int argc, char * argv[])
                 "the DICOM series has " + std::to_string(dicom->GetNumberOfComponents()) +
                   " components per pixel (colour?); a volume must be scalar");
   }
+  // The geometry ITK took from the files: a corrupt position in one file would displace the whole volume unnamed.
+  const auto * headers = reader->GetMetaDataDictionaryArray();
+  if (headers != nullptr && headers->size() == files.size())
+  {
+    std::vector<vr::detail::DicomSliceAttributes> slices;
+    for (std::size_t k = 0; k < files.size(); ++k)
+    {
+      auto text = [&](const char * key) -> std::optional<std::string>
+      {
+        std::string value;
+        if ((*headers)[k] == nullptr || !itk::ExposeMetaData<std::string>(*(*headers)[k], key, value))
+        {
+          return std::nullopt;
+        }
+        value.erase(value.find_last_not_of('\0') + 1); // a writer's even-length padding
+        return value;
+      };
+      slices.push_back({ files[k], text("0020|0032"), text("0020|0037"), text("0028|0030") });
+    }
+    if (const std::string message = vr::detail::CheckDicomSliceGeometry(slices); !message.empty())
+    {
+      return Fail("message",
+                  message + "; the series (" + std::to_string(files.size()) + (files.size() == 1 ? " file" : " files") +
+                    ") is not read: remove or replace that file");
+    }
+  }
   Report("write");
   // The patient and study of the first file, for the node the caller makes (vr::DICOMAttribute): one
   // "key<TAB>value" line each beside the volume.
-  const auto * headers = reader->GetMetaDataDictionaryArray();
   if (headers != nullptr && !headers->empty() && headers->front() != nullptr)
   {
     std::ofstream identity(output + ".identity");

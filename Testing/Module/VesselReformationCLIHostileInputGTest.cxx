@@ -3,6 +3,8 @@
 // vrCLITestSupport.h).
 #include "vrCLITestSupport.h"
 
+#include <functional>
+
 namespace
 {
 using namespace vr::test::cli;
@@ -186,7 +188,8 @@ TEST_F(BadInputTest, TubeFileDeclaringTwoBillionPoints)
   ExpectRejected({ Volume(), Write("tab.tre", tube("x y\tz r")) }, { "tab.tre", "PointDim" });
   const std::string found =
     Write("found.tre", ReadText(fs::path(VR_FUZZ_CORPUS_DIR) / "tre" / "crash-pointdim-space-run-wild-pointer"));
-  ExpectRejected({ Volume(), found }, { "centerline file " + found + ": object 4 (Tube): PointDim = id x y z red green " });
+  ExpectRejected({ Volume(), found },
+                 { "centerline file " + found + ": object 4 (Tube): PointDim = id x y z red green " });
 }
 
 TEST_F(BadInputTest, MarkupsNestedAHundredThousandDeep)
@@ -238,26 +241,30 @@ TEST_F(BadInputTest, FuzzFindingsInNIfTIHeaders)
   }
 }
 
-/** Writes a 6 x 5 x 4 series of short slices with ITK's GDCM IO into \a folder, as ITK's DICOM examples do. */
+/** Writes a 6 x 5 x \a slices series of short slices with ITK's GDCM IO into \a folder, as ITK's DICOM examples do,
+ * slice z at (0, 0, 2z) mm, or at \a position(z) where that is not empty. */
 void
-WriteDicomSeries(const fs::path & folder)
+WriteDicomSeries(const fs::path &                                   folder,
+                 unsigned int                                       slices = 4,
+                 const std::function<std::string(unsigned int z)> & position = {})
 {
   using Volume = itk::Image<short, 3>;
   using Slice = itk::Image<short, 2>;
   auto volume = Volume::New();
-  volume->SetRegions(Volume::RegionType({ { 0, 0, 0 } }, { { 6, 5, 4 } }));
+  volume->SetRegions(Volume::RegionType({ { 0, 0, 0 } }, { { 6, 5, slices } }));
   volume->SetSpacing(itk::Vector<double, 3>(2.0));
   volume->Allocate(true);
   fs::create_directories(folder);
   std::vector<std::unique_ptr<itk::MetaDataDictionary>> owned;
   std::vector<itk::MetaDataDictionary *>                dictionaries;
   std::vector<std::string>                              names;
-  for (unsigned int z = 0; z < 4; ++z)
+  for (unsigned int z = 0; z < slices; ++z)
   {
-    auto dictionary = std::make_unique<itk::MetaDataDictionary>();
+    auto              dictionary = std::make_unique<itk::MetaDataDictionary>();
+    const std::string at = position ? position(z) : std::string();
     itk::EncapsulateMetaData<std::string>(*dictionary, "0020|000e", "1.2.826.0.1.3680043.2.1125.9.1");
     itk::EncapsulateMetaData<std::string>(*dictionary, "0020|0013", std::to_string(z + 1));
-    itk::EncapsulateMetaData<std::string>(*dictionary, "0020|0032", "0\\0\\" + std::to_string(2 * z));
+    itk::EncapsulateMetaData<std::string>(*dictionary, "0020|0032", at.empty() ? "0\\0\\" + std::to_string(2 * z) : at);
     itk::EncapsulateMetaData<std::string>(*dictionary, "0020|0037", "1\\0\\0\\0\\1\\0");
     dictionaries.push_back(dictionary.get());
     owned.push_back(std::move(dictionary));
@@ -284,7 +291,12 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
                                 "dicom-truncated-assert/IM0011.dcm",
                                 "dicom-bits-allocated-unhandled/IM0030.dcm",
-                                "dicom-acr-nema-assert/IM0027.dcm" })
+                                "dicom-acr-nema-assert/IM0027.dcm",
+                                // The mutation campaign's: a position GDCM reads leniently as another number, which
+                                // displaced the volume with no file named (vrDicomSliceGeometry.h).
+                                "dicom-position-byte-9f/IM0019.dcm",
+                                "dicom-position-byte-ff/IM0003.dcm",
+                                "dicom-position-dot-became-backslash/IM0024.dcm" })
   {
     const fs::path    file = fs::path(VR_FINDINGS_DIR) / finding;
     const std::string name = file.filename().string();
@@ -356,6 +368,30 @@ TEST_F(BadInputTest, DICOMFileOnWhichGDCMsSeriesSortAsserts)
   WriteDicomSeries(mixed);
   fs::copy_file(file, mixed / "IM0001.dcm");
   ExpectRejected({ mixed.string(), Centerlines() }, { "the DICOM file " + (mixed / "IM0001.dcm").string() });
+}
+
+// Issue 25, the DICOM mutation campaign: a file whose position GDCM read as another number moved the whole volume,
+// and the module said only that the centerlines lie outside it. A file off the series' line of slices (5 mm aside in
+// the plane, a valid number) is named; ITK takes the origin from the first file, so that one too.
+TEST_F(BadInputTest, DICOMSeriesWithAFileOffItsLineOfSlices)
+{
+  for (const unsigned int off : { 3u, 0u })
+  {
+    const fs::path folder = m_Folder / ("off-line-" + std::to_string(off));
+    WriteDicomSeries(
+      folder, 8, [off](unsigned int z) { return (z == off ? "5\\0\\" : "0\\0\\") + std::to_string(2 * z); });
+    const std::string file = (folder / ("slice" + std::to_string(off + 1) + ".dcm")).string();
+    const RunResult   run = ExpectRejected(
+      { folder.string(), Centerlines() },
+      { "the DICOM file " + file + " lies off the series' line of slices", "the series (8 files) is not read" });
+    EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
+  }
+  // The same series in line is read (and then fails for want of overlap with the aorta's centerlines, not for DICOM).
+  const fs::path good = m_Folder / "in-line";
+  WriteDicomSeries(good, 8);
+  const RunResult run =
+    RunProgram({ ReformationExecutable, good.string(), Centerlines(), (m_Folder / "ok.nrrd").string() });
+  EXPECT_FALSE(Contains(run.Err, "DICOM")) << run.Err;
 }
 
 TEST_F(BadInputTest, APNGNamedLikeAVolume)
