@@ -134,16 +134,26 @@ OuterLoop::Step(double target)
   {
     m_Correction.Solve(target, false);
     m_Field.ApplyCorrection(1.0f);
+    return;
   }
-  else if (m_Correction.Solve(target, true) && m_Field.EnergyChange(1.0f) <= 0.0)
+  if (m_Correction.Solve(target, true))
   {
-    m_Field.ApplyCorrection(1.0f);
+    if (m_Field.EnergyChange(1.0f) <= 0.0)
+    {
+      m_Field.ApplyCorrection(1.0f);
+      return;
+    }
+    // The whole Newton step overshoots. The conjugate gradients met only positive curvature, so it points downhill:
+    // a shorter step along it costs one energy evaluation, where the search below costs a lagged-weights solve and
+    // several.
+    if (m_Field.EnergyChange(NewtonBacktrack) < 0.0)
+    {
+      m_Field.ApplyCorrection(NewtonBacktrack);
+      return;
+    }
   }
-  else
-  {
-    m_Newton = false;
-    SearchStep(target);
-  }
+  m_Newton = false;
+  SearchStep(target);
 }
 
 void

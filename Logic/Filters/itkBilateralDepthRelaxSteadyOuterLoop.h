@@ -52,6 +52,9 @@ public:
    * previous one. */
   static constexpr double NewtonAfterReduction = 0.5;
 
+  /** A Newton step that raises the energy is tried at this fraction of its length before the search (SearchStep). */
+  static constexpr float NewtonBacktrack = 0.5f;
+
   OuterLoop(Field & field, Multigrid & multigrid, Correction & correction)
     : m_Field(field)
     , m_Multigrid(multigrid)
@@ -81,7 +84,8 @@ private:
   Progress(double residual, double tolerance);
 
   /** One outer iteration's step towards \a target (max |r| / C): a lagged-weights step, or a Newton step when
-   * m_Newton says so and it lowers the energy, else a line search. Updates m_Newton. */
+   * m_Newton says so and it lowers the energy (else half of it, when that does), else a line search. Updates
+   * m_Newton. */
   void
   Step(double target);
 

@@ -32,13 +32,14 @@ namespace itk
  * with a multigrid V-cycle until the residual has fallen tenfold) while each halves the residual. From the first one
  * that does not, they try Newton steps: the energy's own curvature along an edge is R(x) (1 - 2 a x^2), so its
  * Hessian is the Laplacian with those weights (negative where |x| > J / sqrt(2), J = 1 / sqrt(a)), solved the same
- * way with the lagged-weights V-cycle as preconditioner. A Newton step is taken when it lowers E, and Newton steps
- * go on while they are taken. Otherwise that outer iteration takes the lagged-weights correction, stretched by the
- * power of two up to 64 that lowers E most, or, where the conjugate gradients met negative curvature, a step along
- * that direction (either sense, J / 32 doubled up to 2 J) if it lowers E more. Lagged weights alone creep where
- * edges sit near or beyond the inflection J / sqrt(2), since their curvature R overstates the energy's: on the
- * thoracic phantom's arch seams at 512 x 1024 they took 617 outer iterations, against 54 with them (19 against 131 at
- * 128 x 256); the run-off phantom never leaves lagged weights (5). From the same start the solver reaches the fixed
+ * way with the lagged-weights V-cycle as preconditioner. A Newton step is taken when it lowers E (else half of it,
+ * when that does), and Newton steps go on while they are taken. Otherwise that outer iteration takes the
+ * lagged-weights correction, stretched by the power of two up to 64 that lowers E most, or, where the conjugate
+ * gradients met negative curvature, a step along that direction (either sense, J / 32 doubled up to 2 J) if it
+ * lowers E more. Lagged weights alone creep where edges sit near or beyond the inflection J / sqrt(2), since their
+ * curvature R overstates the energy's: on the thoracic phantom's arch seams at 512 x 1024 they took 617 outer
+ * iterations, against 54 with them (19 against 131 at 128 x 256; 50 at 512 x 1024 since half Newton steps); the
+ * run-off phantom never leaves lagged weights (5). From the same start the solver reaches the fixed
  * point Jacobi approaches (the same energy to eight digits as lagged weights alone).
  *
  * Those outer iterations settle the seams near the inflection a few at a time, so from the input they grew with the
