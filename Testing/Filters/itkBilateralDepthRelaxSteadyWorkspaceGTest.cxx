@@ -26,10 +26,10 @@ std::atomic<std::size_t> PeakBytes{ 0 };
 /** Each block carries its size in a header of the largest fundamental alignment. */
 constexpr std::size_t Header = alignof(std::max_align_t);
 
+/** Writes \a size into the header at \a block, counts it, and returns the memory after a header of \a header bytes. */
 void *
-Allocate(std::size_t size)
+Counting(void * block, std::size_t size, std::size_t header)
 {
-  void * block = std::malloc(size + Header);
   if (!block)
   {
     throw std::bad_alloc();
@@ -40,18 +40,31 @@ Allocate(std::size_t size)
   while (live > peak && !PeakBytes.compare_exchange_weak(peak, live))
   {
   }
-  return static_cast<char *>(block) + Header;
+  return static_cast<char *>(block) + header;
+}
+
+void *
+Allocate(std::size_t size)
+{
+  return Counting(std::malloc(size + Header), size, Header);
+}
+
+/** Uncounts and frees the block whose memory \a pointer gave, after a header of \a header bytes. */
+void
+Release(void * pointer, std::size_t header) noexcept
+{
+  if (pointer)
+  {
+    void * block = static_cast<char *>(pointer) - header;
+    LiveBytes -= *static_cast<std::size_t *>(block);
+    std::free(block);
+  }
 }
 
 void
 Free(void * pointer) noexcept
 {
-  if (pointer)
-  {
-    void * block = static_cast<char *>(pointer) - Header;
-    LiveBytes -= *static_cast<std::size_t *>(block);
-    std::free(block);
-  }
+  Release(pointer, Header);
 }
 
 /** The same for the aligned forms (the solver's arrays are 64-byte aligned): the header takes a whole alignment. */
@@ -59,30 +72,13 @@ void *
 AllocateAligned(std::size_t size, std::align_val_t alignment)
 {
   const auto align = std::max(static_cast<std::size_t>(alignment), Header);
-  const auto rounded = (size + align + align - 1) / align * align;
-  void *     block = std::aligned_alloc(align, rounded);
-  if (!block)
-  {
-    throw std::bad_alloc();
-  }
-  *static_cast<std::size_t *>(block) = size;
-  const std::size_t live = LiveBytes += size;
-  std::size_t       peak = PeakBytes.load();
-  while (live > peak && !PeakBytes.compare_exchange_weak(peak, live))
-  {
-  }
-  return static_cast<char *>(block) + align;
+  return Counting(std::aligned_alloc(align, (size + align + align - 1) / align * align), size, align);
 }
 
 void
 FreeAligned(void * pointer, std::align_val_t alignment) noexcept
 {
-  if (pointer)
-  {
-    void * block = static_cast<char *>(pointer) - std::max(static_cast<std::size_t>(alignment), Header);
-    LiveBytes -= *static_cast<std::size_t *>(block);
-    std::free(block);
-  }
+  Release(pointer, std::max(static_cast<std::size_t>(alignment), Header));
 }
 } // namespace
 
