@@ -136,29 +136,48 @@ constexpr Attribute Position{ "Image Position (Patient) (0020,0032)", 3, &DicomS
 constexpr Attribute Orientation{ "Image Orientation (Patient) (0020,0037)", 6, &DicomSliceAttributes::Orientation };
 constexpr Attribute PixelSpacing{ "Pixel Spacing (0028,0030)", 2, &DicomSliceAttributes::PixelSpacing };
 
-/** Each file's values of \a attribute, or a message; empty rows when the first file lacks it. */
+/** \a slice's values of \a attribute (none when it lacks it), or a message naming the file. */
+std::string
+ValueOf(const DicomSliceAttributes & slice, const Attribute & attribute, std::optional<std::vector<double>> & values)
+{
+  values.reset();
+  const auto & text = slice.*attribute.Member;
+  if (!text)
+  {
+    return std::string();
+  }
+  values = ParseDecimalStrings(*text, attribute.Count);
+  if (!values)
+  {
+    return "the DICOM file " + slice.File + ": its " + attribute.Name + " is " + Shown(*text) + ", not " +
+           std::to_string(attribute.Count) + " decimal numbers";
+  }
+  return std::string();
+}
+
+/** Each file's values of \a attribute, or a message; no rows when no file has it. */
 std::string
 ValuesOf(const std::vector<DicomSliceAttributes> & slices,
          const Attribute &                         attribute,
          std::vector<std::vector<double>> &        values)
 {
   values.clear();
-  if (!(slices.front().*attribute.Member))
+  const auto having =
+    std::find_if(slices.begin(), slices.end(), [&](const auto & slice) { return bool(slice.*attribute.Member); });
+  if (having == slices.end())
   {
     return std::string();
   }
   for (const auto & slice : slices)
   {
-    const auto & text = slice.*attribute.Member;
-    if (!text)
+    if (!(slice.*attribute.Member))
     {
-      return "the DICOM file " + slice.File + " lacks the " + attribute.Name + " that the series' first file has";
+      return "the DICOM file " + slice.File + " lacks the " + attribute.Name + " that the series' other files have";
     }
-    const auto parsed = ParseDecimalStrings(*text, attribute.Count);
-    if (!parsed)
+    std::optional<std::vector<double>> parsed;
+    if (std::string message = ValueOf(slice, attribute, parsed); !message.empty())
     {
-      return "the DICOM file " + slice.File + ": its " + attribute.Name + " is " + Shown(*text) + ", not " +
-             std::to_string(attribute.Count) + " decimal numbers";
+      return message;
     }
     values.push_back(*parsed);
   }
@@ -220,6 +239,20 @@ ParseDecimalStrings(const std::string & text, std::size_t count)
     return std::nullopt;
   }
   return values;
+}
+
+std::string
+CheckDicomSliceAttributes(const DicomSliceAttributes & slice)
+{
+  std::optional<std::vector<double>> values;
+  for (const Attribute * attribute : { &Position, &Orientation, &PixelSpacing })
+  {
+    if (std::string message = ValueOf(slice, *attribute, values); !message.empty())
+    {
+      return message;
+    }
+  }
+  return std::string();
 }
 
 std::string

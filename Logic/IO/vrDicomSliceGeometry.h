@@ -28,8 +28,15 @@ struct DicomSliceAttributes
 std::optional<std::vector<double>>
 ParseDecimalStrings(const std::string & text, std::size_t count);
 
+/** Empty when each of these attributes \a slice has is its count of decimal strings; else what is wrong, naming the
+ * file. The reader process checks each file alone before GDCM sorts the folder: GDCM orders a series by position,
+ * and where a position does not read it falls back to instance numbers with a comparison that can crash its sort. */
+std::string
+CheckDicomSliceAttributes(const DicomSliceAttributes & slice);
+
 /** Empty when the series' geometry is sound; else what is wrong, naming the file at fault:
- * - every attribute the first file has, every file has, each as exactly its count of decimal strings;
+ * - every attribute one file has, every file has (ITK takes the origin and directions from the first file alone),
+ *   each as exactly its count of decimal strings;
  * - every file's orientation and pixel spacing equal the series' (the median of the files', value by value) within
  *   1e-4 (orientation) and 1e-4 relative (spacing);
  * - with four files or more, no file lies off the series' line of slices: a file both of whose steps to its

@@ -27,6 +27,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <fstream>
@@ -111,6 +112,14 @@ SortAlone(const std::string & file)
   }
 }
 
+/** \a text without the NUL bytes a writer may pad an odd-length value with. */
+std::string
+Unpadded(std::string text)
+{
+  text.erase(text.find_last_not_of('\0') + 1);
+  return text;
+}
+
 /** Ends with "error <what failed>" and ITK's description (or our message) on the lines after it. */
 int
 Fail(const std::string & what, const std::string & description)
@@ -161,7 +170,26 @@ main(int argc, char * argv[])
     Report("file " + file);
     gdcm::ImageReader reader; // as the series scan reads it: the header, then the image description
     reader.SetFileName(file.c_str());
-    reader.Read(); // a file that is not DICOM is simply not read, here and in the scan
+    if (reader.Read()) // a file that is not DICOM is simply not read, here and in the scan
+    {
+      const gdcm::DataSet & elements = reader.GetFile().GetDataSet();
+      auto                  text = [&](std::uint16_t group, std::uint16_t element) -> std::optional<std::string>
+      {
+        const gdcm::Tag tag(group, element);
+        if (!elements.FindDataElement(tag))
+        {
+          return std::nullopt;
+        }
+        const gdcm::ByteValue * bytes = elements.GetDataElement(tag).GetByteValue();
+        return Unpadded(bytes ? std::string(bytes->GetPointer(), bytes->GetLength()) : std::string());
+      };
+      const std::string message = vr::detail::CheckDicomSliceAttributes(
+        { file, text(0x0020, 0x0032), text(0x0020, 0x0037), text(0x0028, 0x0030) });
+      if (!message.empty())
+      {
+        return Fail("message", message + "; the series is not read: remove or replace that file");
+      }
+    }
     SortAlone(file);
   }
   Report("scan");
@@ -224,8 +252,7 @@ main(int argc, char * argv[])
         {
           return std::nullopt;
         }
-        value.erase(value.find_last_not_of('\0') + 1); // a writer's even-length padding
-        return value;
+        return Unpadded(value);
       };
       slices.push_back({ files[k], text("0020|0032"), text("0020|0037"), text("0028|0030") });
     }

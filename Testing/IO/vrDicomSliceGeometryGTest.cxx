@@ -65,6 +65,22 @@ TEST(DicomSliceGeometry, DecimalStringsFollowDICOMsGrammar)
   }
 }
 
+// One file alone, as the reader process checks each before GDCM sorts the folder: the syntax only.
+TEST(DicomSliceGeometry, OneFileAloneIsCheckedForSyntax)
+{
+  const DicomSliceAttributes sound = Series(1).front();
+  EXPECT_EQ(vr::detail::CheckDicomSliceAttributes(sound), "");
+  EXPECT_EQ(vr::detail::CheckDicomSliceAttributes({ "/in/bare.dcm", std::nullopt, std::nullopt, std::nullopt }), "");
+  DicomSliceAttributes corrupt = sound;
+  corrupt.Position = "-156.445\\?24.6094\\19.50117";
+  EXPECT_TRUE(Contains(vr::detail::CheckDicomSliceAttributes(corrupt), "/in/IM0001.dcm: its Image Position (Patient)"));
+  corrupt = sound;
+  corrupt.PixelSpacing = ".8\x9f"
+                         "8906\\.878906 ";
+  EXPECT_TRUE(Contains(vr::detail::CheckDicomSliceAttributes(corrupt),
+                       "its Pixel Spacing (0028,0030) is \".8?8906\\.878906 \", not 2"));
+}
+
 TEST(DicomSliceGeometry, ASoundSeriesPasses)
 {
   EXPECT_EQ(CheckDicomSliceGeometry(Series(8)), "");
@@ -98,7 +114,11 @@ TEST(DicomSliceGeometry, EachFaultNamesItsFile)
   lacking[2].Orientation.reset();
   EXPECT_TRUE(
     Contains(CheckDicomSliceGeometry(lacking),
-             "/in/IM0003.dcm lacks the Image Orientation (Patient) (0020,0037) that the series' first file has"));
+             "/in/IM0003.dcm lacks the Image Orientation (Patient) (0020,0037) that the series' other files have"));
+
+  auto firstLacking = Series(8); // ITK would take the origin from the first file, which has none
+  firstLacking[0].Position.reset();
+  EXPECT_TRUE(Contains(CheckDicomSliceGeometry(firstLacking), "/in/IM0001.dcm lacks the Image Position (Patient)"));
 
   auto turned = Series(8);
   turned[6].Orientation = "0\\1\\0\\1\\0\\0";

@@ -296,7 +296,9 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
                                 // displaced the volume with no file named (vrDicomSliceGeometry.h).
                                 "dicom-position-byte-9f/IM0019.dcm",
                                 "dicom-position-byte-ff/IM0003.dcm",
-                                "dicom-position-dot-became-backslash/IM0024.dcm" })
+                                "dicom-position-dot-became-backslash/IM0024.dcm",
+                                // With it in its series, GDCM's sort fell back to instance numbers and crashed.
+                                "dicom-position-sort-crash/IM0014.dcm" })
   {
     const fs::path    file = fs::path(VR_FINDINGS_DIR) / finding;
     const std::string name = file.filename().string();
