@@ -40,7 +40,7 @@ namespace itk
  *
  * The output does not depend on the number of threads (bit-identical), and carries the input's metadata
  * dictionary (the CPR view) along. Float images are relaxed by BilateralDepthRelaxKernel (shared edge weights, a
- * vectorised exponential, a team of GetNumberOfWorkUnits() threads at most as many as the multi-threader's);
+ * vectorised exponential, a team of GetNumberOfHostThreads() threads: one per core unless the work units are set);
  * other pixel types by a plain loop in double (Jacobi) or through a float copy (Steady).
  *
  * AbortGenerateData() is honoured after every iteration (Jacobi; the threads stop together at the end of their
@@ -140,6 +140,15 @@ public:
                                     : BilateralDepthRelaxSteadySolver::Describe(m_SteadyReport, m_SteadyTolerance);
   }
 
+  /** The number of threads the CPU paths use: GetNumberOfWorkUnits(), at most the multi-threader's maximum. While the
+   * work units are those ITK gave the filter (never set), also at most ITK's default thread count (one per core, or
+   * as the application configured ITK): ITK's pool threader gives four work units per thread, and the process's one
+   * pool only grows, so the default team would otherwise follow whatever thread count another filter in the process
+   * once asked for, and the kernels' teams, which meet at barriers, would share cores (the steady solve at
+   * 256 x 512: 620 ms on 8 threads sharing 2 cores against 56 ms on 2). Set the work units to ask for more. */
+  unsigned int
+  GetNumberOfHostThreads();
+
   /** The bytes of the workspace an update of a depth map of \a size allocates and the filter keeps from one update
    * to the next, with this filter's solver, iterations, passes and host threads, for a float map within the fast
    * kernel's range: BilateralDepthRelaxKernel::GetWorkspaceBytes for Jacobi (and the mask as bytes when its pixels
@@ -201,10 +210,6 @@ protected:
   void
   RelaxOnHost();
 
-  /** The number of threads the CPU paths use: min(GetNumberOfWorkUnits(), the multi-threader's maximum). */
-  unsigned int
-  GetNumberOfHostThreads();
-
   void
   PrintSelf(std::ostream & os, Indent indent) const override;
 
@@ -235,6 +240,8 @@ private:
   // The fast kernels' buffers, kept between updates: relaxing again for a new view allocates nothing.
   BilateralDepthRelaxKernel::Workspace       m_KernelWorkspace;
   BilateralDepthRelaxSteadySolver::Workspace m_SteadyWorkspace;
+  /** The work units ITK gave the filter when it was made (see GetNumberOfHostThreads). */
+  unsigned int m_WorkUnitsGivenByITK{ 0 };
 };
 
 } // namespace itk

@@ -23,6 +23,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::BilateralDepthRelaxFilter()
 {
   this->SetNumberOfRequiredInputs(1);
   this->AddOptionalInputName("FixedMask");
+  m_WorkUnitsGivenByITK = this->GetNumberOfWorkUnits();
 }
 
 template<typename TImage, typename TMaskImage>
@@ -157,7 +158,12 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GetNumberOfHostThreads()
 {
   // ITK's pool threader hands out several work units per thread; the kernels' teams need real threads, one per
   // core ITK uses, or their barriers would wait on threads that share a core.
-  return std::max(1u, std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads()));
+  unsigned int threads = std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads());
+  if (this->GetNumberOfWorkUnits() == m_WorkUnitsGivenByITK)
+  {
+    threads = std::min(threads, MultiThreaderBase::GetGlobalDefaultNumberOfThreads());
+  }
+  return std::max(1u, threads);
 }
 
 template<typename TImage, typename TMaskImage>

@@ -87,8 +87,7 @@ RelaxCPU(benchmark::State & state, unsigned int threads, unsigned int passes)
     benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
   }
   // The filter's team: one thread per work unit, at most as many as the threader's threads.
-  const unsigned int team =
-    std::min(filter->GetNumberOfWorkUnits(), filter->GetMultiThreader()->GetMaximumNumberOfThreads());
+  const unsigned int team = filter->GetNumberOfHostThreads();
   // Which path ran: 1 pass is the plain sweep with a barrier after every pass, more the blocks.
   const unsigned int blocks =
     passes > 0 ? passes : itk::BilateralDepthRelaxKernel::ChoosePassesBetweenSynchronizations(state.range(1), team);
@@ -180,9 +179,7 @@ RelaxSteady(benchmark::State & state, SteadyCase steadyCase)
     benchmark::DoNotOptimize(filter->GetOutput()->GetBufferPointer());
   }
   const auto & report = filter->GetSteadyReport();
-  state.SetLabel("steady, J = 3 mm, " + std::to_string(std::min(filter->GetNumberOfWorkUnits(),
-                                                         filter->GetMultiThreader()->GetMaximumNumberOfThreads())) +
-                 " threads, " +
+  state.SetLabel("steady, J = 3 mm, " + std::to_string(filter->GetNumberOfHostThreads()) + " threads, " +
                  std::to_string(report.OuterIterations) + " outer iterations (" +
                  std::to_string(report.CoarseOuterIterations) + " on " + std::to_string(report.Grids - 1) +
                  " coarser grids), " + std::to_string(report.Cycles) + " V-cycles" +

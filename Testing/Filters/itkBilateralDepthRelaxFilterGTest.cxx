@@ -4,6 +4,7 @@
 
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkMetaDataObject.h"
+#include "itkPoolMultiThreader.h"
 #include "vrTestImages.h"
 
 #include <gtest/gtest.h>
@@ -260,6 +261,27 @@ TEST(BilateralDepthRelaxFilter, OneAndTwoThreadsGiveIdenticalBits)
   ASSERT_EQ(one.size(), two.size());
   EXPECT_EQ(0, std::memcmp(one.data(), two.data(), one.size() * sizeof(float)));
   EXPECT_NE(0, std::memcmp(one.data(), PixelsOf(depth.GetPointer()).data(), one.size() * sizeof(float)));
+}
+
+// ITK's pool threader gives a filter four work units per thread, and its maximum is the process's one pool, which
+// only grows: after another threader asked for more threads than the cores, a filter left at ITK's defaults took
+// min(4 x cores, pool) threads, and its teams shared cores. Its default team is one thread per ITK default thread;
+// work units that are set are honoured up to the threader's maximum.
+TEST(BilateralDepthRelaxFilter, DefaultTeamStaysOneThreadPerCoreAfterAnotherThreaderGrewITKsPool)
+{
+  const unsigned int cores = itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads();
+  auto               grower = itk::PoolMultiThreader::New();
+  grower->SetMaximumNumberOfThreads(4 * cores + 4);
+  auto filter = FilterType::New();
+  ASSERT_NE(dynamic_cast<itk::PoolMultiThreader *>(filter->GetMultiThreader()), nullptr)
+    << "the premise: ITK's default threader is the pool one";
+  ASSERT_GE(filter->GetMultiThreader()->GetMaximumNumberOfThreads(), 4 * cores + 4) << "the premise: the pool grew";
+  EXPECT_EQ(filter->GetNumberOfHostThreads(), cores);
+
+  filter->SetNumberOfWorkUnits(cores + 3);
+  EXPECT_EQ(filter->GetNumberOfHostThreads(), cores + 3);
+  filter->SetNumberOfWorkUnits(1);
+  EXPECT_EQ(filter->GetNumberOfHostThreads(), 1u);
 }
 
 namespace
