@@ -140,14 +140,18 @@ public:
                                     : BilateralDepthRelaxSteadySolver::Describe(m_SteadyReport, m_SteadyTolerance);
   }
 
-  /** The number of threads the CPU paths use: GetNumberOfWorkUnits(), at most the multi-threader's maximum. While the
-   * work units are those ITK gave the filter (never set), also at most ITK's default thread count (one per core, or
-   * as the application configured ITK): ITK's pool threader gives four work units per thread, and the process's one
-   * pool only grows, so the default team would otherwise follow whatever thread count another filter in the process
-   * once asked for, and the kernels' teams, which meet at barriers, would share cores (the steady solve at
-   * 256 x 512: 620 ms on 8 threads sharing 2 cores against 56 ms on 2). Set the work units to ask for more. */
+  /** The number of threads the CPU paths use: GetNumberOfWorkUnits(), at most the multi-threader's maximum. Until the
+   * work units are set (SetNumberOfWorkUnits), also at most ITK's default thread count (one per core, or as the
+   * application configured ITK): ITK's pool threader gives four work units per thread, and the process's one pool
+   * only grows, so the default team would otherwise follow whatever thread count another filter in the process once
+   * asked for, and the kernels' teams, which meet at barriers, would share cores (the steady solve at 256 x 512:
+   * 620 ms on 8 threads sharing 2 cores against 56 ms on 2). Set the work units to ask for more. */
   unsigned int
   GetNumberOfHostThreads();
+
+  /** ProcessObject's, noting that the work units were asked for (see GetNumberOfHostThreads). */
+  void
+  SetNumberOfWorkUnits(ThreadIdType workUnits) override;
 
   /** The bytes of the workspace an update of a depth map of \a size allocates and the filter keeps from one update
    * to the next, with this filter's solver, iterations, passes and host threads, for a float map within the fast
@@ -240,8 +244,9 @@ private:
   // The fast kernels' buffers, kept between updates: relaxing again for a new view allocates nothing.
   BilateralDepthRelaxKernel::Workspace       m_KernelWorkspace;
   BilateralDepthRelaxSteadySolver::Workspace m_SteadyWorkspace;
-  /** The work units ITK gave the filter when it was made (see GetNumberOfHostThreads). */
-  unsigned int m_WorkUnitsGivenByITK{ 0 };
+  /** Whether SetNumberOfWorkUnits was called: otherwise the work units are ITK's default (see GetNumberOfHostThreads).
+   * Not their value: a team asked for may have as many threads as ITK's default work units. */
+  bool m_WorkUnitsWereSet{ false };
 };
 
 } // namespace itk

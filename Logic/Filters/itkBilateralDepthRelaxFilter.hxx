@@ -23,7 +23,14 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::BilateralDepthRelaxFilter()
 {
   this->SetNumberOfRequiredInputs(1);
   this->AddOptionalInputName("FixedMask");
-  m_WorkUnitsGivenByITK = this->GetNumberOfWorkUnits();
+}
+
+template<typename TImage, typename TMaskImage>
+void
+BilateralDepthRelaxFilter<TImage, TMaskImage>::SetNumberOfWorkUnits(ThreadIdType workUnits)
+{
+  m_WorkUnitsWereSet = true;
+  Superclass::SetNumberOfWorkUnits(workUnits);
 }
 
 template<typename TImage, typename TMaskImage>
@@ -159,7 +166,7 @@ BilateralDepthRelaxFilter<TImage, TMaskImage>::GetNumberOfHostThreads()
   // ITK's pool threader hands out several work units per thread; the kernels' teams need real threads, one per
   // core ITK uses, or their barriers would wait on threads that share a core.
   unsigned int threads = std::min(this->GetNumberOfWorkUnits(), this->GetMultiThreader()->GetMaximumNumberOfThreads());
-  if (this->GetNumberOfWorkUnits() == m_WorkUnitsGivenByITK)
+  if (!m_WorkUnitsWereSet)
   {
     threads = std::min(threads, MultiThreaderBase::GetGlobalDefaultNumberOfThreads());
   }

@@ -282,6 +282,17 @@ TEST(BilateralDepthRelaxFilter, DefaultTeamStaysOneThreadPerCoreAfterAnotherThre
   EXPECT_EQ(filter->GetNumberOfHostThreads(), cores + 3);
   filter->SetNumberOfWorkUnits(1);
   EXPECT_EQ(filter->GetNumberOfHostThreads(), 1u);
+  // A team asked for may have as many threads as ITK's default work units (4 x cores with more than one core): the
+  // thread-count tests' 8 threads on 2 cores.
+  auto               asked = FilterType::New();
+  const unsigned int itkDefault = asked->GetNumberOfWorkUnits();
+  asked->SetNumberOfWorkUnits(itkDefault);
+  EXPECT_EQ(asked->GetNumberOfHostThreads(), itkDefault);
+  // Through the base class too (ITK's setter is virtual).
+  auto                 viaBase = FilterType::New();
+  itk::ProcessObject & base = *viaBase;
+  base.SetNumberOfWorkUnits(cores + 2);
+  EXPECT_EQ(viaBase->GetNumberOfHostThreads(), cores + 2);
 }
 
 namespace
