@@ -83,6 +83,8 @@ RunViewer(int argc, char ** argv)
   // Read by the slots below while the event loop runs, so it lives as long as the loop (AddressSanitizer found it
   // declared in the block that connects them, out of scope by then).
   bool written = false;
+  // Whether the 3D view's last render drew the full cut surface (not the preview).
+  bool lastRenderFull = false;
   if (scripted)
   {
     window.SetErrorHandler(
@@ -106,34 +108,59 @@ RunViewer(int argc, char ** argv)
                        }
                        QApplication::exit(EXIT_FAILURE);
                      });
-    // Done when the full cut surface is drawn in the 3D view and nothing else is due.
+    // Done when the full cut surface is drawn in the 3D view and nothing else is due. The 3D view's last render and
+    // the controller's turn to idle come in either order (busyChanged(false) is posted after the results, and the
+    // view may draw the last result before it arrives), so each of them checks: checking at the render alone left a
+    // run waiting forever when no render followed the turn to idle (seen twice, once in the sanitizer suite).
+    auto writeWhenDone = [&]
+    {
+      if (written || !lastRenderFull || !window.GetController()->IsIdle() || !window.GetCPRView()->GetResult())
+      {
+        return;
+      }
+      written = true;
+      QTimer::singleShot(100,
+                         &window,
+                         [&]
+                         {
+                           const QString problem = window.WriteScreenshot(QString::fromStdString(options.ScreenshotPath));
+                           if (!problem.isEmpty())
+                           {
+                             std::cerr << Program << ": error: " << problem.toStdString() << std::endl;
+                             exitStatus = EXIT_FAILURE;
+                             QApplication::exit(EXIT_FAILURE);
+                             return;
+                           }
+                           std::cout << "Wrote " << options.ScreenshotPath << std::endl;
+                           QApplication::exit(EXIT_SUCCESS);
+                         });
+    };
     QObject::connect(window.GetThreeDView(),
                      &vr::ThreeDView::rendered,
                      &window,
-                     [&](double, bool fullSurface)
+                     [&, writeWhenDone](double, bool fullSurface)
                      {
-                       if (written || !fullSurface || !window.GetController()->IsIdle() ||
-                           !window.GetCPRView()->GetResult())
+                       lastRenderFull = fullSurface;
+                       writeWhenDone();
+                     });
+    QObject::connect(window.GetController(),
+                     &vr::ReformationController::busyChanged,
+                     &window,
+                     [&, writeWhenDone](bool busy)
+                     {
+                       if (busy || written)
                        {
                          return;
                        }
-                       written = true;
-                       QTimer::singleShot(100,
-                                          &window,
-                                          [&]
-                                          {
-                                            const QString problem =
-                                              window.WriteScreenshot(QString::fromStdString(options.ScreenshotPath));
-                                            if (!problem.isEmpty())
-                                            {
-                                              std::cerr << Program << ": error: " << problem.toStdString() << std::endl;
-                                              exitStatus = EXIT_FAILURE;
-                                              QApplication::exit(EXIT_FAILURE);
-                                              return;
-                                            }
-                                            std::cout << "Wrote " << options.ScreenshotPath << std::endl;
-                                            QApplication::exit(EXIT_SUCCESS);
-                                          });
+                       if (lastRenderFull)
+                       {
+                         writeWhenDone();
+                       }
+                       else
+                       {
+                         // Nothing may be due to draw the last result yet: a render reports what it drew.
+                         window.GetThreeDView()->ScheduleRender();
+                       }
                      });
   }
   if (!scripted)
