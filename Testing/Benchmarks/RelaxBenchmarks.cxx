@@ -34,23 +34,25 @@ constexpr unsigned int Iterations = 500;
 constexpr double       Relaxation = 1.0;
 constexpr double       Anisotropy = 0.5;
 
-/** Gives \a filter a team of \a threads threads, or, with 0, one per core (ITK's default thread count, what the filter
- * takes in a fresh process). The team is min(work units, the threader's threads), so both are set. A team larger than
- * the cores gets a threader of its own: raising the maximum of ITK's pool threader grows the process's one pool for
- * good, and every filter made after it would take the larger team by default, so the figures of the "all cores"
- * benchmarks would depend on the (random) order they run in (measured: the steady thoracic solve at 256 x 512 took
- * 620 ms on 8 threads sharing 2 cores, 56 ms on 2). */
+/** Gives \a filter a team of \a threads threads; with 0, leaves it the filter's default, one thread per core
+ * (BilateralDepthRelaxFilter::GetNumberOfHostThreads). The team is min(work units, the threader's threads), so a team
+ * larger than the cores gets a threader of its own: raising the maximum of ITK's pool threader would grow the
+ * process's one pool for good, and the other ITK filters the later benchmarks run (depth, resampling, the generic
+ * relax) would share the cores among that many threads. */
 void
 SetTeam(itk::ProcessObject & filter, unsigned int threads)
 {
-  const unsigned int cores = itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads();
-  if (threads > cores)
+  if (threads == 0)
+  {
+    return;
+  }
+  if (threads > itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads())
   {
     auto threader = itk::PlatformMultiThreader::New();
     threader->SetMaximumNumberOfThreads(threads);
     filter.SetMultiThreader(threader);
   }
-  filter.SetNumberOfWorkUnits(threads > 0 ? threads : cores);
+  filter.SetNumberOfWorkUnits(threads);
 }
 
 /** One untimed update, so that the timed ones find the filter's workspace allocated, as the viewer's repeated updates
@@ -170,7 +172,6 @@ RelaxSteady(benchmark::State & state, SteadyCase steadyCase)
   filter->SetDepthInput(map->Depth);
   filter->SetFixedMask(map->Fixed);
   filter->SetSolver(itk::BilateralDepthRelaxSolver::Steady);
-  SetTeam(*filter, 0);
   WarmUp(*filter);
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
