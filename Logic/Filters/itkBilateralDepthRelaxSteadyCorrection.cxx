@@ -20,15 +20,18 @@ Correction::Solve(double target, bool newton)
   const long            width = m_Field.Width;
   const unsigned int    cyclesBefore = m_Cycles;
   std::vector<double> & maxima = m_Field.RowMaxima();
-  Precondition();
-  double rz = m_Bands.SumRows(
-    [&](long y, float *)
-    {
-      const long row = m_Field.At(0, y);
-      std::copy(m_Field.Z + row, m_Field.Z + row + width, m_Field.Direction + row);
-      std::fill(m_Field.Delta + row, m_Field.Delta + row + width, 0.0f);
-      return Rows().RowDot(m_Field.Residual + row, m_Field.Z + row, width);
-    });
+  double rz = Precondition();
+  m_Bands.ForRows(m_Field.Height,
+                  true,
+                  [&](long y0, long y1)
+                  {
+                    for (long y = y0; y < y1; ++y)
+                    {
+                      const long row = m_Field.At(0, y);
+                      std::copy(m_Field.Z + row, m_Field.Z + row + width, m_Field.Direction + row);
+                      std::fill(m_Field.Delta + row, m_Field.Delta + row + width, 0.0f);
+                    }
+                  });
   for (unsigned int iteration = 0; iteration < MaximumInnerIterations; ++iteration)
   {
     // A v row by row into the thread's scratch row, here for its dot product and again in the update below:
@@ -80,13 +83,7 @@ Correction::Solve(double target, bool newton)
     {
       break;
     }
-    Precondition();
-    const double rzNext = m_Bands.SumRows(
-      [&](long y, float *)
-      {
-        const long row = m_Field.At(0, y);
-        return Rows().RowDot(m_Field.Residual + row, m_Field.Z + row, width);
-      });
+    const double rzNext = Precondition();
     const float beta = static_cast<float>(rzNext / rz);
     rz = rzNext;
     m_Bands.ForRows(m_Field.Height,

@@ -66,12 +66,13 @@ public:
   }
 
 private:
-  /** z = M^-1 r: one V-cycle on the finest level, whose right-hand side is r and whose correction is z. */
-  void
+  /** z = M^-1 r: one V-cycle on the finest level, whose right-hand side is r and whose correction is z; returns
+   * r . z. */
+  double
   Precondition()
   {
-    m_Multigrid.Cycle();
     ++m_Cycles;
+    return m_Multigrid.CycleAndDot();
   }
 
   Field &      m_Field;

@@ -187,8 +187,20 @@ public:
                          rows[static_cast<std::size_t>(y)] = rowSum(y, scratch);
                        }
                      });
+    return SumOfRowSums();
+  }
+
+  /** One sum per row, for jobs that form them as they go; SumOfRowSums adds them in row order. */
+  double *
+  RowSums()
+  {
+    return m_Buffers.RowSums.data();
+  }
+  double
+  SumOfRowSums() const
+  {
     double sum = 0.0;
-    for (const double value : rows)
+    for (const double value : m_Buffers.RowSums)
     {
       sum += value;
     }

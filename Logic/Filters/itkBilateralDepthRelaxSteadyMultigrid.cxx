@@ -175,6 +175,15 @@ ResidualRowInto(const Level & l, long y, float * r)
   }
 }
 
+/** The same on the 5-point level \a l right after SmoothRedBlack from x = 0 with colour 0 first. */
+void
+ResidualAfterSweepFromZeroRowInto(const Level & l, long y, float * r)
+{
+  const long s = l.Stride;
+  const long p = l.At(0, y);
+  Rows().ResidualAfterSweepFromZeroRow5(r, l.X + p, l.X + p + s, l.X + p - s, l.E + p, l.N + p, l.N + p - s, y & 1, l.Width);
+}
+
 /** Coarse row \a J of b_c = P^T r_f, from the fine residual rows 2J (\a r), 2J + 1 (\a rAbove) and 2J - 1
  * (\a rBelow). */
 void
@@ -531,9 +540,17 @@ Multigrid::SmoothFourColour(const Level & l, bool forward)
  * \a fromZero, the sweep starts from x = 0 (and need not clear x first). Colour c holds the points with
  * (x + y) % 2 == c. */
 void
-Multigrid::SmoothRedBlack(const Level & l, int first, bool fromZero)
+Multigrid::SmoothRedBlack(const Level & l, int first, bool fromZero, double * rowDots)
 {
   const int second = 1 - first;
+  // A row is final once its second colour is done: its b . x then, while both are in cache.
+  auto finished = [&](long y)
+  {
+    if (rowDots)
+    {
+      rowDots[y] = Rows().RowDot(l.B + l.At(0, y), l.X + l.At(0, y), l.Width);
+    }
+  };
   auto      colourRow = [&](int colour, long y, bool zero)
   {
     const long p = l.At(0, y);
@@ -557,6 +574,7 @@ Multigrid::SmoothRedBlack(const Level & l, int first, bool fromZero)
                       if (y - 1 > y0)
                       {
                         colourRow(second, y - 1, false);
+                        finished(y - 1);
                       }
                     }
                   });
@@ -565,19 +583,22 @@ Multigrid::SmoothRedBlack(const Level & l, int first, bool fromZero)
                   [&](long y0, long y1)
                   {
                     colourRow(second, y0, false);
+                    finished(y0);
                     if (y1 - 1 > y0)
                     {
                       colourRow(second, y1 - 1, false);
+                      finished(y1 - 1);
                     }
                   });
 }
 
-/** b_c = P^T (b_f - A_f x_f). Coarse row J needs the fine residual of rows 2J - 1 to 2J + 1; each member of the
+/** b_c = P^T (b_f - A_f x_f); with \a afterSweepFromZero (a 5-point level whose x is one red-black sweep from 0,
+ * colour 0 first) from x and the couplings alone (ResidualAfterSweepFromZeroRow5). Coarse row J needs the fine residual of rows 2J - 1 to 2J + 1; each member of the
  * team computes them into three rows of its own as it goes up its band (its first coarse row computes row 2J - 1
  * too, which the band below computes as well), so the residual never goes through memory and no band waits for
  * another. */
 void
-Multigrid::ResidualAndRestrict(const Level & f, const Level & c)
+Multigrid::ResidualAndRestrict(const Level & f, const Level & c, bool afterSweepFromZero)
 {
   const long stride = f.Stride;
   float *    scratch = m_Buffers.ResidualRows.data();
@@ -595,6 +616,10 @@ Multigrid::ResidualAndRestrict(const Level & f, const Level & c)
                                {
                                  std::fill(r, r + f.Width, 0.0f);
                                }
+                               else if (afterSweepFromZero)
+                               {
+                                 ResidualAfterSweepFromZeroRowInto(f, y, r);
+                               }
                                else
                                {
                                  f.NinePoint ? ResidualRowInto<true>(f, y, r) : ResidualRowInto<false>(f, y, r);
@@ -611,9 +636,10 @@ Multigrid::ResidualAndRestrict(const Level & f, const Level & c)
                            });
 }
 
-/** One V(1,1)-cycle from level \a k down: x_k = M^-1 b_k, x_k starting at 0. */
+/** One V(1,1)-cycle from level \a k down: x_k = M^-1 b_k, x_k starting at 0; with \a rowDots (the 5-point finest
+ * level), each row's b . x in it. */
 void
-Multigrid::CycleFrom(std::size_t k)
+Multigrid::CycleFrom(std::size_t k, double * rowDots)
 {
   std::vector<Level> & levels = m_Buffers.Levels;
   const Level &        f = levels[k];
@@ -641,9 +667,36 @@ Multigrid::CycleFrom(std::size_t k)
   {
     SmoothRedBlack(f, 0, true);
   }
-  ResidualAndRestrict(f, c);
+  ResidualAndRestrict(f, c, !f.NinePoint);
   CycleFrom(k + 1);
   m_Bands.ForRows(c.Height, parallel, [&](long J0, long J1) { ProlongRows(c, f, J0, J1); });
-  Smooth(f, false);
+  if (k == 0 && rowDots)
+  {
+    SmoothRedBlack(f, 1, false, rowDots);
+  }
+  else
+  {
+    Smooth(f, false);
+  }
+}
+
+double
+Multigrid::CycleAndDot()
+{
+  const Level & f = m_Buffers.Levels[0];
+  double *      rows = m_Bands.RowSums();
+  if (m_LevelCount > 1 && !f.NinePoint)
+  {
+    CycleFrom(0, rows);
+  }
+  else
+  {
+    CycleFrom(0);
+    for (long y = 0; y < f.Height; ++y)
+    {
+      rows[y] = Rows().RowDot(f.B + f.At(0, y), f.X + f.At(0, y), f.Width);
+    }
+  }
+  return m_Bands.SumOfRowSums();
 }
 } // namespace itk::detail::BilateralDepthRelaxSteady

@@ -63,6 +63,11 @@ public:
     CycleFrom(0);
   }
 
+  /** Cycle(), and B . X of the finest level, summed row by row in row order (the same bits for any team), each row's
+   * formed as the row's X is final, so that neither array is read again for it. */
+  double
+  CycleAndDot();
+
   /** Lends the first coarse level's arrays (when built) to \a lender; the next Build computes them again. */
   void
   LendTo(Lender & lender)
@@ -106,11 +111,11 @@ private:
   void
   SmoothFourColour(const Level & l, bool forward);
   void
-  SmoothRedBlack(const Level & l, int first, bool fromZero);
+  SmoothRedBlack(const Level & l, int first, bool fromZero, double * rowDots = nullptr);
   void
-  ResidualAndRestrict(const Level & f, const Level & c);
+  ResidualAndRestrict(const Level & f, const Level & c, bool afterSweepFromZero = false);
   void
-  CycleFrom(std::size_t k);
+  CycleFrom(std::size_t k, double * rowDots = nullptr);
 
   MultigridBuffers & m_Buffers;
   Bands &            m_Bands;

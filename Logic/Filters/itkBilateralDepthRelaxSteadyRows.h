@@ -67,6 +67,20 @@ struct RowKernels
                        const float * __restrict nBelow,
                        long width);
 
+  /** r = b - A x on a 5-point row right after one red-black sweep from x = 0 whose first colour starts at column
+   * \a first: at the second colour's points 0 (each has just solved its own equation), at the first colour's
+   * (x_p = b_p / C_p) the couplings to the second colour, sum w_pq x_q. So b and C need not be read again. Exact
+   * up to rounding; at inactive points (b = 0, no couplings) 0 either way. */
+  void (*ResidualAfterSweepFromZeroRow5)(float * __restrict r,
+                                         const float * __restrict x,
+                                         const float * __restrict above,
+                                         const float * __restrict below,
+                                         const float * __restrict e,
+                                         const float * __restrict n,
+                                         const float * __restrict nBelow,
+                                         long first,
+                                         long width);
+
   /** r = b - A x on a 9-point row. */
   void (*ResidualRow9)(float * __restrict r,
                        const float * __restrict x,

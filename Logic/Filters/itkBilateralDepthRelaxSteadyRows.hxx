@@ -146,6 +146,24 @@ ResidualRow5(float * __restrict r,
 }
 
 void
+ResidualAfterSweepFromZeroRow5(float * __restrict r,
+                               const float * __restrict x,
+                               const float * __restrict above,
+                               const float * __restrict below,
+                               const float * __restrict e,
+                               const float * __restrict n,
+                               const float * __restrict nBelow,
+                               long first,
+                               long width)
+{
+  for (long i = 0; i < width; ++i)
+  {
+    const float couplings = e[i] * x[i + 1] + e[i - 1] * x[i - 1] + n[i] * above[i] + nBelow[i] * below[i];
+    r[i] = (i & 1) == first ? couplings : 0.0f;
+  }
+}
+
+void
 ResidualRow9(float * __restrict r,
              const float * __restrict x,
              const float * __restrict above,
@@ -513,6 +531,7 @@ AllRowKernels()
   kernels.SmoothRowFromZero = SmoothRowFromZero;
   kernels.SmoothRow9 = SmoothRow9;
   kernels.ResidualRow5 = ResidualRow5;
+  kernels.ResidualAfterSweepFromZeroRow5 = ResidualAfterSweepFromZeroRow5;
   kernels.ResidualRow9 = ResidualRow9;
   kernels.ApplyRow5 = ApplyRow5;
   kernels.RestrictRow = RestrictRow;

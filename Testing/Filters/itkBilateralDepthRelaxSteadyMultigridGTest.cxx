@@ -348,3 +348,43 @@ TEST(BilateralDepthRelaxSteadyMultigrid, VCycleContractsTheError)
     }
   }
 }
+
+// CycleAndDot forms B . X while the last smoothing finishes each row: the same X as Cycle, B . X as a plain double sum
+// over the points gives it (up to the order of the additions), and the same bits for any team.
+TEST(BilateralDepthRelaxSteadyMultigrid, CycleAndDotGivesTheCyclesXAndBDotX)
+{
+  std::vector<float> firstX;
+  double             firstDot = 0.0;
+  for (const unsigned int threads : { 1u, 3u })
+  {
+    Problem         problem(61, 45, 5, 0.1, 1e-3f, threads);
+    Steady::Level & l = problem.Multigrid.Finest();
+    ASSERT_GT(Steady::Multigrid::LevelCountFor(l.Width, l.Height), 2u);
+    std::mt19937                          generator(11);
+    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+    for (long y = 0; y < l.Height; ++y)
+      for (long x = 0; x < l.Width; ++x)
+        l.B[l.At(x, y)] = l.C[l.At(x, y)] > 0.0f ? value(generator) : 0.0f;
+    problem.Multigrid.Build();
+    problem.Multigrid.Cycle();
+    const std::vector<float> cycled = problem.X;
+    const double             dot = problem.Multigrid.CycleAndDot();
+    EXPECT_EQ(problem.X, cycled) << threads << " threads";
+    double expected = 0.0;
+    for (long y = 0; y < l.Height; ++y)
+      for (long x = 0; x < l.Width; ++x)
+        expected += static_cast<double>(l.B[l.At(x, y)]) * l.X[l.At(x, y)];
+    EXPECT_GT(expected, 0.0) << "a V-cycle is positive definite";
+    EXPECT_NEAR(dot, expected, 1e-12 * std::abs(expected)) << threads << " threads";
+    if (threads == 1)
+    {
+      firstX = problem.X;
+      firstDot = dot;
+    }
+    else
+    {
+      EXPECT_EQ(problem.X, firstX);
+      EXPECT_EQ(dot, firstDot);
+    }
+  }
+}

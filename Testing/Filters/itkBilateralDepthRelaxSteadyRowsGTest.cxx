@@ -134,6 +134,66 @@ TEST(BilateralDepthRelaxSteadyRows, OperatorAndResidualRowsFollowTheStencil)
   }
 }
 
+// Right after a red-black sweep from x = 0 the residual is 0 at the second colour and the couplings to the second
+// colour at the first: the kernel that forms it so, against b - A x written out, on a row whose first colour was set
+// to b / C and whose second colour solved its own equation (both in double), for either colour first.
+TEST(BilateralDepthRelaxSteadyRows, ResidualAfterASweepFromZeroIsBMinusAX)
+{
+  const long                            width = 9;
+  const long                            stride = Steady::PaddedStride(width);
+  std::mt19937                          generator(5);
+  std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+  std::uniform_real_distribution<float> weight(0.0f, 1.0f);
+  for (const long first : { 0L, 1L })
+  {
+    std::vector<float> x(3 * stride, 0.0f), c(3 * stride, 0.0f), e(3 * stride, 0.0f), n(3 * stride, 0.0f),
+      b(3 * stride, 0.0f);
+    const long p = stride + 1; // (0, 1): the middle row
+    for (long k = 0; k < 3 * stride; ++k)
+    {
+      x[k] = value(generator); // the rows above and below: any values
+      e[k] = weight(generator);
+      n[k] = weight(generator);
+    }
+    e[p - 1] = 0.0f;
+    e[p + width - 1] = 0.0f;
+    for (long i = 0; i < width; ++i)
+    {
+      b[p + i] = value(generator);
+      c[p + i] = e[p + i] + e[p + i - 1] + n[p + i] + n[p + i - stride] + weight(generator);
+    }
+    auto couplings = [&](long q)
+    {
+      return static_cast<double>(e[q]) * x[q + 1] + static_cast<double>(e[q - 1]) * x[q - 1] +
+             static_cast<double>(n[q]) * x[q + stride] + static_cast<double>(n[q - stride]) * x[q - stride];
+    };
+    for (long i = first; i < width; i += 2)
+    {
+      x[p + i] = static_cast<float>(static_cast<double>(b[p + i]) / c[p + i]);
+    }
+    for (long i = 1 - first; i < width; i += 2)
+    {
+      x[p + i] = static_cast<float>((b[p + i] + couplings(p + i)) / c[p + i]);
+    }
+    for (const auto & [name, kernels] : EveryRunnableRowKernels())
+    {
+      std::vector<float> residual(width, -7.0f);
+      kernels->ResidualAfterSweepFromZeroRow5(
+        residual.data(), &x[p], &x[p + stride], &x[p - stride], &e[p], &n[p], &n[p - stride], first, width);
+      for (long i = 0; i < width; ++i)
+      {
+        const long   q = p + i;
+        const double expected = b[q] - static_cast<double>(c[q]) * x[q] + couplings(q);
+        EXPECT_NEAR(residual[i], expected, 1e-5) << name << ", first colour at " << first << ", x = " << i;
+        if ((i & 1) != first)
+        {
+          EXPECT_EQ(residual[i], 0.0f) << name << ": the second colour's residual is 0 by construction";
+        }
+      }
+    }
+  }
+}
+
 // ForRows hands each row to exactly one band; SumRows gives the same bits whatever the team's size (rows summed
 // alone, then added in row order), and its RowDot sums a row in a fixed order of lanes.
 TEST(BilateralDepthRelaxSteadyRows, BandsCoverEveryRowOnceAndSumTheSameForAnyTeam)
