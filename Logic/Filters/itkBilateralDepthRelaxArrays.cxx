@@ -2,10 +2,58 @@
 #include "itkBilateralDepthRelaxArrays.h"
 
 #include <atomic>
+#include <cstdlib>
 #include <cstring>
+#include <new>
+
+#if defined(__linux__)
+#include <stdlib.h> // posix_memalign
+#include <sys/mman.h>
+#endif
 
 namespace itk::detail
 {
+void *
+AllocateLarge(std::size_t bytes)
+{
+#if defined(__linux__)
+  // posix_memalign, not aligned operator new: that rounds the size up to a multiple of the alignment (2 MiB more for
+  // an array of just over 2 MiB). Through the C allocator, so that whoever counts the program's allocations sees it.
+  void * memory = nullptr;
+  if (posix_memalign(&memory, LargeArrayBytes, bytes) != 0)
+  {
+    throw std::bad_alloc();
+  }
+#if defined(MADV_HUGEPAGE)
+  const std::size_t whole = bytes / LargeArrayBytes * LargeArrayBytes;
+  if (whole > 0)
+  {
+    // Advice only: a system without transparent huge pages refuses it, and the pages stay the usual ones. Memory the
+    // allocator hands out again may already be backed by small pages, which the advice does not replace: dropped
+    // (MADV_DONTNEED: they read as zero again, and the zero-filling that follows touches them afresh). The blocks lie
+    // inside the allocation, clear of the allocator's own bookkeeping before it.
+    if (madvise(memory, whole, MADV_HUGEPAGE) == 0)
+    {
+      static_cast<void>(madvise(memory, whole, MADV_DONTNEED));
+    }
+  }
+#endif
+  return memory;
+#else
+  return ::operator new[](bytes, std::align_val_t{ LargeArrayBytes });
+#endif
+}
+
+void
+FreeLarge(void * memory) noexcept
+{
+#if defined(__linux__)
+  std::free(memory);
+#else
+  ::       operator delete[](memory, std::align_val_t{ LargeArrayBytes });
+#endif
+}
+
 void
 Lender::Clear()
 {

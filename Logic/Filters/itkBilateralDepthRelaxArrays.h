@@ -60,12 +60,30 @@ private:
   std::uint64_t m_Lending{ 0 };
 };
 
-/** Values kept from one call to the next, 64-byte aligned (a cache line, a whole AVX-512 vector), with room for a
- * multiple of 16 values. Zero-filled whenever reserved with another count than the last time (ghost cells start at
- * zero); with the same count, the last call's values stay. The memory only grows, so a workspace used at several
- * sizes (a preview, then the full view) allocates once. With a Lender, a span of its memory instead (zero-filled
- * when taken; the same span for the rest of that lending), and the array's own memory is freed; without one, or
- * when the lender has no room, its own. */
+/** Arrays of at least this many bytes start on a 2 MiB boundary, and their whole 2 MiB blocks are offered to the
+ * system as transparent huge pages (AllocateLarge). The steady solver's conjugate-gradient iterations
+ * stream a dozen arrays of a few MiB at once; with 4 KiB pages their address translations no longer fit the
+ * processor's TLB (measured in docs/steady-solver.md, "Cost and memory"). */
+constexpr std::size_t LargeArrayBytes = std::size_t{ 2 } << 20;
+
+/** \a bytes (at least LargeArrayBytes), 2 MiB aligned, from the C allocator; on Linux its whole 2 MiB blocks are
+ * advised MADV_HUGEPAGE (transparent huge pages are often left to the program's choice, "madvise" mode) and dropped, so
+ * that the next touch backs them afresh, by huge pages where the system has them (memory the allocator hands out again
+ * may already be backed by small pages, which the advice alone would leave). The contents are undefined until
+ * written. Throws std::bad_alloc when there is no memory to give. */
+void *
+AllocateLarge(std::size_t bytes);
+
+/** Gives back what AllocateLarge returned. */
+void
+FreeLarge(void * memory) noexcept;
+
+/** Values kept from one call to the next, 64-byte aligned (a cache line, a whole AVX-512 vector; from LargeArrayBytes
+ * on, 2 MiB aligned and offered huge pages, see AllocateLarge), with room for a multiple of 16 values. Zero-filled
+ * whenever reserved with another count than the last time (ghost cells start at zero); with the same count, the last
+ * call's values stay. The memory only grows, so a workspace used at several sizes (a preview, then the full view)
+ * allocates once. With a Lender, a span of its memory instead (zero-filled when taken; the same span for the rest of
+ * that lending), and the array's own memory is freed; without one, or when the lender has no room, its own. */
 template<typename T>
 class ReusableArray
 {
@@ -101,7 +119,7 @@ public:
       {
         m_Own.reset(); // the old memory goes before the new is taken
         m_Capacity = RoundedUp(count);
-        m_Own.reset(Allocate(m_Capacity));
+        m_Own = Owned(Allocate(m_Capacity), Deleter{ IsLarge(m_Capacity) });
       }
       std::fill_n(m_Own.get(), m_Capacity, T{});
       m_Count = count;
@@ -140,22 +158,37 @@ private:
     {
       throw std::bad_alloc();
     }
-    return static_cast<T *>(::operator new[](count * sizeof(T), Alignment));
+    const std::size_t bytes = count * sizeof(T);
+    return static_cast<T *>(IsLarge(count) ? AllocateLarge(bytes) : ::operator new[](bytes, Alignment));
+  }
+  static constexpr bool
+  IsLarge(std::size_t count)
+  {
+    return count * sizeof(T) >= LargeArrayBytes;
   }
   struct Deleter
   {
+    bool Large{ false };
     void
     operator()(T * data) const
     {
-      ::operator delete[](data, Alignment);
+      if (Large)
+      {
+        FreeLarge(data);
+      }
+      else
+      {
+        ::operator delete[](data, Alignment);
+      }
     }
   };
+  using Owned = std::unique_ptr<T[], Deleter>;
 
-  std::unique_ptr<T[], Deleter> m_Own;
-  std::size_t                   m_Capacity{ 0 };
-  std::size_t                   m_Count{ 0 };
-  T *                           m_Lent{ nullptr };
-  std::uint64_t                 m_Lending{ 0 };
+  Owned         m_Own;
+  std::size_t   m_Capacity{ 0 };
+  std::size_t   m_Count{ 0 };
+  T *           m_Lent{ nullptr };
+  std::uint64_t m_Lending{ 0 };
 };
 } // namespace itk::detail
 

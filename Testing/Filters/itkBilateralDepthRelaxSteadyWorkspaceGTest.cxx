@@ -1,147 +1,23 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // BilateralDepthRelaxSteadySolver::GetWorkspaceBytes against the bytes a solve's workspace really holds, counted by
-// allocation: this executable replaces the global operator new and delete (plain and aligned) to keep the live and
-// the peak byte counts.
+// allocation: this executable links vrAllocationCounter, which replaces glibc's malloc and its relatives.
+#include "vrAllocationCounter.h"
 #include "vrTestImages.h"
 
+#include "itkBilateralDepthRelaxArrays.h"
 #include "itkBilateralDepthRelaxSteadySolver.h"
 #include "itkCPRDepthImageFilter.h"
 #include "itkCTAPhantom.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <atomic>
 #include <cstddef>
-#include <cstdlib>
+#include <cstdint>
+#include <fstream>
 #include <iostream>
-#include <new>
+#include <sstream>
+#include <string>
 #include <vector>
-
-namespace
-{
-std::atomic<std::size_t> LiveBytes{ 0 };
-std::atomic<std::size_t> PeakBytes{ 0 };
-
-/** Each block carries its size in a header of the largest fundamental alignment. */
-constexpr std::size_t Header = alignof(std::max_align_t);
-
-/** Writes \a size into the header at \a block, counts it, and returns the memory after a header of \a header bytes. */
-void *
-Counting(void * block, std::size_t size, std::size_t header)
-{
-  if (!block)
-  {
-    throw std::bad_alloc();
-  }
-  *static_cast<std::size_t *>(block) = size;
-  const std::size_t live = LiveBytes += size;
-  std::size_t       peak = PeakBytes.load();
-  while (live > peak && !PeakBytes.compare_exchange_weak(peak, live))
-  {
-  }
-  return static_cast<char *>(block) + header;
-}
-
-void *
-Allocate(std::size_t size)
-{
-  return Counting(std::malloc(size + Header), size, Header);
-}
-
-/** Uncounts and frees the block whose memory \a pointer gave, after a header of \a header bytes. */
-void
-Release(void * pointer, std::size_t header) noexcept
-{
-  if (pointer)
-  {
-    void * block = static_cast<char *>(pointer) - header;
-    LiveBytes -= *static_cast<std::size_t *>(block);
-    std::free(block);
-  }
-}
-
-void
-Free(void * pointer) noexcept
-{
-  Release(pointer, Header);
-}
-
-/** The same for the aligned forms (the solver's arrays are 64-byte aligned): the header takes a whole alignment. */
-void *
-AllocateAligned(std::size_t size, std::align_val_t alignment)
-{
-  const auto align = std::max(static_cast<std::size_t>(alignment), Header);
-  return Counting(std::aligned_alloc(align, (size + align + align - 1) / align * align), size, align);
-}
-
-void
-FreeAligned(void * pointer, std::align_val_t alignment) noexcept
-{
-  Release(pointer, std::max(static_cast<std::size_t>(alignment), Header));
-}
-} // namespace
-
-void *
-operator new(std::size_t size)
-{
-  return Allocate(size);
-}
-void *
-operator new[](std::size_t size)
-{
-  return Allocate(size);
-}
-void
-operator delete(void * pointer) noexcept
-{
-  Free(pointer);
-}
-void
-operator delete[](void * pointer) noexcept
-{
-  Free(pointer);
-}
-void
-operator delete(void * pointer, std::size_t) noexcept
-{
-  Free(pointer);
-}
-void
-operator delete[](void * pointer, std::size_t) noexcept
-{
-  Free(pointer);
-}
-void *
-operator new(std::size_t size, std::align_val_t alignment)
-{
-  return AllocateAligned(size, alignment);
-}
-void *
-operator new[](std::size_t size, std::align_val_t alignment)
-{
-  return AllocateAligned(size, alignment);
-}
-void
-operator delete(void * pointer, std::align_val_t alignment) noexcept
-{
-  FreeAligned(pointer, alignment);
-}
-void
-operator delete[](void * pointer, std::align_val_t alignment) noexcept
-{
-  FreeAligned(pointer, alignment);
-}
-void
-operator delete(void * pointer, std::size_t, std::align_val_t alignment) noexcept
-{
-  FreeAligned(pointer, alignment);
-}
-void
-operator delete[](void * pointer, std::size_t, std::align_val_t alignment) noexcept
-{
-  FreeAligned(pointer, alignment);
-}
 
 namespace
 {
@@ -197,15 +73,18 @@ CountSolve(unsigned int width, unsigned int height, unsigned int threads, bool t
                          Solver::ProgressCallback(),
                          &workspace);
   };
-  const std::size_t before = LiveBytes.load();
-  PeakBytes = before;
+  const long long before = vr::test::AllocatedBytes();
+  vr::test::ResetAllocationPeak();
   const unsigned int grids = solve().Grids;
-  Counted            counted{ LiveBytes.load() - before, PeakBytes.load() - before, 0, grids };
+  Counted            counted{ static_cast<std::size_t>(vr::test::AllocatedBytes() - before),
+                   static_cast<std::size_t>(vr::test::AllocationPeak() - before),
+                   0,
+                   grids };
   // Again on the same workspace: what a solve allocates beyond it.
-  const std::size_t held = LiveBytes.load();
-  PeakBytes = held;
+  const long long held = vr::test::AllocatedBytes();
+  vr::test::ResetAllocationPeak();
   solve();
-  counted.Again = PeakBytes.load() - held;
+  counted.Again = static_cast<std::size_t>(vr::test::AllocationPeak() - held);
   return counted;
 }
 } // namespace
@@ -241,4 +120,69 @@ TEST(BilateralDepthRelaxSteadyWorkspace, WorkspaceBytesMatchTheAllocatedBytes)
       }
     }
   }
+}
+
+namespace
+{
+/** The VmFlags of the mapping of /proc/self/smaps that holds \a address ("" where none does). */
+std::string
+VmFlagsOf(const void * address)
+{
+  const auto    at = reinterpret_cast<std::uintptr_t>(address);
+  std::ifstream smaps("/proc/self/smaps");
+  std::string   line;
+  bool          inside = false;
+  while (std::getline(smaps, line))
+  {
+    std::uintptr_t     begin = 0;
+    std::uintptr_t     end = 0;
+    char               dash = 0;
+    std::istringstream header(line);
+    if (line.find("VmFlags:") == 0)
+    {
+      if (inside)
+      {
+        return line;
+      }
+    }
+    else if (header >> std::hex >> begin >> dash >> end && dash == '-')
+    {
+      inside = begin <= at && at < end;
+    }
+  }
+  return "";
+}
+} // namespace
+
+// An array of LargeArrayBytes or more (the steady solver's at 512 x 1024 and above, and the Jacobi kernel's) starts on
+// a 2 MiB boundary, zero-filled, and its whole 2 MiB blocks are advised as huge pages (VmFlags "hg") wherever the
+// kernel has transparent huge pages (/sys/kernel/mm/transparent_hugepage); a smaller one is 64-byte aligned, as
+// before. The counter sees what was asked, not the room glibc maps to align it.
+TEST(BilateralDepthRelaxSteadyWorkspace, LargeArraysStartOnA2MiBBoundaryAndAreOfferedHugePages)
+{
+  const bool        transparentHugePages = std::ifstream("/sys/kernel/mm/transparent_hugepage/enabled").good();
+  const std::size_t count = 3 * itk::detail::LargeArrayBytes / sizeof(float) / 2 + 16; // 3 MiB and a bit
+  const long long   before = vr::test::AllocatedBytes();
+  {
+    itk::detail::ReusableArray<float> array;
+    const float *                     values = array.Reserve(count);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(values) % itk::detail::LargeArrayBytes, 0u);
+    std::size_t nonzero = 0;
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      nonzero += values[i] != 0.0f;
+    }
+    EXPECT_EQ(nonzero, 0u);
+    const std::string flags = VmFlagsOf(values);
+    ASSERT_FALSE(flags.empty()) << "no mapping of /proc/self/smaps holds the array";
+    EXPECT_EQ(flags.find(" hg") != std::string::npos, transparentHugePages) << flags;
+    const long long counted = vr::test::AllocatedBytes() - before;
+    EXPECT_GE(counted, static_cast<long long>(count * sizeof(float)));
+    EXPECT_LE(counted, static_cast<long long>(count * sizeof(float)) + 8192);
+
+    itk::detail::ReusableArray<float> small;
+    const float *                     few = small.Reserve(1000);
+    EXPECT_EQ(reinterpret_cast<std::uintptr_t>(few) % 64, 0u);
+  }
+  EXPECT_EQ(vr::test::AllocatedBytes(), before);
 }
