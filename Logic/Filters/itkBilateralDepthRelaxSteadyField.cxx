@@ -223,6 +223,8 @@ Field::EnergyChange(float step)
       const bool last = y + 1 == Height;
       return Rows().EnergyChangeRow(Depth + row,
                                     last ? nullptr : Depth + row + Stride,
+                                    WeightRight + row,
+                                    WeightDown + row,
                                     Delta + row,
                                     Delta + row + Stride,
                                     step,

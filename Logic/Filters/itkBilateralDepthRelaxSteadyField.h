@@ -89,7 +89,8 @@ public:
   double
   Assemble(bool hessian);
 
-  /** The energy change, times 2a, when the depths move by \a step times the correction Delta. */
+  /** The energy change, times 2a, when the depths move by \a step times the correction Delta. Reads the weights
+   * ComputeWeights last stored: they must be those of the current depths (as in every outer iteration's step). */
   double
   EnergyChange(float step);
 

@@ -199,9 +199,12 @@ struct RowKernels
   void (*DirectionRow)(float * __restrict v, const float * __restrict z, float beta, long width);
 
   /** The change of the energy sum (1 - R(D_p - D_q)) over a row's edges to the right and to the row below (\a below
-   * null for the last row) when the depths move by \a step times \a delta, times 2a, summed in Lanes partial sums. */
+   * null for the last row) when the depths move by \a step times \a delta, times 2a, summed in Lanes partial sums;
+   * \a right and \a down are the edges' weights at the current depths (WeightRow's). */
   double (*EnergyChangeRow)(const double * __restrict d,
                             const double * __restrict below,
+                            const float * __restrict right,
+                            const float * __restrict down,
                             const float * __restrict delta,
                             const float * __restrict deltaBelow,
                             float step,

@@ -449,22 +449,25 @@ SmallExpMinusOne(float u)
   return p * u;
 }
 
-/** (1 - R(from + step)) - (1 - R(from)) = R(from) - R(from + step): an edge's share of the energy change, times 2a.
+/** (1 - R(from + step)) - (1 - R(from)) = R(from) - R(from + step): an edge's share of the energy change, times 2a,
+ * with \a weight = R(from) as the field holds it (the same bits as computed here: one exponential less per edge).
  * Where the exponent's change u = -a step (2 from + step) is small, as R(from) (-expm1(u)), which keeps its digits
  * when the step is much smaller than the difference; elsewhere as the plain difference of the two weights. */
 inline float
-EdgeEnergyChange(float from, float step, float anisotropy, float scale)
+EdgeEnergyChange(float from, float weight, float step, float anisotropy, float scale)
 {
   const float to = from + step;
   const float u = -anisotropy * step * (from + to);
-  const float near = -RangeWeight(from, scale) * SmallExpMinusOne(std::clamp(u, -0.5f, 0.5f));
-  const float far = RangeWeight(from, scale) - RangeWeight(to, scale);
+  const float near = -weight * SmallExpMinusOne(std::clamp(u, -0.5f, 0.5f));
+  const float far = weight - RangeWeight(to, scale);
   return std::abs(u) <= 0.5f ? near : far;
 }
 
 double
 EnergyChangeRow(const double * __restrict d,
                 const double * __restrict below,
+                const float * __restrict right,
+                const float * __restrict down,
                 const float * __restrict delta,
                 const float * __restrict deltaBelow,
                 float step,
@@ -475,16 +478,16 @@ EnergyChangeRow(const double * __restrict d,
 {
   for (long x = 0; x + 1 < width; ++x)
   {
-    scratch[x] =
-      EdgeEnergyChange(static_cast<float>(d[x + 1] - d[x]), step * (delta[x + 1] - delta[x]), anisotropy, scale);
+    scratch[x] = EdgeEnergyChange(
+      static_cast<float>(d[x + 1] - d[x]), right[x], step * (delta[x + 1] - delta[x]), anisotropy, scale);
   }
   scratch[width - 1] = 0.0f;
   if (below)
   {
     for (long x = 0; x < width; ++x)
     {
-      scratch[x] +=
-        EdgeEnergyChange(static_cast<float>(below[x] - d[x]), step * (deltaBelow[x] - delta[x]), anisotropy, scale);
+      scratch[x] += EdgeEnergyChange(
+        static_cast<float>(below[x] - d[x]), down[x], step * (deltaBelow[x] - delta[x]), anisotropy, scale);
     }
   }
   return CombineInLanes<double>(
