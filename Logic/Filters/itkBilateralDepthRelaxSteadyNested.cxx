@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkBilateralDepthRelaxSteadyNested.h"
 
-#include "itkBilateralDepthRelaxRangeWeight.h"
+#include "itkBilateralDepthRelaxSteadyRows.h"
 
 #include <algorithm>
 
@@ -64,41 +64,19 @@ ProlongStart(Bands &       bands,
              long          height,
              long          stride)
 {
-  bands.ForRows(height,
-                true,
-                [&](long y0, long y1)
-                {
-                  for (long y = y0; y < y1; ++y)
-                  {
-                    // The fine pixel's centre lies a quarter of a coarse pixel from its own coarse pixel's, towards
-                    // the neighbour on that side (clamped at the border): bilinear weights 3/4 and 1/4 per axis.
-                    const long    j = y / 2;
-                    const long    jn = std::clamp(y % 2 ? j + 1 : j - 1, 0L, coarseHeight - 1);
-                    const float * own = coarse + j * coarseWidth;
-                    const float * other = coarse + jn * coarseWidth;
-                    const long    row = (y + 1) * stride + 1;
-                    for (long x = 0; x < width; ++x)
-                    {
-                      if (active[row + x] == 0.0f)
-                      {
-                        continue;
-                      }
-                      const long  i = x / 2;
-                      const long  in = std::clamp(x % 2 ? i + 1 : i - 1, 0L, coarseWidth - 1);
-                      const float centre = own[i];
-                      const float values[3] = { own[in], other[i], other[in] };
-                      const float bilinear[3] = { 3.0f / 16.0f, 3.0f / 16.0f, 1.0f / 16.0f };
-                      float       sum = 9.0f / 16.0f * centre;
-                      float       weights = 9.0f / 16.0f;
-                      for (int n = 0; n < 3; ++n)
-                      {
-                        const float w = bilinear[n] * (scale > 0.0f ? RangeWeight(values[n] - centre, scale) : 1.0f);
-                        sum += w * values[n];
-                        weights += w;
-                      }
-                      depth[row + x] = sum / weights;
-                    }
-                  }
-                });
+  bands.ForRows(
+    height,
+    true,
+    [&](long y0, long y1)
+    {
+      for (long y = y0; y < y1; ++y)
+      {
+        const long j = y / 2;
+        const long jn = std::clamp(y % 2 ? j + 1 : j - 1, 0L, coarseHeight - 1);
+        const long row = (y + 1) * stride + 1;
+        Rows().ProlongStartRow(
+          depth + row, active + row, coarse + j * coarseWidth, coarse + jn * coarseWidth, coarseWidth, scale, width);
+      }
+    });
 }
 } // namespace itk::detail::BilateralDepthRelaxSteady

@@ -213,6 +213,19 @@ struct RowKernels
                             float * __restrict scratch,
                             long width);
 
+  /** One fine row of a coarser grid's solution interpolated as a start (ProlongStart,
+   * itkBilateralDepthRelaxSteadyNested.h): at every active pixel x (\a active nonzero), the bilinear mean of coarse
+   * pixel x / 2 of \a own (the coarse row of the pixel's centre) and its neighbours towards the pixel in \a own and \a
+   * other (the coarse row on the pixel's side), each neighbour weighted by the range weight of its difference to x / 2
+   * (\a scale as in RangeWeight; 0: plain bilinear). Other pixels keep their depth. */
+  void (*ProlongStartRow)(double * __restrict depth,
+                          const float * __restrict active,
+                          const float * __restrict own,
+                          const float * __restrict other,
+                          long  coarseWidth,
+                          float scale,
+                          long  width);
+
   /** depth += delta on a row, kept within [low, high]: the fixed point lies within the range of the input (each free
    * pixel a weighted mean of its neighbours), so a correction that leaves it, as one can in a mode the weights all
    * but decouple, is cut back to it. */
