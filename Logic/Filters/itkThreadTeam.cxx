@@ -39,7 +39,9 @@ ThreadTeam::ThreadTeam(unsigned int size)
     return;
   }
   m_Size = static_cast<unsigned int>(m_Helpers.size()) + 1;
-  m_Barrier = std::make_unique<ThreadTeamBarrier>(m_Size);
+  const unsigned int hardware = std::thread::hardware_concurrency();
+  m_Barrier = std::make_unique<ThreadTeamBarrier>(
+    m_Size, hardware > 0 && m_Size <= hardware ? SpinsBetweenJobs : ThreadTeamBarrier::DefaultSpinsBeforeSleeping);
   start.set_value(true);
 }
 

@@ -11,10 +11,6 @@ namespace itk::detail
 {
 namespace
 {
-/** About 20-50 microseconds of polling before sleeping: longer than the usual imbalance of one relax iteration,
- * far shorter than a scheduler time slice. */
-constexpr unsigned int SpinsBeforeSleeping = 2000;
-
 inline void
 PauseCPU()
 {
@@ -24,8 +20,9 @@ PauseCPU()
 }
 } // namespace
 
-ThreadTeamBarrier::ThreadTeamBarrier(unsigned int parties)
+ThreadTeamBarrier::ThreadTeamBarrier(unsigned int parties, unsigned int spinsBeforeSleeping)
   : m_Parties(parties)
+  , m_SpinsBeforeSleeping(spinsBeforeSleeping)
 {
   if (parties == 0)
   {
@@ -48,7 +45,7 @@ ThreadTeamBarrier::Wait()
     m_Condition.notify_all();
     return;
   }
-  for (unsigned int spin = 0; spin < SpinsBeforeSleeping; ++spin)
+  for (unsigned int spin = 0; spin < m_SpinsBeforeSleeping; ++spin)
   {
     if (m_Generation.load(std::memory_order_acquire) != generation)
     {
