@@ -39,9 +39,7 @@ ThreadTeam::ThreadTeam(unsigned int size)
     return;
   }
   m_Size = static_cast<unsigned int>(m_Helpers.size()) + 1;
-  const unsigned int hardware = std::thread::hardware_concurrency();
-  m_Barrier = std::make_unique<ThreadTeamBarrier>(
-    m_Size, hardware > 0 && m_Size <= hardware ? SpinsBetweenJobs : ThreadTeamBarrier::DefaultSpinsBeforeSleeping);
+  m_Barrier = std::make_unique<ThreadTeamBarrier>(m_Size);
   start.set_value(true);
 }
 

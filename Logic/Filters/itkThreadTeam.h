@@ -19,13 +19,8 @@ namespace itk::detail
  *
  * The team is created once (the calling thread is member 0, the others are helpers) and then runs job after job:
  * Run() hands the same job to every member and returns when all have finished it. Helpers wait between jobs on a
- * ThreadTeamBarrier (a spin, then sleep). When the system refuses a helper thread, the team simply has fewer
+ * ThreadTeamBarrier (a brief spin, then sleep). When the system refuses a helper thread, the team simply has fewer
  * members. Jobs must not throw.
- *
- * A team with no more members than the processor has hardware threads polls SpinsBetweenJobs times before sleeping,
- * ten times a barrier's default (a few hundred microseconds): the steady solver's V-cycles work their coarsest levels
- * on the calling thread alone for about that long between parallel steps, and a helper asleep by then costs a
- * wake-up on the next step's critical path. A larger team, whose members share cores, keeps the default.
  *
  * \sa ThreadTeamBarrier, BilateralDepthRelaxSteadySolver
  * \ingroup VesselReformation
@@ -34,9 +29,6 @@ class ThreadTeam
 {
 public:
   using Job = std::function<void(unsigned int member)>;
-
-  /** The polls before sleeping of a team that fits the hardware threads. */
-  static constexpr unsigned int SpinsBetweenJobs = 10 * ThreadTeamBarrier::DefaultSpinsBeforeSleeping;
 
   /** A team of up to \a size threads (at least 1: the caller). */
   explicit ThreadTeam(unsigned int size);

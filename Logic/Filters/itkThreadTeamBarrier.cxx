@@ -11,6 +11,10 @@ namespace itk::detail
 {
 namespace
 {
+/** About 20-50 microseconds of polling before sleeping: longer than the usual imbalance of one relax iteration,
+ * far shorter than a scheduler time slice. */
+constexpr unsigned int SpinsBeforeSleeping = 2000;
+
 inline void
 PauseCPU()
 {
@@ -20,9 +24,8 @@ PauseCPU()
 }
 } // namespace
 
-ThreadTeamBarrier::ThreadTeamBarrier(unsigned int parties, unsigned int spinsBeforeSleeping)
+ThreadTeamBarrier::ThreadTeamBarrier(unsigned int parties)
   : m_Parties(parties)
-  , m_SpinsBeforeSleeping(spinsBeforeSleeping)
 {
   if (parties == 0)
   {
@@ -45,7 +48,7 @@ ThreadTeamBarrier::Wait()
     m_Condition.notify_all();
     return;
   }
-  for (unsigned int spin = 0; spin < m_SpinsBeforeSleeping; ++spin)
+  for (unsigned int spin = 0; spin < SpinsBeforeSleeping; ++spin)
   {
     if (m_Generation.load(std::memory_order_acquire) != generation)
     {

@@ -23,12 +23,7 @@ namespace itk::detail
 class ThreadTeamBarrier
 {
 public:
-  /** About 20-50 microseconds of polling before sleeping: longer than the usual imbalance of one relax iteration,
-   * far shorter than a scheduler time slice. */
-  static constexpr unsigned int DefaultSpinsBeforeSleeping = 2000;
-
-  /** A barrier for \a parties threads that poll \a spinsBeforeSleeping times before they sleep. */
-  explicit ThreadTeamBarrier(unsigned int parties, unsigned int spinsBeforeSleeping = DefaultSpinsBeforeSleeping);
+  explicit ThreadTeamBarrier(unsigned int parties);
 
   ThreadTeamBarrier(const ThreadTeamBarrier &) = delete;
   ThreadTeamBarrier &
@@ -45,7 +40,6 @@ public:
 
 private:
   const unsigned int        m_Parties;
-  const unsigned int        m_SpinsBeforeSleeping;
   std::atomic<unsigned int> m_Arrived{ 0 };
   std::atomic<unsigned int> m_Generation{ 0 };
   std::mutex                m_Mutex;
