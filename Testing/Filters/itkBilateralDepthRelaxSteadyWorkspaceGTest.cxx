@@ -155,8 +155,8 @@ VmFlagsOf(const void * address)
 } // namespace
 
 // An array of LargeArrayBytes or more (the steady solver's at 512 x 1024 and above, and the Jacobi kernel's) starts on
-// a 2 MiB boundary, zero-filled, and its whole 2 MiB blocks are advised as huge pages (VmFlags "hg") wherever the
-// kernel has transparent huge pages (/sys/kernel/mm/transparent_hugepage); a smaller one is 64-byte aligned, as
+// a 2 MiB boundary, zero-filled, and its whole 2 MiB blocks are advised as huge pages (VmFlags "hg") where the kernel
+// shows transparent huge pages (/sys/kernel/mm/transparent_hugepage); a smaller one is 64-byte aligned, as
 // before. The counter sees what was asked, not the room glibc maps to align it.
 TEST(BilateralDepthRelaxSteadyWorkspace, LargeArraysStartOnA2MiBBoundaryAndAreOfferedHugePages)
 {
@@ -175,7 +175,12 @@ TEST(BilateralDepthRelaxSteadyWorkspace, LargeArraysStartOnA2MiBBoundaryAndAreOf
     EXPECT_EQ(nonzero, 0u);
     const std::string flags = VmFlagsOf(values);
     ASSERT_FALSE(flags.empty()) << "no mapping of /proc/self/smaps holds the array";
-    EXPECT_EQ(flags.find(" hg") != std::string::npos, transparentHugePages) << flags;
+    if (transparentHugePages)
+    {
+      EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+    }
+    // Without that file the kernel may have no transparent huge pages (the advice is refused) or hide them from this
+    // process (a container without /sys): the flag may be either way there.
     const long long counted = vr::test::AllocatedBytes() - before;
     EXPECT_GE(counted, static_cast<long long>(count * sizeof(float)));
     EXPECT_LE(counted, static_cast<long long>(count * sizeof(float)) + 8192);
