@@ -40,7 +40,9 @@ AllocateLarge(std::size_t bytes)
 #endif
   return memory;
 #else
+  // clang-format off (its alignment reaches across the #else)
   return ::operator new[](bytes, std::align_val_t{ LargeArrayBytes });
+  // clang-format on
 #endif
 }
 
@@ -50,7 +52,9 @@ FreeLarge(void * memory) noexcept
 #if defined(__linux__)
   std::free(memory);
 #else
-  ::       operator delete[](memory, std::align_val_t{ LargeArrayBytes });
+  // clang-format off (its alignment reaches across the #else)
+  ::operator delete[](memory, std::align_val_t{ LargeArrayBytes });
+  // clang-format on
 #endif
 }
 

@@ -20,7 +20,7 @@ Correction::Solve(double target, bool newton)
   const long            width = m_Field.Width;
   const unsigned int    cyclesBefore = m_Cycles;
   std::vector<double> & maxima = m_Field.RowMaxima();
-  double rz = Precondition();
+  double                rz = Precondition();
   m_Bands.ForRows(m_Field.Height,
                   true,
                   [&](long y0, long y1)
@@ -84,7 +84,7 @@ Correction::Solve(double target, bool newton)
       break;
     }
     const double rzNext = Precondition();
-    const float beta = static_cast<float>(rzNext / rz);
+    const float  beta = static_cast<float>(rzNext / rz);
     rz = rzNext;
     m_Bands.ForRows(m_Field.Height,
                     true,

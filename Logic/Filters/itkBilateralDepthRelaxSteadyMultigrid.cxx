@@ -181,7 +181,15 @@ ResidualAfterSweepFromZeroRowInto(const Level & l, long y, float * r)
 {
   const long s = l.Stride;
   const long p = l.At(0, y);
-  Rows().ResidualAfterSweepFromZeroRow5(r, l.X + p, l.X + p + s, l.X + p - s, l.E + p, l.N + p, l.N + p - s, y & 1, l.Width);
+  Rows().ResidualAfterSweepFromZeroRow5(
+    r, l.X + p, l.X + p + s, l.X + p - s, l.E + p, l.N + p, l.N + p - s, y & 1, l.Width);
+}
+
+/** b . x on row \a y of level \a l. */
+double
+RowDotBX(const Level & l, long y)
+{
+  return Rows().RowDot(l.B + l.At(0, y), l.X + l.At(0, y), l.Width);
 }
 
 /** Coarse row \a J of b_c = P^T r_f, from the fine residual rows 2J (\a r), 2J + 1 (\a rAbove) and 2J - 1
@@ -548,10 +556,10 @@ Multigrid::SmoothRedBlack(const Level & l, int first, bool fromZero, double * ro
   {
     if (rowDots)
     {
-      rowDots[y] = Rows().RowDot(l.B + l.At(0, y), l.X + l.At(0, y), l.Width);
+      rowDots[y] = RowDotBX(l, y);
     }
   };
-  auto      colourRow = [&](int colour, long y, bool zero)
+  auto colourRow = [&](int colour, long y, bool zero)
   {
     const long p = l.At(0, y);
     if (zero)
@@ -593,10 +601,10 @@ Multigrid::SmoothRedBlack(const Level & l, int first, bool fromZero, double * ro
 }
 
 /** b_c = P^T (b_f - A_f x_f); with \a afterSweepFromZero (a 5-point level whose x is one red-black sweep from 0,
- * colour 0 first) from x and the couplings alone (ResidualAfterSweepFromZeroRow5). Coarse row J needs the fine residual of rows 2J - 1 to 2J + 1; each member of the
- * team computes them into three rows of its own as it goes up its band (its first coarse row computes row 2J - 1
- * too, which the band below computes as well), so the residual never goes through memory and no band waits for
- * another. */
+ * colour 0 first) from x and the couplings alone (ResidualAfterSweepFromZeroRow5). Coarse row J needs the fine residual
+ * of rows 2J - 1 to 2J + 1; each member of the team computes them into three rows of its own as it goes up its band
+ * (its first coarse row computes row 2J - 1 too, which the band below computes as well), so the residual never goes
+ * through memory and no band waits for another. */
 void
 Multigrid::ResidualAndRestrict(const Level & f, const Level & c, bool afterSweepFromZero)
 {
@@ -683,18 +691,15 @@ Multigrid::CycleFrom(std::size_t k, double * rowDots)
 double
 Multigrid::CycleAndDot()
 {
-  const Level & f = m_Buffers.Levels[0];
-  double *      rows = m_Bands.RowSums();
-  if (m_LevelCount > 1 && !f.NinePoint)
+  double * rows = m_Bands.RowSums();
+  CycleFrom(0, rows);
+  if (m_LevelCount == 1)
   {
-    CycleFrom(0, rows);
-  }
-  else
-  {
-    CycleFrom(0);
+    // The direct solve of a grid too small for a hierarchy has no smoothing to form the row sums in.
+    const Level & f = m_Buffers.Levels[0];
     for (long y = 0; y < f.Height; ++y)
     {
-      rows[y] = Rows().RowDot(f.B + f.At(0, y), f.X + f.At(0, y), f.Width);
+      rows[y] = RowDotBX(f, y);
     }
   }
   return m_Bands.SumOfRowSums();

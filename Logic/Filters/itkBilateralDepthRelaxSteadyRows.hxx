@@ -510,8 +510,7 @@ ProlongStartRow(double * __restrict depth,
   for (long x = 0; x < width; ++x)
   {
     const long  i = x / 2;
-    const long  side = x % 2 ? i + 1 : i - 1;
-    const long  in = side < 0 ? 0 : (side > coarseWidth - 1 ? coarseWidth - 1 : side);
+    const long  in = std::clamp(x % 2 ? i + 1 : i - 1, 0L, coarseWidth - 1);
     const float centre = own[i];
     const float across = own[in];
     const float beside = other[i];
