@@ -9,9 +9,20 @@
 
 namespace itk::detail::BilateralDepthRelaxSteady
 {
-/** A map starts from a coarser grid's solution when that grid has at least this many pixels (128 x 256): smaller
- * maps are solved from their input, as before nested iteration, which is cheap there and keeps their results. */
+/** An image's map starts from a coarser grid's solution only when that grid has at least this many pixels
+ * (128 x 256): smaller maps are solved from their input, as before nested iteration, which is cheap there and keeps
+ * their results. */
 constexpr long NestedMinimumPixels = 1 << 15;
+
+/** A coarser grid of a nested solve starts from a coarser grid of its own down to this many pixels (64 x 128): its
+ * solution is only a start, and one from a coarser start costs less and is a lower minimum
+ * (docs/steady-solver.md). */
+constexpr long CoarseNestedMinimumPixels = 1 << 13;
+
+/** At most this many coarser grids below the image's: the coarsest one then solves with at most 2 sqrt 2 times the
+ * requested J. A longer continuation smoothed seams away on the coarsest grid, which the finer grids then kept in
+ * higher minima. */
+constexpr unsigned int MaximumCoarserGrids = 3;
 
 /** The coarser grid solves with a times this (J times sqrt 2): on a grid of twice the spacing a smooth depth change
  * puts twice the difference on each edge, which the same a would take for seams to keep (a / 4 would undo that, and
@@ -21,18 +32,21 @@ constexpr double CoarseAnisotropyFactor = 0.5;
 /** The coarser grid solves to this times the tolerance: its solution is only a start. */
 constexpr double CoarseToleranceFactor = 10.0;
 
-/** Whether a \a width x \a height map starts from a coarser grid's solution, and that grid's size. */
+/** Whether a \a width x \a height map starts from a coarser grid's solution, and that grid's size; \a coarser is the
+ * number of grids between the map and the image's own (0: the image's own grid). */
 inline bool
-HasCoarserStart(long width, long height, long & coarseWidth, long & coarseHeight)
+HasCoarserStart(long width, long height, unsigned int coarser, long & coarseWidth, long & coarseHeight)
 {
   coarseWidth = (width + 1) / 2;
   coarseHeight = (height + 1) / 2;
-  return width > 1 && height > 1 && coarseWidth * coarseHeight >= NestedMinimumPixels;
+  const long minimum = coarser == 0 ? NestedMinimumPixels : CoarseNestedMinimumPixels;
+  return coarser < MaximumCoarserGrids && width > 1 && height > 1 && coarseWidth * coarseHeight >= minimum;
 }
 
 /** The same view at half the pixels per axis: coarse pixel (I, J) covers fine pixels 2I, 2I + 1 x 2J, 2J + 1 (those
- * inside the image). It is fixed where any of them is, with their mean depth; else it takes the mean of their
- * depths. Rows of \a width x \a height in, \a coarseWidth x \a coarseHeight out (row-major, no padding). */
+ * inside the image). It is fixed where any of them is, with the depth of the first fixed one in raster order; else it
+ * takes the depth of the first one: input depths, never a mean across a depth jump. Rows of \a width x \a height in, \a
+ * coarseWidth x \a coarseHeight out (row-major, no padding). */
 void
 CoarsenMap(Bands &               bands,
            const float *         depth,

@@ -92,9 +92,11 @@ GridRowBytes(long w, long h, unsigned int threads)
 }
 
 /** Solves a \a w x \a h map on its own grid: from its input while lagged weights converge fast, else (when it has a
- * coarser grid) from the coarser grid's solution, solved the same way (nested iteration, recursively). */
+ * coarser grid) from the coarser grid's solution, solved the same way (nested iteration, recursively); \a coarser
+ * grids lie between this one and the image's. */
 Report
-SolveGrid(Buffers &                                                 buffers,
+SolveGrid(unsigned int                                              coarser,
+          Buffers &                                                 buffers,
           Steady::Lender *                                          lender,
           const float *                                             depth,
           const unsigned char *                                     fixed,
@@ -109,7 +111,7 @@ SolveGrid(Buffers &                                                 buffers,
 {
   long       coarseWidth = 0;
   long       coarseHeight = 0;
-  const bool canNest = settings.NestedIteration && Steady::HasCoarserStart(w, h, coarseWidth, coarseHeight);
+  const bool canNest = settings.NestedIteration && Steady::HasCoarserStart(w, h, coarser, coarseWidth, coarseHeight);
   // The fraction reported never goes back, across the attempt from the input and the nested solve after it.
   double reported = 0.0;
   auto   report = [&progress, &reported](double fraction)
@@ -164,7 +166,8 @@ SolveGrid(Buffers &                                                 buffers,
     {
       coarseProgress = [&report](double fraction) { report(CoarseProgressShare * fraction); };
     }
-    coarse = SolveGrid(*buffers.Coarse,
+    coarse = SolveGrid(coarser + 1,
+                       *buffers.Coarse,
                        &lent,
                        coarseDepth,
                        coarseFixed,
@@ -225,7 +228,7 @@ BilateralDepthRelaxSteadySolver::GetWorkspaceBytes(std::size_t width, std::size_
   // finer grid's scratch arrays; only their rows are their own.
   long coarseWidth = 0;
   long coarseHeight = 0;
-  while (Steady::HasCoarserStart(w, h, coarseWidth, coarseHeight))
+  for (unsigned int coarser = 0; Steady::HasCoarserStart(w, h, coarser, coarseWidth, coarseHeight); ++coarser)
   {
     w = coarseWidth;
     h = coarseHeight;
@@ -268,7 +271,8 @@ BilateralDepthRelaxSteadySolver::Solve(const float *            depth,
     return Report();
   }
   Workspace ownWorkspace;
-  return SolveGrid(*(workspace ? workspace : &ownWorkspace)->m_Buffers,
+  return SolveGrid(0,
+                   *(workspace ? workspace : &ownWorkspace)->m_Buffers,
                    nullptr,
                    depth,
                    fixed,

@@ -11,6 +11,7 @@
 #include "vrTestImages.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
+#include "itkBilateralDepthRelaxSteadyNested.h"
 #include "itkBilateralDepthRelaxSteadySolver.h"
 
 #include <gtest/gtest.h>
@@ -29,8 +30,9 @@ using Solver = itk::BilateralDepthRelaxSteadySolver;
 /** The jump threshold J = 3 mm of the filter's default, as the anisotropy a = 1/J^2. */
 constexpr double Anisotropy = 1.0 / 9.0;
 
-/** The most outer iterations on the image's own grid that a thoracic solve from the coarser grids may take; from
- * the input it took 34 at 256 x 512 and 54 at 512 x 1024 (and 19 at 128 x 256, whose grid is solved from its input). */
+/** The most outer iterations on the image's own grid that a thoracic solve from the coarser grids may take (8 at
+ * 256 x 512, 9 at 512 x 1024); from the input it took 34 and 51 (and 19 at 128 x 256, whose grid is solved from its
+ * input). */
 constexpr unsigned int FineOuterIterationBound = 16;
 
 /** The thoracic phantom's scan-line depth map and fixed mask at its design angle. */
@@ -99,6 +101,36 @@ TEST(BilateralDepthRelaxSteadyNested, ThoraxReachesTheEnergyOfTheSolveFromTheInp
               << " coarser grids, energy " << energy << " mm^2, residual " << residual << " mm; from the input "
               << input.OuterIterations << " outer iterations, energy " << inputEnergy << " mm^2" << std::endl;
   }
+}
+
+// Which grids start from a coarser one (docs/steady-solver.md): an image from 256 x 512 pixels (its coarser grid
+// from 128 x 256, odd sizes rounded up), a coarser grid of a nested solve down to 64 x 128, never more than three
+// coarser grids below the image's.
+TEST(BilateralDepthRelaxSteadyNested, ImagesFrom256x512AndCoarserGridsTo64x128NestAtMostThreeGridsDeep)
+{
+  namespace Steady = itk::detail::BilateralDepthRelaxSteady;
+  long w = 0;
+  long h = 0;
+  ASSERT_TRUE(Steady::HasCoarserStart(256, 512, 0, w, h));
+  EXPECT_EQ(w, 128);
+  EXPECT_EQ(h, 256);
+  ASSERT_TRUE(Steady::HasCoarserStart(255, 511, 0, w, h));
+  EXPECT_EQ(w, 128);
+  EXPECT_EQ(h, 256);
+  EXPECT_FALSE(Steady::HasCoarserStart(254, 510, 0, w, h)) << "127 x 255 coarser pixels";
+  EXPECT_FALSE(Steady::HasCoarserStart(128, 256, 0, w, h)) << "an image of 128 x 256 is solved from its input";
+  ASSERT_TRUE(Steady::HasCoarserStart(128, 256, 1, w, h)) << "a coarser grid of 128 x 256";
+  EXPECT_EQ(w, 64);
+  EXPECT_EQ(h, 128);
+  EXPECT_FALSE(Steady::HasCoarserStart(126, 254, 1, w, h)) << "63 x 127 coarser pixels";
+  EXPECT_FALSE(Steady::HasCoarserStart(64, 128, 2, w, h));
+  unsigned int grids = 0;
+  while (Steady::HasCoarserStart(4096, 8192, grids, w, h))
+  {
+    ++grids;
+  }
+  EXPECT_EQ(grids, 3u) << "coarser grids below a 4096 x 8192 image";
+  EXPECT_EQ(Steady::MaximumCoarserGrids, 3u);
 }
 
 TEST(BilateralDepthRelaxSteadyNested, ABoundedSolveStopsWithTheLastIterateAndSaysHowFarItGot)
