@@ -49,9 +49,8 @@ namespace itk
  * where any of a 2 x 2 block is, with J times sqrt 2 and ten times the tolerance; solved the same way, recursively,
  * down to 64 x 128 and at most three grids deep), interpolated across without blurring its depth jumps: nested
  * iteration, after which the map's own grid takes 7 to 11 outer iterations (the one from the input included) on
- * the thoracic phantom at 256 x 512 to 2048 x 4096. Maps
- * that lagged weights finish (the run-off phantom, the VMTK aorta) and smaller maps are solved as before, with the same
- * bits. The energy is not convex, so a different start may end in a different fixed point: measured, always one of
+ * the thoracic phantom at 256 x 512 to 2048 x 4096. Maps that lagged weights finish (the run-off phantom, the VMTK
+ * aorta) and smaller maps are solved as before, with the same bits. The energy is not convex, so a different start may end in a different fixed point: measured, always one of
  * lower energy than the start from the input. A solve stops after Settings::MaximumOuterIterations on the map's own
  * grid with Report::Converged false and its last iterate (Describe() says how far it got). docs/steady-solver.md gives
  * the reasons and the measurements.
