@@ -34,26 +34,24 @@ Correction::Solve(double target, bool newton)
                   });
   for (unsigned int iteration = 0; iteration < MaximumInnerIterations; ++iteration)
   {
-    // A v row by row into the thread's scratch row, here for its dot product and again in the update below:
-    // computing it twice costs less than writing it out and reading it back.
-    auto applyRow = [&](long y, float * product)
-    {
-      const long row = m_Field.At(0, y);
-      Rows().ApplyRow5(product,
-                       m_Field.Direction + row,
-                       m_Field.Direction + row + s,
-                       m_Field.Direction + row - s,
-                       opC + row,
-                       opE + row,
-                       opN + row,
-                       opN + row - s,
-                       width);
-    };
+    // A v row by row into Z, here for its dot product and again in the update below. Z holds nothing between the
+    // direction update and the next V-cycle, which writes it from zero: A v there costs no array of its own, and
+    // the update reads one row of it instead of v's three and the operator's (fewer bytes from memory where the
+    // arrays exceed the cache).
     const double curvature = m_Bands.SumRows(
-      [&](long y, float * product)
+      [&](long y, float *)
       {
-        applyRow(y, product);
-        return Rows().RowDot(m_Field.Direction + m_Field.At(0, y), product, width);
+        const long row = m_Field.At(0, y);
+        Rows().ApplyRow5(m_Field.Z + row,
+                         m_Field.Direction + row,
+                         m_Field.Direction + row + s,
+                         m_Field.Direction + row - s,
+                         opC + row,
+                         opE + row,
+                         opN + row,
+                         opN + row - s,
+                         width);
+        return Rows().RowDot(m_Field.Direction + row, m_Field.Z + row, width);
       });
     m_NegativeCurvature = newton && !(curvature > 0.0) && rz > 0.0;
     if (m_NegativeCurvature)
@@ -65,20 +63,23 @@ Correction::Solve(double target, bool newton)
       break;
     }
     const float alpha = static_cast<float>(rz / curvature);
-    m_Bands.ForRowsOfMembers(
-      m_Field.Height,
-      true,
-      [&](unsigned int member, long y0, long y1)
-      {
-        float * product = m_Bands.ScratchRow(member);
-        for (long y = y0; y < y1; ++y)
-        {
-          const long row = m_Field.At(0, y);
-          applyRow(y, product);
-          Rows().UpdateRow(m_Field.Delta + row, m_Field.Residual + row, m_Field.Direction + row, product, alpha, width);
-          maxima[static_cast<std::size_t>(y)] = Rows().RowMaximumOverDiagonal(m_Field.Residual + row, l.C + row, width);
-        }
-      });
+    m_Bands.ForRows(m_Field.Height,
+                    true,
+                    [&](long y0, long y1)
+                    {
+                      for (long y = y0; y < y1; ++y)
+                      {
+                        const long row = m_Field.At(0, y);
+                        Rows().UpdateRow(m_Field.Delta + row,
+                                         m_Field.Residual + row,
+                                         m_Field.Direction + row,
+                                         m_Field.Z + row,
+                                         alpha,
+                                         width);
+                        maxima[static_cast<std::size_t>(y)] =
+                          Rows().RowMaximumOverDiagonal(m_Field.Residual + row, l.C + row, width);
+                      }
+                    });
     if (*std::max_element(maxima.begin(), maxima.end()) <= target)
     {
       break;
