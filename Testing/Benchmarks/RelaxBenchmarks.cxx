@@ -265,8 +265,8 @@ const bool Registered = []
       Register(benchmark::RegisterBenchmark("Relax_Steady_Thorax", RelaxSteady, SteadyCase::Thorax),
                size.first,
                size.second,
-               largest ? 1 : 3,
-               true);
+               largest ? 1 : (large ? 3 : 10),
+               large);
       Register(benchmark::RegisterBenchmark("Relax_Steady_Aorta", RelaxSteady, SteadyCase::Aorta),
                size.first,
                size.second,
