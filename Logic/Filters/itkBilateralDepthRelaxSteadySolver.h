@@ -50,10 +50,10 @@ namespace itk
  * down to 64 x 128 and at most three grids deep), interpolated across without blurring its depth jumps: nested
  * iteration, after which the map's own grid takes 7 to 11 outer iterations (the one from the input included) on
  * the thoracic phantom at 256 x 512 to 2048 x 4096. Maps that lagged weights finish (the run-off phantom, the VMTK
- * aorta) and smaller maps are solved as before, with the same bits. The energy is not convex, so a different start may end in a different fixed point: measured, always one of
- * lower energy than the start from the input. A solve stops after Settings::MaximumOuterIterations on the map's own
- * grid with Report::Converged false and its last iterate (Describe() says how far it got). docs/steady-solver.md gives
- * the reasons and the measurements.
+ * aorta) and smaller maps are solved as before, with the same bits. The energy is not convex, so a different start
+ * may end in a different fixed point: measured, always one of lower energy than the start from the input. A solve
+ * stops after Settings::MaximumOuterIterations on the map's own grid with Report::Converged false and its last
+ * iterate (Describe() says how far it got). docs/steady-solver.md gives the reasons and the measurements.
  *
  * The multigrid is a black-box multigrid (Dendy, "Black box multigrid", J. Comput. Phys. 48, 1982): coarse points
  * on every other row and column, interpolation that follows the weights (a pixel beside a depth jump interpolates
