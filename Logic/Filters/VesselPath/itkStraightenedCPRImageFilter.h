@@ -5,6 +5,7 @@
 #include "itkCPRSamplingModes.h"
 #include "itkCPRViewGeometry.h"
 #include "itkCPRVolumeSampler.h"
+#include "itkVesselPathIndexFrames.h"
 #include "itkImage.h"
 #include "itkImageSource.h"
 #include "itkVesselPath.h"
