@@ -4,10 +4,11 @@
 
 Outside their homes, the code of the logic, the modules and the widgets (comments left out) may not
 - write a logic output node or a surface itself: a call of WriteImage2D or WriteWindowedPNG on
-  ConvertVolumeNodeTo...(), or of WriteSurface, belongs to Logic/vrOutputWriter.cxx (the IO layer defines them);
+  ConvertVolumeNodeTo...(), or of WriteSurface, belongs to Logic/TreeReformation/vrOutputWriter.cxx (the IO layer
+  defines them);
 - spell the filter settings as captions do: a string literal that, without its separators (spaces, commas, line
   breaks and digits), reads "steady solver", "mm^-2", "unfiltered (w = 0)" or, after a separator, "iterations"
-  (" iterations", not the parameter's name), belongs to Logic/vrFilterSettingsText.h/.cxx.
+  (" iterations", not the parameter's name), belongs to Logic/TreeReformation/vrFilterSettingsText.h/.cxx.
 
 Usage: check_single_copies.py ROOT        check the tree at ROOT; exit 1 naming every copy found
        check_single_copies.py --self-test  show that made-up copies of both are found
@@ -22,8 +23,8 @@ from layout_checks import source_files, main as run_check, write_file
 SCANNED = ('Logic', 'Module', 'Widgets', 'Applications')
 # The layers below the logic define the writers and say nothing of captions.
 SKIPPED = ('Logic/Common', 'Logic/Filters', 'Logic/IO', 'Logic/Nodes', 'Logic/Phantoms')
-WRITER_HOME = 'Logic/vrOutputWriter.cxx'
-SETTINGS_HOMES = ('Logic/vrFilterSettingsText.h', 'Logic/vrFilterSettingsText.cxx')
+WRITER_HOME = 'Logic/TreeReformation/vrOutputWriter.cxx'
+SETTINGS_HOMES = tuple('Logic/TreeReformation/vrFilterSettingsText' + extension for extension in ('.h', '.cxx'))
 
 WRITE_CALL = re.compile(r'\b(?:WriteImage2D|WriteWindowedPNG)\s*\(\s*(?:vr::)?ConvertVolumeNodeTo|\bWriteSurface\s*\(')
 LITERAL = re.compile(r'"((?:[^"\\\n]|\\.)*)"')
@@ -84,4 +85,5 @@ def self_test():
 
 
 if __name__ == '__main__':
-    sys.exit(run_check(sys.argv[1:], __doc__, check, self_test, 'one output writer, one description of the filter settings'))
+    sys.exit(run_check(sys.argv[1:], __doc__, check, self_test,
+                       'one output writer, one description of the filter settings'))
