@@ -5,17 +5,30 @@
 A unit is a file name without its extension (itkFoo.h, itkFoo.hxx and itkFoo.cxx are one unit, as ITK's idiom
 has the .h and .hxx of a class include each other). Unit A depends on unit B when a file of A includes a header of
 B. The graph must have no cycle: no header includes a header (or a unit) that includes it back, directly or
-through others. And each layer may include only the layers below it:
+through others. And each folder (a "room") may include only the rooms below it:
 
-    Common   -> Common                Filters -> Filters           Phantoms -> Phantoms, Filters
-    Nodes    -> Nodes, Filters, Common                               OpenCL   -> OpenCL, Filters, Common
-    IO       -> IO, Nodes, Filters, Common
-    Logic    -> Logic, IO, Nodes, Filters, Common, Phantoms, OpenCL
-    Widgets  -> Widgets, Logic, IO, Nodes, Filters, Common, Phantoms, OpenCL   (nothing below includes Widgets)
-    Applications/VesselReformationViewer -> itself, Widgets and everything below (nothing includes the application)
+    Logic/Common                          itself
+    Logic/Filters/<concern>               itself and the concerns it builds on: Threading and Centerlines stand
+                                          alone; Depth builds on Centerlines; Relax and Relax/Steady on each other
+                                          and Threading; Resample on Depth; VesselPath on Centerlines, Depth and
+                                          Resample; Lumen on VesselPath and what it builds on
+    Logic/Phantoms                        itself, the filters
+    Logic/Nodes, OpenCL                   themselves, the filters, Common
+    Logic/IO                              itself, Nodes, the filters, Common
+    Logic/Shared, Logic/Display           themselves, IO and below
+    Logic/Centerlines                     itself, Shared, IO and below
+    Logic/Inputs                          itself, Centerlines, Display, Shared, Phantoms, IO and below
+    Logic/TreeReformation                 itself, Inputs and below, OpenCL (never Logic/VesselPath)
+    Logic/VesselPath                      itself, Inputs and below (never Logic/TreeReformation)
+    Widgets/Common                        itself and the logic
+    Widgets/Tree, Widgets/VesselPath      themselves, Widgets/Common and the logic (not each other)
+    Applications/VesselReformationViewer  itself, the widgets and everything below (nothing includes it)
+
+A source file in a folder of Logic, OpenCL, Widgets or Applications that no rule names is reported too: a new
+room needs its rule here (and its paragraph in docs/layout.md).
 
 Usage: check_include_graph.py ROOT      check the tree at ROOT; exit 1 naming every cycle and violation
-       check_include_graph.py --self-test  show that a made-up cycle and a made-up violation are found
+       check_include_graph.py --self-test  show that a made-up cycle, made-up violations and an unknown room are found
 """
 import os
 import re
@@ -25,20 +38,43 @@ import tempfile
 from layout_checks import SOURCE_EXTENSIONS, source_files, main as run_check, write_file
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.MULTILINE)
+
+
+def _filters(*concerns):
+    return {'Logic/Filters/' + concern for concern in concerns}
+
+
+FILTERS = _filters('Threading', 'Centerlines', 'Depth', 'Relax', 'Relax/Steady', 'Resample', 'VesselPath', 'Lumen')
+BELOW_IO = {'Logic/IO', 'Logic/Nodes', 'Logic/Common'} | FILTERS
+LOGIC_BASE = {'Logic/Inputs', 'Logic/Centerlines', 'Logic/Display', 'Logic/Shared', 'Logic/Phantoms'} | BELOW_IO
+LOGIC = LOGIC_BASE | {'Logic/TreeReformation', 'Logic/VesselPath', 'OpenCL'}
+WIDGETS = {'Widgets/Common', 'Widgets/Tree', 'Widgets/VesselPath'}
 ALLOWED = {
     'Logic/Common': {'Logic/Common'},
-    'Logic/Filters': {'Logic/Filters'},
-    'Logic/Phantoms': {'Logic/Phantoms', 'Logic/Filters'},
-    'Logic/Nodes': {'Logic/Nodes', 'Logic/Filters', 'Logic/Common'},
-    'OpenCL': {'OpenCL', 'Logic/Filters', 'Logic/Common'},
-    'Logic/IO': {'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common'},
-    'Logic': {'Logic', 'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'Logic/Phantoms', 'OpenCL'},
-    'Widgets': {'Widgets', 'Logic', 'Logic/IO', 'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'Logic/Phantoms',
-                'OpenCL'},
-    'Applications/VesselReformationViewer': {'Applications/VesselReformationViewer', 'Widgets', 'Logic', 'Logic/IO',
-                                             'Logic/Nodes', 'Logic/Filters', 'Logic/Common', 'Logic/Phantoms',
-                                             'OpenCL'},
+    'Logic/Filters/Threading': _filters('Threading'),
+    'Logic/Filters/Centerlines': _filters('Centerlines'),
+    'Logic/Filters/Depth': _filters('Depth', 'Centerlines'),
+    'Logic/Filters/Relax': _filters('Relax', 'Relax/Steady', 'Threading'),
+    'Logic/Filters/Relax/Steady': _filters('Relax/Steady', 'Relax', 'Threading'),
+    'Logic/Filters/Resample': _filters('Resample', 'Depth', 'Centerlines'),
+    'Logic/Filters/VesselPath': _filters('VesselPath', 'Resample', 'Depth', 'Centerlines'),
+    'Logic/Filters/Lumen': _filters('Lumen', 'VesselPath', 'Resample', 'Depth', 'Centerlines'),
+    'Logic/Phantoms': {'Logic/Phantoms'} | FILTERS,
+    'Logic/Nodes': {'Logic/Nodes', 'Logic/Common'} | FILTERS,
+    'OpenCL': {'OpenCL', 'Logic/Common'} | FILTERS,
+    'Logic/IO': BELOW_IO,
+    'Logic/Shared': {'Logic/Shared'} | BELOW_IO,
+    'Logic/Display': {'Logic/Display'} | BELOW_IO,
+    'Logic/Centerlines': {'Logic/Centerlines', 'Logic/Shared'} | BELOW_IO,
+    'Logic/Inputs': LOGIC_BASE,
+    'Logic/TreeReformation': LOGIC_BASE | {'Logic/TreeReformation', 'OpenCL'},
+    'Logic/VesselPath': LOGIC_BASE | {'Logic/VesselPath'},
+    'Widgets/Common': {'Widgets/Common'} | LOGIC,
+    'Widgets/Tree': {'Widgets/Tree', 'Widgets/Common'} | LOGIC,
+    'Widgets/VesselPath': {'Widgets/VesselPath', 'Widgets/Common'} | LOGIC,
+    'Applications/VesselReformationViewer': {'Applications/VesselReformationViewer'} | WIDGETS | LOGIC,
 }
+LAYERED = ('Logic', 'OpenCL', 'Widgets', 'Applications')
 SCANNED = ('Logic', 'OpenCL', 'Module', 'Widgets', 'Applications', 'Testing')
 
 
@@ -53,6 +89,11 @@ def unit_of(path):
 def layer_of(relative):
     folder = os.path.dirname(relative)
     return folder if folder in ALLOWED else None
+
+
+def unknown_room(relative):
+    """True for a source in a layered folder that no rule names."""
+    return relative.startswith(tuple(top + '/' for top in LAYERED)) and layer_of(relative) is None
 
 
 def scan(root):
@@ -72,6 +113,10 @@ def check(root):
     problems = []
     graph = {}
     witness = {}
+    for relative in sorted(files):
+        if unknown_room(relative):
+            problems.append(f'{relative}: the folder {os.path.dirname(relative)} has no layering rule '
+                            '(Testing/Layout/check_include_graph.py) and no paragraph in docs/layout.md')
     for relative, includes in sorted(files.items()):
         unit = unit_of(relative)
         graph.setdefault(unit, set())
@@ -140,8 +185,8 @@ def self_test():
         def write(relative, text):
             write_file(root, relative, text)
         # The ITK idiom alone (a .h and its .hxx) is no cycle.
-        write('Logic/Filters/itkA.h', '#include "itkA.hxx"\n')
-        write('Logic/Filters/itkA.hxx', '#include "itkA.h"\n')
+        write('Logic/Filters/Depth/itkA.h', '#include "itkA.hxx"\n')
+        write('Logic/Filters/Depth/itkA.hxx', '#include "itkA.h"\n')
         problems, _ = check(root)
         assert not problems, problems
         # A format reader and the IO front end including each other's headers is one.
@@ -151,18 +196,35 @@ def self_test():
         problems, _ = check(root)
         assert any('include cycle between vrReaderFormats, vrReaderIO' in p for p in problems), problems
         # A filter that includes the logic breaks the layering.
-        write('Logic/vrLogic.h', '')
-        write('Logic/Filters/itkB.cxx', '#include "vrLogic.h"\n')
+        write('Logic/TreeReformation/vrLogic.h', '')
+        write('Logic/Filters/Depth/itkB.cxx', '#include "vrLogic.h"\n')
         problems, _ = check(root)
-        assert any('Logic/Filters/itkB.cxx includes Logic/vrLogic.h' in p for p in problems), problems
+        assert any('Logic/Filters/Depth/itkB.cxx includes Logic/TreeReformation/vrLogic.h' in p
+                   for p in problems), problems
+        # A concern of the filters that includes one it does not build on: the depth filter and the relaxation.
+        write('Logic/Filters/Relax/itkRelax.h', '')
+        write('Logic/Filters/Depth/itkC.cxx', '#include "itkRelax.h"\n')
+        problems, _ = check(root)
+        assert any('Logic/Filters/Depth/itkC.cxx includes Logic/Filters/Relax/itkRelax.h' in p
+                   for p in problems), problems
+        # One feature's logic including the other's: the one-vessel reading stands without the tree's logic.
+        write('Logic/VesselPath/vrPath.cxx', '#include "vrLogic.h"\n')
+        problems, _ = check(root)
+        assert any('Logic/VesselPath/vrPath.cxx includes Logic/TreeReformation/vrLogic.h' in p
+                   for p in problems), problems
+        # A source in a folder no rule names.
+        write('Logic/Misc/vrLoose.cxx', '')
+        problems, _ = check(root)
+        assert any('Logic/Misc/vrLoose.cxx: the folder Logic/Misc has no layering rule' in p
+                   for p in problems), problems
         # A module widget that includes the viewer's window: the widgets must stand without the application.
         write('Applications/VesselReformationViewer/vrWindow.h', '#include "vrPanel.h"\n')
-        write('Widgets/vrPanel.h', '')
-        write('Widgets/vrPanel.cxx', '#include "vrWindow.h"\n')
+        write('Widgets/Tree/vrPanel.h', '')
+        write('Widgets/Tree/vrPanel.cxx', '#include "vrWindow.h"\n')
         problems, _ = check(root)
-        assert any('Widgets/vrPanel.cxx includes Applications/VesselReformationViewer/vrWindow.h' in p
+        assert any('Widgets/Tree/vrPanel.cxx includes Applications/VesselReformationViewer/vrWindow.h' in p
                    for p in problems), problems
-    print('self-test: a made-up include cycle and two made-up layering violations were found')
+    print('self-test: a made-up include cycle, four made-up layering violations and an unknown folder were found')
     return 0
 
 
