@@ -42,18 +42,11 @@ struct CenterlinePolyDataOptions
  * \param sourceName names the input in error messages (a file name, a node name).
  * \param report    receives what was found; may be null.
  *
- * Without branch arrays, VMTK writes one polyline per source-to-target path, overlapping along shared trunks.
- * Each point of a polyline that lies within the tolerance of a point of an earlier polyline is dropped as a
- * repeat; each remaining run of new points becomes a branch, starting (ending) at the shared point where it
- * leaves (rejoins) the earlier paths, and an earlier branch is split where a later one leaves it. So two paths
- * sharing a trunk give three branches: the trunk, and each path's own part from the bifurcation. Polylines that
- * only touch at their ends stay separate branches.
- *
- * With the vmtkbranchextractor cell arrays GroupIds, Blanking, CenterlineIds and TractIds, each non-blanked
- * group becomes one branch: its tracts (one per path through it) are resampled to a common count by arc length
- * and averaged with weights radius^2, as vmtkcenterlinemerge does. A blanked tract (the bifurcation region) is
- * given to the tract that follows it on its path, so each child branch runs from the end of its parent through
- * the bifurcation instead of leaving a gap; a blanked tract that ends its path is dropped.
+ * This function only converts: it reads the polylines, radii and cell arrays, and leaves the topology to the tree's
+ * side (itkCenterlinePolylineMerge.h). Without branch arrays, VMTK's overlapping source-to-target paths are merged
+ * (itk::MergeOverlappingPaths: two paths sharing a trunk give three branches); with the vmtkbranchextractor cell
+ * arrays GroupIds, Blanking, CenterlineIds and TractIds, each non-blanked group becomes one branch
+ * (itk::MergeBranchGroups, as vmtkcenterlinemerge does).
  *
  * Branch ids are 1, 2, ... in order of appearance, or the cell array "BranchIds" when each polyline became
  * exactly one branch (what WriteCenterlines writes). Branch names come from a string cell array ("BranchNames", as

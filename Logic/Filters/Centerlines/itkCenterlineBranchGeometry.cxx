@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkCenterlineBranchGeometry.h"
 
+#include "itkCenterlinePolylineMerge.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -110,28 +112,11 @@ ResamplePolyline(const std::vector<Vector3> & points, double spacing)
   {
     return points;
   }
-  const std::vector<double> arc = ArcLengths(points);
-  const double              length = arc.back();
-  const std::size_t         steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(length / spacing)));
-  std::vector<Vector3>      resampled;
-  resampled.reserve(steps + 1);
-  std::size_t segment = 0;
-  for (std::size_t k = 0; k <= steps; ++k)
-  {
-    const double s = k == steps ? length : length * static_cast<double>(k) / static_cast<double>(steps);
-    while (segment + 2 < points.size() && arc[segment + 1] < s)
-    {
-      ++segment;
-    }
-    const double span = arc[segment + 1] - arc[segment];
-    const double t = span > 0.0 ? std::min(1.0, std::max(0.0, (s - arc[segment]) / span)) : 0.0;
-    Vector3      point;
-    for (unsigned int axis = 0; axis < 3; ++axis)
-    {
-      point[axis] = points[segment][axis] + t * (points[segment + 1][axis] - points[segment][axis]);
-    }
-    resampled.push_back(point);
-  }
+  const double         length = ArcLengths(points).back();
+  const std::size_t    steps = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(length / spacing)));
+  std::vector<Vector3> resampled;
+  std::vector<double>  noRadii;
+  ResamplePolylineEvenly(points, {}, steps + 1, resampled, noRadii);
   return resampled;
 }
 

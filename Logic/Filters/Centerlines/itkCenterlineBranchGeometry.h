@@ -36,7 +36,8 @@ struct BranchGeometryParameters
 std::vector<std::array<double, 3>>
 SmoothPolyline(const std::vector<std::array<double, 3>> & points, double sigma);
 
-/** Points at equal arc-length steps of about \a spacing (mm) along a polyline, its two ends included. */
+/** Points at equal arc-length steps of about \a spacing (mm) along a polyline, its two ends included (the count
+ * chosen from \a spacing, the points placed by itk::ResamplePolylineEvenly). */
 std::vector<std::array<double, 3>>
 ResamplePolyline(const std::vector<std::array<double, 3>> & points, double spacing);
 
