@@ -32,35 +32,6 @@ Difference(const StageCounts & after, const StageCounts & before)
   return counts;
 }
 
-/** Whether \a a and \a b ask for the same view up to the angle (then they resolve to the same centre, size and
- * spacing on the same inputs). */
-bool
-SameViewUpToAngle(const ReformationParameters & a, const ReformationParameters & b)
-{
-  itk::CPRViewSpecification first = a.ToViewSpecification();
-  first.AngleInDegrees = b.AngleInDegrees;
-  return first == b.ToViewSpecification();
-}
-
-double
-Median(std::vector<double> values)
-{
-  if (values.empty())
-  {
-    return -1.0;
-  }
-  std::sort(values.begin(), values.end());
-  const std::size_t middle = values.size() / 2;
-  return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
-}
-
-std::size_t
-FactorIndex(unsigned int factor)
-{
-  const auto found = std::find(PreviewFactors.begin(), PreviewFactors.end(), factor);
-  return found == PreviewFactors.end() ? 0 : static_cast<std::size_t>(found - PreviewFactors.begin());
-}
-
 /** Registers the result types for queued signals once. */
 void
 RegisterMetaTypes()
@@ -168,7 +139,7 @@ ReformationController::Request(const ReformationParameters & parameters, Request
       }
     }
     else if (m_Running && !m_RunningLoad && m_RunningFactor == 1 &&
-             (m_RunningKind == RequestKind::Final || m_RunningRefinement) && ChooseFactorLocked() > 1)
+             (m_RunningKind == RequestKind::Final || m_RunningRefinement) && m_Preview.ChooseFactor() > 1)
     {
       // A new step of an interaction aborts a full-resolution update while previews are in use: its preview comes
       // sooner, and the full image follows when the interaction pauses or ends.
@@ -195,7 +166,7 @@ ReformationController::Refine()
 {
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
-    if (m_NextId - 1 != m_LastInteractiveId || ChooseFactorLocked() <= 1)
+    if (m_NextId - 1 != m_LastInteractiveId || m_Preview.ChooseFactor() <= 1)
     {
       return; // a newer request came, or the step was at full resolution already
     }
@@ -215,47 +186,21 @@ void
 ReformationController::SetPreviewFactor(unsigned int factor)
 {
   std::lock_guard<std::mutex> lock(m_Mutex);
-  m_ForcedFactor = factor == 0 ? 0 : PreviewFactors[FactorIndex(factor)];
+  m_Preview.SetForcedFactor(factor);
 }
 
 void
 ReformationController::SetFrameBudget(double seconds)
 {
   std::lock_guard<std::mutex> lock(m_Mutex);
-  m_FrameBudget = std::max(0.0, seconds);
+  m_Preview.SetFrameBudget(seconds);
 }
 
 unsigned int
 ReformationController::GetCurrentPreviewFactor() const
 {
   std::lock_guard<std::mutex> lock(m_Mutex);
-  return ChooseFactorLocked();
-}
-
-unsigned int
-ReformationController::ChooseFactorLocked() const
-{
-  if (m_ForcedFactor != 0)
-  {
-    return m_ForcedFactor;
-  }
-  std::array<double, PreviewFactors.size()> seconds{};
-  for (std::size_t index = 0; index < seconds.size(); ++index)
-  {
-    seconds[index] = Median(m_Times[index]);
-  }
-  return ChoosePreviewFactor(seconds, m_FrameBudget);
-}
-
-void
-ReformationController::RecordTimeLocked(unsigned int factor, double seconds)
-{
-  auto & times = m_Times[FactorIndex(factor)];
-  times.push_back(seconds);
-  if (times.size() > RecentTimes)
-  {
-    times.erase(times.begin());
-  }
+  return m_Preview.ChooseFactor();
 }
 
 std::shared_ptr<const ReformationInputs>
@@ -311,7 +256,7 @@ ReformationController::ImageShown(std::uint64_t requestId)
     {
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - m_AwaitingDisplay->Start).count();
-      RecordTimeLocked(m_AwaitingDisplay->Factor, seconds);
+      m_Preview.RecordTime(m_AwaitingDisplay->Factor, seconds);
       m_AwaitingDisplay.reset();
     }
   }
@@ -412,13 +357,9 @@ ReformationController::RunLoad(Load & load)
     auto inputs = std::make_shared<const ReformationInputs>(std::move(loaded));
     m_WorkerInputs = inputs;
     // New data: its view and its update times are still to be measured.
-    m_FullView.reset();
     {
       std::lock_guard<std::mutex> lock(m_Mutex);
-      for (auto & times : m_Times)
-      {
-        times.clear();
-      }
+      m_Preview.Forget();
     }
     SetLogicInputs(*inputs);
     Post(
@@ -501,18 +442,10 @@ ReformationController::RunJob(const Job & job)
   ReformationParameters parameters = job.Parameters;
   if (job.Kind == RequestKind::Interactive && !job.Refinement)
   {
-    {
-      std::lock_guard<std::mutex> lock(m_Mutex);
-      factor = ChooseFactorLocked();
-    }
-    if (factor > 1 && m_FullView && SameViewUpToAngle(job.Parameters, m_FullViewParameters))
-    {
-      parameters = PreviewParameters(job.Parameters, *m_FullView, factor);
-    }
-    else
-    {
-      factor = 1;
-    }
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    const PreviewPolicy::Step   step = m_Preview.PlanStep(job.Parameters);
+    parameters = step.Parameters;
+    factor = step.Factor;
   }
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
@@ -593,17 +526,17 @@ ReformationController::Update(const Job &                   job,
     result->Kind = job.Kind;
     result->Parameters = parameters;
     result->PreviewFactor = factor;
-    if (factor == 1)
     {
-      result->FullView = outputs.View;
-      m_FullView = outputs.View;
-      m_FullViewParameters = parameters;
-    }
-    else
-    {
-      const auto & full = *m_FullView;
-      result->FullView = itk::CPRViewGeometry(
-        full.GetUp(), outputs.View.GetAngleInDegrees(), full.GetCenter(), full.GetSize(), full.GetSpacing());
+      std::lock_guard<std::mutex> lock(m_Mutex);
+      if (factor == 1)
+      {
+        result->FullView = outputs.View;
+        m_Preview.RememberFullView(parameters, outputs.View);
+      }
+      else
+      {
+        result->FullView = m_Preview.FullViewOf(outputs.View);
+      }
     }
     result->Outputs = outputs;
     result->Inputs = m_WorkerInputs;
@@ -634,7 +567,7 @@ ReformationController::Update(const Job &                   job,
         }
         else
         {
-          RecordTimeLocked(factor, result->UpdateSeconds + result->PreviewSeconds);
+          m_Preview.RecordTime(factor, result->UpdateSeconds + result->PreviewSeconds);
         }
       }
     }

@@ -2,6 +2,7 @@
 #ifndef vrReformationController_h
 #define vrReformationController_h
 
+#include "vrPreviewPolicy.h"
 #include "vrProgressiveRefinement.h"
 #include "vrReformationInputs.h"
 #include "vrReformationParameters.h"
@@ -209,8 +210,6 @@ public:
   /** The pause after the latest Interactive step that starts the full-resolution update (when the step was a
    * preview). */
   static constexpr int RefinementDelayMilliseconds = 150;
-  /** How many recent update times per factor the choice looks at (their median). */
-  static constexpr std::size_t RecentTimes = 5;
 
 signals:
   void
@@ -268,13 +267,6 @@ private:
    * off; returns the result, or null when cancelled or failed. */
   std::shared_ptr<ReformationResult>
   Update(const Job & job, const ReformationParameters & parameters, unsigned int factor, bool surface);
-  /** The factor for an Interactive step now (the forced one, or the adaptive choice). Under m_Mutex. */
-  unsigned int
-  ChooseFactorLocked() const;
-  /** Keeps the time of an update at \a factor whose view changed (until its image was on screen where the view
-   * reports that, ImageShown()). Under m_Mutex. */
-  void
-  RecordTimeLocked(unsigned int factor, double seconds);
   /** The pause after an Interactive step ended: the full-resolution update when the step was a preview. GUI thread. */
   void
   Refine();
@@ -289,12 +281,8 @@ private:
   // Worker-only state.
   VesselReformationLogic                   m_Logic;
   std::shared_ptr<const ReformationInputs> m_WorkerInputs;
-  /** The latest full-resolution view and the parameters it came from: a preview of the same view (up to the angle)
-   * keeps its centre, size and spacing. */
-  std::optional<itk::CPRViewGeometry>   m_FullView;
-  ReformationParameters                 m_FullViewParameters;
-  std::chrono::steady_clock::time_point m_LastProgressTime;
-  bool                                  m_ProgressStarted{ false };
+  std::chrono::steady_clock::time_point    m_LastProgressTime;
+  bool                                     m_ProgressStarted{ false };
 
   // Shared state, under m_Mutex.
   mutable std::mutex      m_Mutex;
@@ -308,10 +296,10 @@ private:
   /** The running update's factor (1: full resolution). */
   unsigned int m_RunningFactor{ 1 };
   bool         m_RunningRefinement{ false };
-  unsigned int m_ForcedFactor{ 0 };
-  double       m_FrameBudget{ 0.05 };
-  /** Recent update times at each of vr::PreviewFactors, newest last. */
-  std::array<std::vector<double>, PreviewFactors.size()> m_Times;
+  /** The preview factor of each step and its parameters (docs/progressive-refinement.md); the times it chooses from
+   * are those of updates whose view changed, until their image was on screen where the view reports that
+   * (ImageShown()). */
+  PreviewPolicy m_Preview;
   /** An angle step whose time runs until ImageShown() reports its image on screen. */
   struct DisplayTiming
   {
