@@ -1,15 +1,16 @@
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-# The module description: the one source of truth for both command-line modules' XML
-# (Module/<name>/<name>.xml.in, beside each module's code) and for vrModuleDescription.h, which
-# platforms and widgets include.
+# The module description: the one source of truth for the four command-line modules' XML (Vessel Reformation,
+# Bilateral Depth Relax, Extract Centerlines, Vessel Path Reformation: Module/<name>/<name>.xml.in, beside each
+# module's code) and for vrModuleDescription.h, which platforms and widgets include.
 # Plain text only: the values are pasted into XML, so no <, > or &.
 
 set(VR_MODULE_TITLE "Vessel Reformation")
 set(VR_MODULE_CATEGORY "Vascular")
 set(VR_MODULE_VERSION "${PROJECT_VERSION}")
-# No public documentation page or licence file exists yet; fill these in when they do.
+# No public documentation page exists: the README and docs/ travel with the source.
 set(VR_MODULE_DOCUMENTATION_URL "")
-set(VR_MODULE_LICENSE "See the licence of the VesselReformation source distribution.")
+# The licence of the source distribution (its LICENSE file), as ITK's and 3D Slicer's.
+set(VR_MODULE_LICENSE "Apache License 2.0")
 set(VR_MODULE_CONTRIBUTORS "The VesselReformation developers")
 set(VR_MODULE_HELP [=[Multipath curved planar reformation (mpCPR) of a whole vessel tree in one rotatable image, with the bilateral depth filter that removes the seams and scan-line flicker of the depth map while keeping meaningful depth jumps and cutting every vessel exactly along its centerline. Inputs: a CT or MR angiography volume and its centerlines (VMTK .vtp/.vtk, 3D Slicer .mrk.json curves, TubeTK .tre or CSV). Outputs: the filtered and unfiltered CPR images, the depth map before and after relaxation, the fixed mask, the owner labels, the cut surface as a model, and a windowed PNG.]=])
 set(VR_MODULE_ACKNOWLEDGEMENTS [=[Implements the method of Jan Kretschmer, Bernhard Preim and Marc Stamminger, "Bilateral Depth Filtering for Enhanced Vessel Reformation", Eurographics Conference on Visualization (EuroVis) 2014, short paper. Built on ITK and VTK; shaped after the 3D Slicer execution model.]=])
