@@ -19,14 +19,6 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
-/** The logic's parameters by meaning -> this module's XML parameters. */
-const vr::CLIParameterMap ParameterFlags = {
-  { vr::ParameterName::Relaxation, "relaxation" },       { vr::ParameterName::Anisotropy, "anisotropy" },
-  { vr::ParameterName::JumpThreshold, "jumpThreshold" }, { vr::ParameterName::Solver, "solver" },
-  { vr::ParameterName::Iterations, "iterations" },       { vr::ParameterName::Backend, "backend" },
-  { vr::ParameterName::OpenCLDevice, "openclDevice" },
-};
-
 void
 RunBilateralDepthRelax(const vr::CLIArguments & arguments, vr::CLIProgress & progress)
 {
@@ -104,6 +96,5 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "BilateralDepthRelax",
                           "Bilateral relaxation of a CPR depth map",
-                          RunBilateralDepthRelax,
-                          ParameterFlags);
+                          RunBilateralDepthRelax);
 }

@@ -65,6 +65,13 @@ public:
   std::string
   Spelling(const std::string & name) const;
 
+  /** \return the module's description the arguments were parsed against. */
+  const CLIModuleDescription &
+  Description() const
+  {
+    return *m_Description;
+  }
+
   /** \param description the module's description.
    * \param program the module's name.
    * \return the usage text: every flag with its type, default and description, the values the module returns, then

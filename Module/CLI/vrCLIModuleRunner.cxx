@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrCLIModuleRunner.h"
 
+#include "vrParameterTable.h"
+
 #include "vrAtomicOutput.h"
 #include "vrInputError.h"
 
@@ -55,22 +57,25 @@ WriteReturnParameterFile(AtomicOutput & output, const std::string & text)
 } // namespace
 
 std::string
-SpellingOfParameter(const CLIModuleDescription & description,
-                    const CLIParameterMap &      parameters,
-                    const std::string &          meaning)
+SpellingOfParameter(const CLIModuleDescription & description, const std::string & meaning)
 {
-  const auto entry = parameters.find(meaning);
-  return entry == parameters.end() ? std::string() : description.Find(entry->second).Spelling();
+  for (const std::string & flag : FlagsOfMeaning(meaning))
+  {
+    if (const CLIParameter * parameter = description.FindFlag(flag))
+    {
+      return parameter->Spelling();
+    }
+  }
+  return std::string();
 }
 
 int
-RunCLIModule(int                     argc,
-             char *                  argv[],
-             const char *            xml,
-             const std::string &     name,
-             const std::string &     comment,
-             const CLIModuleBody &   body,
-             const CLIParameterMap & parameters)
+RunCLIModule(int                   argc,
+             char *                argv[],
+             const char *          xml,
+             const std::string &   name,
+             const std::string &   comment,
+             const CLIModuleBody & body)
 {
   int                  status = 1;
   CLIModuleDescription description;
@@ -119,7 +124,7 @@ RunCLIModule(int                     argc,
   }
   catch (const InputError & error)
   {
-    const std::string flag = SpellingOfParameter(description, parameters, error.Parameter());
+    const std::string flag = SpellingOfParameter(description, error.Parameter());
     std::cerr << name << ": error: " << (flag.empty() ? "" : flag + ": ") << error.what() << std::endl;
   }
   catch (const Cancelled & cancelled)

@@ -14,18 +14,12 @@ namespace vr
 /** The work of a command-line module: reads its arguments, runs, writes its outputs; throws on failure. */
 using CLIModuleBody = std::function<void(const CLIArguments & arguments, CLIProgress & progress)>;
 
-/** Which parameter of a module's XML sets each parameter the logic names by meaning (vr::ParameterName ->
- * XML parameter name): the one place where the logic's words meet the command line's flags. */
-using CLIParameterMap = std::map<std::string, std::string>;
-
 /** \param description the module's description.
- * \param parameters the module's map.
  * \param meaning a parameter by its meaning (vr::ParameterName), or "".
- * \return how the command line spells it ("--anisotropy"), or "" when the module has no such parameter. */
+ * \return how the command line spells it ("--anisotropy"): the flag the parameter table (vrParameterTable.h) gives
+ * that meaning among the flags the module declares; "" when the module has no such parameter. */
 std::string
-SpellingOfParameter(const CLIModuleDescription & description,
-                    const CLIParameterMap &      parameters,
-                    const std::string &          meaning);
+SpellingOfParameter(const CLIModuleDescription & description, const std::string & meaning);
 
 /** The exit status of a run that 3D Slicer cancelled through the process-information structure: 0. Slicer's CLI logic
  * (vtkSlicerCLIModuleLogic) marks an in-process run "Cancelled" only when ModuleEntryPoint returns 0 (or throws an
@@ -45,7 +39,7 @@ constexpr int ExitCodeCancelled = 0;
  *
  * Every failure (vr::InputError from bad input, and anything unexpected) is caught and printed on stderr as
  * "<name>: error: <message>"; nothing escapes, so a host process loading the library survives. An InputError about
- * a parameter (InputError::Parameter()) is prefixed with that parameter's flag, through \a parameters. A run stopped
+ * a parameter (InputError::Parameter()) is prefixed with that parameter's flag (SpellingOfParameter). A run stopped
  * through the process-information structure (vr::Cancelled) prints "<name>: <stage>: cancelled" and returns
  * ExitCodeCancelled; the body writes no output then (its staged outputs are never committed), nor does the runner
  * write the return-parameter file.
@@ -55,16 +49,14 @@ constexpr int ExitCodeCancelled = 0;
  * \param name the module's name, for messages and filter-name.
  * \param comment what it does, for filter-comment.
  * \param body the module's work.
- * \param parameters the module's map from parameter meanings to its XML parameters.
  * \return 0 on success, ExitCodeCancelled (0) when cancelled, 1 on any error. */
 int
-RunCLIModule(int                     argc,
-             char *                  argv[],
-             const char *            xml,
-             const std::string &     name,
-             const std::string &     comment,
-             const CLIModuleBody &   body,
-             const CLIParameterMap & parameters = CLIParameterMap());
+RunCLIModule(int                   argc,
+             char *                argv[],
+             const char *          xml,
+             const std::string &   name,
+             const std::string &   comment,
+             const CLIModuleBody & body);
 } // namespace vr
 
 #endif

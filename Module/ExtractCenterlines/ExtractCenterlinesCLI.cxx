@@ -20,13 +20,6 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
-/** The logic's parameters by meaning -> this module's XML parameters. */
-const vr::CLIParameterMap ParameterFlags = {
-  { vr::ParameterName::VesselLabels, "labels" },
-  { vr::ParameterName::RootPoint, "root" },
-  { vr::ParameterName::MinimumBranchLength, "minimumBranchLength" },
-};
-
 /** "1,2,3" -> {1, 2, 3}; the parser has checked the numbers. */
 std::vector<double>
 NumbersOf(const std::string & text)
@@ -142,6 +135,5 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "ExtractCenterlines",
                           "Centerline tree with radii from a vessel segmentation",
-                          RunExtractCenterlines,
-                          ParameterFlags);
+                          RunExtractCenterlines);
 }

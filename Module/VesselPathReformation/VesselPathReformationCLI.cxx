@@ -26,24 +26,6 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
-/** The logic's parameters by meaning -> this module's XML parameters. */
-const vr::CLIParameterMap ParameterFlags = {
-  { vr::ParameterName::Branch, "branch" },
-  { vr::ParameterName::PathRange, "pathRange" },
-  { vr::ParameterName::Roll, "roll" },
-  { vr::ParameterName::Width, "width" },
-  { vr::ParameterName::PixelSpacing, "spacing" },
-  { vr::ParameterName::SectionSpacing, "sectionSpacing" },
-  { vr::ParameterName::UpAxis, "up" },
-  { vr::ParameterName::Angle, "angle" },
-  { vr::ParameterName::Interpolation, "interpolation" },
-  { vr::ParameterName::SlabThickness, "slabThickness" },
-  { vr::ParameterName::SlabMode, "slabMode" },
-  { vr::ParameterName::ReferencePoints, "referencePoints" },
-  { vr::ParameterName::ReferenceMethod, "referenceMethod" },
-  { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
-};
-
 /** This module's output parameters and the outputs they name. */
 const std::pair<const char *, vr::VesselPathOutput> OutputFlags[] = {
   { "outputCPR", vr::VesselPathOutput::CPR },
@@ -282,6 +264,5 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "VesselPathReformation",
                           "One vessel of the tree: straightened CPR, cross-sections and lumen",
-                          RunVesselPathReformation,
-                          ParameterFlags);
+                          RunVesselPathReformation);
 }

@@ -29,29 +29,6 @@ extern "C" VR_MODULE_EXPORT char XMLModuleDescription[];
 
 namespace
 {
-/** The logic's parameters by meaning -> this module's XML parameters. */
-const vr::CLIParameterMap ParameterFlags = {
-  { vr::ParameterName::UpAxis, "up" },
-  { vr::ParameterName::Angle, "angle" },
-  { vr::ParameterName::ViewSize, "size" },
-  { vr::ParameterName::PixelSpacing, "spacing" },
-  { vr::ParameterName::DepthMode, "mode" },
-  { vr::ParameterName::FixLumen, "fixLumen" },
-  { vr::ParameterName::Relaxation, "relaxation" },
-  { vr::ParameterName::Anisotropy, "anisotropy" },
-  { vr::ParameterName::JumpThreshold, "jumpThreshold" },
-  { vr::ParameterName::Solver, "solver" },
-  { vr::ParameterName::Iterations, "iterations" },
-  { vr::ParameterName::Backend, "backend" },
-  { vr::ParameterName::OpenCLDevice, "openclDevice" },
-  { vr::ParameterName::Interpolation, "interpolation" },
-  { vr::ParameterName::SlabThickness, "slabThickness" },
-  { vr::ParameterName::SlabMode, "slabMode" },
-  { vr::ParameterName::Window, "window" },
-  { vr::ParameterName::Level, "level" },
-  { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
-};
-
 /** This module's output parameters and the outputs they name. */
 const std::pair<const char *, vr::ReformationOutput> OutputFlags[] = {
   { "outputCPR", vr::ReformationOutput::CPR },
@@ -198,8 +175,8 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   logic.SetWarningCallback(
     [&progress, &arguments](const std::string & message, const std::string & parameter)
     {
-      const auto        entry = ParameterFlags.find(parameter);
-      const std::string hint = entry == ParameterFlags.end() ? "" : " (" + arguments.Spelling(entry->second) + ")";
+      const std::string flag = vr::SpellingOfParameter(arguments.Description(), parameter);
+      const std::string hint = flag.empty() ? "" : " (" + flag + ")";
       progress.Print(std::cerr, "warning: " + message + hint);
     });
   logic.SetProgressCallback(
@@ -277,6 +254,5 @@ ModuleEntryPoint(int argc, char * argv[])
                           XMLModuleDescription,
                           "VesselReformation",
                           "Multipath curved planar reformation with bilateral depth filtering",
-                          RunVesselReformation,
-                          ParameterFlags);
+                          RunVesselReformation);
 }

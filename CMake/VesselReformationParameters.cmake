@@ -1,0 +1,132 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+# The one parameter table (Resources/Parameters/vrParameters.json, docs/parameters.md): each parameter of the logic
+# once, with its flag, meaning, unit, type, label, description, default, range and values. From it the build makes
+#   - the modules' XML: each module's template (Module/<name>/<name>.xml.in) names a parameter as @VR_PARAMETER_<key>@
+#     and gets its element, exactly as CTK's schema orders it;
+#   - the C++ table (vrParameterTable.cxx of VesselReformation::Common), from which the command-line parsers' messages,
+#     the viewer's options, the module panel's controls and the logic's defaults are made.
+# Needs CMake's string(JSON), 3.19 or newer.
+
+# vr_xml_escape(<variable>): &, < and > of the variable's text as XML entities.
+function(vr_xml_escape variable)
+  set(text "${${variable}}")
+  string(REPLACE "&" "&amp;" text "${text}")
+  string(REPLACE "<" "&lt;" text "${text}")
+  string(REPLACE ">" "&gt;" text "${text}")
+  set(${variable} "${text}" PARENT_SCOPE)
+endfunction()
+
+# vr_parameter_field(<out> <json> <index> <member>...): the member's text of entry <index>, empty when it is absent;
+# <out>_FOUND says whether it is there.
+function(vr_parameter_field out json index)
+  string(JSON value ERROR_VARIABLE error GET "${json}" parameters ${index} ${ARGN})
+  if(error)
+    set(${out} "" PARENT_SCOPE)
+    set(${out}_FOUND FALSE PARENT_SCOPE)
+  else()
+    set(${out} "${value}" PARENT_SCOPE)
+    set(${out}_FOUND TRUE PARENT_SCOPE)
+  endif()
+endfunction()
+
+# vr_read_parameter_table(<table.json> <table.cxx>): sets VR_PARAMETER_<key> (the XML element, indented as the
+# templates place it) and VR_PARAMETER_KEYS in the caller's scope, writes the C++ table to <table.cxx>, and reruns the
+# configuration when the table changes.
+function(vr_read_parameter_table table cxx)
+  file(READ ${table} json)
+  if(NOT CMAKE_SCRIPT_MODE_FILE) # a test runs this as a script on a changed copy
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${table})
+  endif()
+  string(JSON count LENGTH "${json}" parameters)
+  math(EXPR last "${count} - 1")
+  set(keys "")
+  set(entries "")
+  foreach(index RANGE ${last})
+    foreach(member key flag meaning unit type label description)
+      vr_parameter_field(${member} "${json}" ${index} ${member})
+      if(NOT ${member}_FOUND)
+        message(FATAL_ERROR "${table}: parameter ${index} has no \"${member}\"")
+      endif()
+    endforeach()
+    if(key IN_LIST keys)
+      message(FATAL_ERROR "${table}: the key \"${key}\" is given twice")
+    endif()
+    list(APPEND keys ${key})
+    vr_parameter_field(default "${json}" ${index} default)
+    foreach(bound minimum maximum step)
+      vr_parameter_field(${bound} "${json}" ${index} constraints ${bound})
+    endforeach()
+    set(elements "")
+    set(element_count 0)
+    string(JSON element_count ERROR_VARIABLE no_elements LENGTH "${json}" parameters ${index} elements)
+    if(no_elements)
+      set(element_count 0)
+    endif()
+    set(attributes "")
+    string(JSON attribute_count ERROR_VARIABLE no_attributes LENGTH "${json}" parameters ${index} attributes)
+    if(NOT no_attributes AND attribute_count GREATER 0)
+      math(EXPR attribute_last "${attribute_count} - 1")
+      foreach(a RANGE ${attribute_last})
+        string(JSON attribute_name MEMBER "${json}" parameters ${index} attributes ${a})
+        string(JSON attribute_value GET "${json}" parameters ${index} attributes ${attribute_name})
+        string(APPEND attributes " ${attribute_name}=\"${attribute_value}\"")
+      endforeach()
+    endif()
+
+    # The XML element, in the order CTK's schema fixes: name, longflag, description, label, default, constraints,
+    # elements.
+    set(xml_description "${description}")
+    vr_xml_escape(xml_description)
+    set(xml_label "${label}")
+    vr_xml_escape(xml_label)
+    set(xml "<${type}${attributes}>\n      <name>${flag}</name>\n      <longflag>${flag}</longflag>\n")
+    string(APPEND xml "      <description>${xml_description}</description>\n      <label>${xml_label}</label>")
+    if(default_FOUND)
+      set(xml_default "${default}")
+      vr_xml_escape(xml_default)
+      string(APPEND xml "\n      <default>${xml_default}</default>")
+    endif()
+    if(minimum_FOUND OR maximum_FOUND OR step_FOUND)
+      string(APPEND xml "\n      <constraints>")
+      foreach(bound minimum maximum step)
+        if(${bound}_FOUND)
+          string(APPEND xml "\n        <${bound}>${${bound}}</${bound}>")
+        endif()
+      endforeach()
+      string(APPEND xml "\n      </constraints>")
+    endif()
+    set(cxx_elements "")
+    if(element_count GREATER 0)
+      math(EXPR element_last "${element_count} - 1")
+      foreach(e RANGE ${element_last})
+        string(JSON element GET "${json}" parameters ${index} elements ${e})
+        string(APPEND xml "\n      <element>${element}</element>")
+        string(APPEND cxx_elements "\"${element}\", ")
+      endforeach()
+    endif()
+    string(APPEND xml "\n    </${type}>")
+    set(VR_PARAMETER_${key} "${xml}" PARENT_SCOPE)
+
+    # The C++ entry: raw strings, so the text arrives as written.
+    set(cxx_default "std::nullopt")
+    if(default_FOUND)
+      set(cxx_default "R\"vrp(${default})vrp\"")
+    endif()
+    set(cxx_bounds "")
+    foreach(bound minimum maximum step)
+      if(${bound}_FOUND)
+        string(APPEND cxx_bounds "${${bound}}, ")
+      else()
+        string(APPEND cxx_bounds "std::nullopt, ")
+      endif()
+    endforeach()
+    string(APPEND entries "    { R\"vrp(${key})vrp\", R\"vrp(${flag})vrp\", R\"vrp(${meaning})vrp\", R\"vrp(${unit})vrp\",\n"
+      "      R\"vrp(${type})vrp\", R\"vrp(${label})vrp\",\n      R\"vrp(${description})vrp\",\n"
+      "      ${cxx_default}, ${cxx_bounds}{ ${cxx_elements}} },\n")
+  endforeach()
+  set(VR_PARAMETER_KEYS "${keys}" PARENT_SCOPE)
+  file(RELATIVE_PATH table_relative ${PROJECT_SOURCE_DIR} ${table})
+  set(VR_PARAMETER_TABLE_SOURCE ${table_relative})
+  set(VR_PARAMETER_TABLE_ENTRIES "${entries}")
+  configure_file(${PROJECT_SOURCE_DIR}/Logic/Common/vrParameterTable.cxx.in ${cxx} @ONLY)
+endfunction()
