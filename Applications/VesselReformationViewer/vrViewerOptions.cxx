@@ -5,6 +5,7 @@
 #include "vrInputError.h"
 #include "vrModulePanel.h"
 #include "vrParameterName.h"
+#include "vrParameterTable.h"
 #include "vrReformationInputs.h"
 #include "vrRelaxBackend.h"
 #include "vrText.h"
@@ -29,38 +30,35 @@ ParseNumber(const std::string & text, const std::string & flag)
   return value;
 }
 
-long long
-ParseCount(const std::string & text, const std::string & flag)
+/** The reformation's parameters the viewer takes on its command line, by their keys in the parameter table. */
+const std::vector<std::string> ViewerParameterKeys = { "up",         "angle",         "size",       "spacing",
+                                                       "mode",       "interpolation", "relaxation", "jumpThreshold",
+                                                       "anisotropy", "solver",        "iterations", "backend",
+                                                       "fixLumen",   "window",        "level" };
+
+/** The viewer's flag for a parameter named by meaning (vr::ParameterName), from the parameter table; "" when the
+ * viewer has none. */
+std::string
+FlagOf(const std::string & meaning)
 {
-  long long value = 0;
-  if (!ParseWholeInteger(text, value))
+  for (const std::string & flag : FlagsOfMeaning(meaning))
   {
-    throw InputError(flag + " \"" + text + "\": expected a whole number");
+    for (const std::string & key : ViewerParameterKeys)
+    {
+      if (Parameter(key).Flag == flag)
+      {
+        return "--" + flag;
+      }
+    }
   }
-  return value;
+  return std::string();
 }
 
-/** The viewer's flag for a parameter named by meaning (vr::ParameterName). */
+/** The help of a parameter's option: the table's description and default. */
 std::string
-FlagOf(const std::string & parameter)
+HelpOf(const ParameterSpec & spec)
 {
-  static const std::map<std::string, std::string> flags = { { ParameterName::UpAxis, "--up" },
-                                                            { ParameterName::Angle, "--angle" },
-                                                            { ParameterName::ViewSize, "--size" },
-                                                            { ParameterName::PixelSpacing, "--spacing" },
-                                                            { ParameterName::DepthMode, "--mode" },
-                                                            { ParameterName::FixLumen, "--fixLumen" },
-                                                            { ParameterName::Relaxation, "--relaxation" },
-                                                            { ParameterName::Anisotropy, "--anisotropy" },
-                                                            { ParameterName::JumpThreshold, "--jumpThreshold" },
-                                                            { ParameterName::Solver, "--solver" },
-                                                            { ParameterName::Iterations, "--iterations" },
-                                                            { ParameterName::Backend, "--backend" },
-                                                            { ParameterName::Interpolation, "--interpolation" },
-                                                            { ParameterName::Window, "--window" },
-                                                            { ParameterName::Level, "--level" } };
-  const auto                                      found = flags.find(parameter);
-  return found != flags.end() ? found->second : std::string();
+  return spec.Description + (spec.Default && !spec.Default->empty() ? " (default " + *spec.Default + ")" : "");
 }
 } // namespace
 
@@ -71,12 +69,12 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
                 "bilateral depth filtering (Kretschmer, Preim, Stamminger, EuroVis 2014). Without files it opens a "
                 "built-in phantom." };
   app.set_version_flag("--version", "VesselReformationViewer");
-  std::vector<std::string> files;
-  std::string              phantom = options.Phantom;
-  std::string              phantomSpacing;
-  std::string              segmentation;
-  std::string angle, up, size, spacing, mode, interpolation, relaxation, anisotropy, jumpThreshold, solver, iterations,
-    backend, fixLumen, window, level, overlays, compare, windowSize;
+  std::vector<std::string>           files;
+  std::string                        phantom = options.Phantom;
+  std::string                        phantomSpacing;
+  std::string                        segmentation;
+  std::string                        overlays, compare, windowSize;
+  std::map<std::string, std::string> given; // the reformation's parameters given, by key
   app
     .add_option("files",
                 files,
@@ -93,30 +91,12 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
                 "built-in phantom when no files are given: runoff (aorta to the ankles) or thorax (the aortic arch)")
     ->capture_default_str();
   app.add_option("--phantomSpacing", phantomSpacing, "the phantom's voxel spacing, mm (default 1.5)");
-  app.add_option("--angle", angle, "view angle about the up axis, degrees (default 0)");
-  app.add_option("--up", up, "rotation axis: S, I, A, P, L, R, auto, or an LPS vector x,y,z (default S)");
-  app.add_option("--size", size, "CPR image size W,H in pixels (default: fit the tree)");
-  app.add_option("--spacing", spacing, "pixel spacing s or sx,sy in mm (default: the volume's smallest)");
-  app.add_option("--mode", mode, "depth mode: scanline or nearest (default scanline)");
-  app.add_option("--interpolation", interpolation, "linear, nearest or cubic (default linear)");
-  app.add_option("--relaxation", relaxation, "relaxation w in [0, 1] (default 1)");
-  app.add_option("--jumpThreshold",
-                 jumpThreshold,
-                 "range kernel by its jump threshold J in mm, R(x) = exp(-(x/J)^2): steps well below J are smoothed, "
-                 "steps of several J stay (default 3)");
-  app.add_option("--anisotropy",
-                 anisotropy,
-                 "range kernel as the paper gives it, R(x) = exp(-a x^2), a = 1/J^2 in mm^-2 (the paper: 0.5); "
-                 "instead of --jumpThreshold, not with it");
-  app.add_option("--solver",
-                 solver,
-                 "relax solver: jacobi (the paper's N passes) or steady (the fixed point, independent of N and the "
-                 "pixel count) (default jacobi)");
-  app.add_option("--iterations", iterations, "filter iterations N (default 500)");
-  app.add_option("--backend", backend, "relax backend: auto, cpu or opencl (default auto)");
-  app.add_option("--fixLumen", fixLumen, "fix the lumen: on or off (default on)");
-  app.add_option("--window", window, "display window width, in the volume's unit (HU for CT)");
-  app.add_option("--level", level, "display window level, in the volume's unit (HU for CT)");
+  // The reformation's parameters: flag, help and default from the parameter table.
+  for (const std::string & key : ViewerParameterKeys)
+  {
+    const ParameterSpec & spec = Parameter(key);
+    app.add_option("--" + spec.Flag, given[key], HelpOf(spec));
+  }
   app.add_option("--preset",
                  options.Preset,
                  "window/level preset: CTA, bone, soft-tissue, percentile (the volume's 1st to 99th percentile) or "
@@ -205,75 +185,34 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
       }
     }
     ReformationParameters & p = options.Parameters;
-    if (!angle.empty())
-    {
-      p.AngleInDegrees = ParseNumber(angle, "--angle");
-    }
-    if (!up.empty())
-    {
-      const UpAxisChoice choice = ParseUpAxis(up, "--up");
-      p.AutomaticUp = choice.Automatic;
-      p.Up = choice.Vector;
-    }
-    if (!size.empty())
-    {
-      p.ImageSize = ParseImageSize(size, "--size");
-    }
-    if (!spacing.empty())
-    {
-      p.PixelSpacing = ParsePixelSpacing(spacing, "--spacing");
-    }
-    if (!mode.empty())
-    {
-      p.Mode = ParseDepthMode(mode, "--mode");
-    }
-    if (!interpolation.empty())
-    {
-      p.Interpolation = ParseInterpolation(interpolation, "--interpolation");
-    }
-    if (!relaxation.empty())
-    {
-      p.Relaxation = ParseNumber(relaxation, "--relaxation");
-    }
-    if (!jumpThreshold.empty() && !anisotropy.empty())
+    const std::string &     window = given["window"];
+    const std::string &     level = given["level"];
+    if (!given["jumpThreshold"].empty() && !given["anisotropy"].empty())
     {
       throw InputError("both --jumpThreshold and --anisotropy give the range kernel (a = 1/J^2); give one of them");
     }
-    if (!jumpThreshold.empty())
+    if (window.empty() != level.empty())
     {
-      p.JumpThreshold = ParseNumber(jumpThreshold, "--jumpThreshold");
+      throw InputError(std::string(window.empty() ? "--level" : "--window") +
+                       " needs its partner: give --window and --level together");
+    }
+    for (const std::string & key : ViewerParameterKeys)
+    {
+      if (!given[key].empty())
+      {
+        SetReformationParameter(p, key, given[key], "--" + Parameter(key).Flag);
+      }
+    }
+    if (!given["jumpThreshold"].empty())
+    {
       p.Anisotropy.reset();
     }
-    if (!anisotropy.empty())
+    if (!given["anisotropy"].empty())
     {
-      p.Anisotropy = ParseNumber(anisotropy, "--anisotropy");
       p.JumpThreshold.reset();
     }
-    if (!solver.empty())
+    if (!window.empty())
     {
-      p.Solver = ParseRelaxSolver(solver, "--solver");
-    }
-    if (!iterations.empty())
-    {
-      p.Iterations = ParseCount(iterations, "--iterations");
-    }
-    if (!backend.empty())
-    {
-      p.Backend = ParseRelaxBackend(backend, "--backend");
-    }
-    if (!fixLumen.empty())
-    {
-      p.FixLumen = ParseOnOff(fixLumen, "--fixLumen");
-    }
-    if (!window.empty() || !level.empty())
-    {
-      if (window.empty() || level.empty())
-      {
-        throw InputError(std::string(window.empty() ? "--level" : "--window") +
-                         " needs its partner: give --window and --level together");
-      }
-      p.Window = ParseNumber(window, "--window");
-      p.Level = ParseNumber(level, "--level");
       if (!(p.Window > 0.0))
       {
         throw InputError("--window " + window + ": must be > 0");

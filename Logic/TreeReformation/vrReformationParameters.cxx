@@ -3,6 +3,8 @@
 
 #include "itkCPRVectorHelpers.h"
 #include "vrInputError.h"
+#include "vrRelaxBackend.h"
+#include "vrParameterTable.h"
 #include "vrText.h"
 
 #include <algorithm>
@@ -35,12 +37,42 @@ Join(const TValue & values, unsigned int count)
   }
   return stream.str();
 }
+double
+Number(const std::string & text, const std::string & spelling)
+{
+  double value = 0.0;
+  if (!ParseWholeDouble(text, value))
+  {
+    throw InputError(spelling + " \"" + text + "\": expected a number");
+  }
+  return value;
+}
+
+long long
+WholeNumber(const std::string & text, const std::string & spelling)
+{
+  long long value = 0;
+  if (!ParseWholeInteger(text, value))
+  {
+    throw InputError(spelling + " \"" + text + "\": expected a whole number");
+  }
+  return value;
+}
 } // namespace
 
 ReformationParameters::ReformationParameters()
   : Up(itk::detail::MakeVector3(0.0, 0.0, 1.0))
   , PixelSpacing(itk::detail::MakeVector2(0.0, 0.0))
 {
+  // The defaults every front end shows are the table's: a default changed there changes the logic's too.
+  for (const std::string & key : ReformationParameterKeys())
+  {
+    const ParameterSpec & spec = Parameter(key);
+    if (spec.Default)
+    {
+      SetReformationParameter(*this, key, *spec.Default, "the parameter table's default of " + spec.Flag);
+    }
+  }
 }
 
 void
@@ -379,5 +411,115 @@ const char *
 ToString(itk::BilateralDepthRelaxSolver solver)
 {
   return solver == itk::BilateralDepthRelaxSolver::Steady ? "steady" : "jacobi";
+}
+
+const std::vector<std::string> &
+ReformationParameterKeys()
+{
+  static const std::vector<std::string> keys = { "up",           "angle",         "size",          "spacing",
+                                                 "mode",         "fixLumen",      "relaxation",    "jumpThreshold",
+                                                 "anisotropy",   "iterations",    "solver",        "backend",
+                                                 "openclDevice", "interpolation", "slabThickness", "slabMode",
+                                                 "window",       "level" };
+  return keys;
+}
+
+void
+SetReformationParameter(ReformationParameters & p,
+                        const std::string &     key,
+                        const std::string &     text,
+                        const std::string &     spelling)
+{
+  const std::string value = Trim(text);
+  if (key == "up")
+  {
+    const UpAxisChoice choice = ParseUpAxis(value, spelling);
+    p.AutomaticUp = choice.Automatic;
+    p.Up = choice.Vector;
+  }
+  else if (key == "angle")
+  {
+    p.AngleInDegrees = Number(value, spelling);
+  }
+  else if (key == "size")
+  {
+    p.ImageSize = value.empty() ? itk::Size<2>{ { 0, 0 } } : ParseImageSize(value, spelling);
+  }
+  else if (key == "spacing")
+  {
+    p.PixelSpacing.Fill(0.0);
+    if (!value.empty())
+    {
+      p.PixelSpacing = ParsePixelSpacing(value, spelling);
+    }
+  }
+  else if (key == "mode")
+  {
+    p.Mode = ParseDepthMode(value, spelling);
+  }
+  else if (key == "fixLumen")
+  {
+    p.FixLumen = ParseOnOff(value, spelling);
+  }
+  else if (key == "relaxation")
+  {
+    p.Relaxation = Number(value, spelling);
+  }
+  else if (key == "jumpThreshold")
+  {
+    p.JumpThreshold.reset();
+    if (!value.empty())
+    {
+      p.JumpThreshold = Number(value, spelling);
+    }
+  }
+  else if (key == "anisotropy")
+  {
+    p.Anisotropy.reset();
+    if (!value.empty())
+    {
+      p.Anisotropy = Number(value, spelling);
+    }
+  }
+  else if (key == "iterations")
+  {
+    p.Iterations = WholeNumber(value, spelling);
+  }
+  else if (key == "solver")
+  {
+    p.Solver = ParseRelaxSolver(value, spelling);
+  }
+  else if (key == "backend")
+  {
+    p.Backend = ParseRelaxBackend(value, spelling);
+  }
+  else if (key == "openclDevice")
+  {
+    p.OpenCLDevice = value;
+  }
+  else if (key == "interpolation")
+  {
+    p.Interpolation = ParseInterpolation(value, spelling);
+  }
+  else if (key == "slabThickness")
+  {
+    p.SlabThickness = Number(value, spelling);
+  }
+  else if (key == "slabMode")
+  {
+    p.SlabMode = ParseSlabMode(value, spelling);
+  }
+  else if (key == "window")
+  {
+    p.Window = Number(value, spelling);
+  }
+  else if (key == "level")
+  {
+    p.Level = Number(value, spelling);
+  }
+  else
+  {
+    throw std::logic_error("SetReformationParameter: \"" + key + "\" is not a field of vr::ReformationParameters");
+  }
 }
 } // namespace vr

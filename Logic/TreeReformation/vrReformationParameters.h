@@ -9,8 +9,10 @@
 #include "vrParameterName.h"
 #include "vrRelaxBackend.h"
 
+#include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace vr
 {
@@ -31,7 +33,8 @@ struct ReformationParameters
   using VectorType = itk::Vector<double, 3>;
   using PointType = itk::Point<double, 3>;
 
-  /** Every parameter at its default (below). */
+  /** Every parameter at its default: the parameter table's (vrParameterTable.h) where it gives one, else the one
+   * below. */
   ReformationParameters();
 
   /** Take the volume axis along which the tree extends most as the rotation axis. */
@@ -112,8 +115,9 @@ struct ReformationParameters
  */
 struct UpAxisChoice
 {
-  bool                   Automatic{ false };
-  itk::Vector<double, 3> Vector{ ReformationParameters().Up };
+  bool Automatic{ false };
+  /** The axis; superior while Automatic (then unused). */
+  itk::Vector<double, 3> Vector{ std::array<double, 3>{ 0.0, 0.0, 1.0 }.data() };
 };
 
 /** Parsers for the text forms of the parameters (command line, presets).
@@ -144,6 +148,22 @@ ParseRelaxSolver(const std::string & text, const std::string & what);
 bool
 ParseOnOff(const std::string & text, const std::string & what);
 
+/** \return the keys of the parameter table (vrParameterTable.h) that are fields of vr::ReformationParameters, in
+ * table order: the whole-tree reformation's settings as every front end spells them. */
+const std::vector<std::string> &
+ReformationParameterKeys();
+
+/** Sets the field of \a parameters that the table's entry \a key describes from its text \a text, parsed as the
+ * command-line modules parse it (ParseUpAxis, ParseImageSize, ...; a number for the numbers).
+ * \param spelling how messages name it (a flag such as "--angle", or the parameter's meaning).
+ * Throws vr::InputError naming \a spelling and \a text when the text is no valid value, std::logic_error for a key
+ * that is not one of ReformationParameterKeys(). Only the form is checked; ReformationParameters::Validate() checks
+ * the ranges. An empty text clears what can be unset (size, spacing, jump threshold, anisotropy, OpenCL device). */
+void
+SetReformationParameter(ReformationParameters & parameters,
+                        const std::string &     key,
+                        const std::string &     text,
+                        const std::string &     spelling);
 /** \param mode a mode.
  * \return its text form: "scanline", "linear", "mip", ... */
 const char *

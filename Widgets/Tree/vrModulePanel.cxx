@@ -3,6 +3,7 @@
 
 #include "ui_vrModulePanel.h"
 #include "vrParameterName.h"
+#include "vrParameterTable.h"
 #include "vrRelaxBackend.h"
 
 #include <QFileInfo>
@@ -39,6 +40,48 @@ UpIndex(const ReformationParameters & parameters, int autoIndex)
   return -1;
 }
 
+/** The table's label as a control's caption. */
+void
+Caption(QLabel * caption, const ParameterSpec & spec)
+{
+  caption->setText(QString::fromStdString(spec.Label));
+}
+
+/** The table's values of a string-enumeration as a combo box's entries, its description as the tooltip. */
+void
+Describe(QComboBox * combo, const ParameterSpec & spec)
+{
+  if (!spec.Elements.empty())
+  {
+    combo->clear();
+    for (const std::string & element : spec.Elements)
+    {
+      combo->addItem(QString::fromStdString(element));
+    }
+  }
+  combo->setToolTip(QString::fromStdString(spec.Description));
+}
+
+/** The table's range and step (where it gives them) and description on a spin box. */
+template<typename TSpin>
+void
+Describe(TSpin * spin, const ParameterSpec & spec)
+{
+  if (spec.Minimum)
+  {
+    spin->setMinimum(*spec.Minimum);
+  }
+  if (spec.Maximum)
+  {
+    spin->setMaximum(*spec.Maximum);
+  }
+  if (spec.Step)
+  {
+    spin->setSingleStep(*spec.Step);
+  }
+  spin->setToolTip(QString::fromStdString(spec.Description));
+}
+
 void
 SelectText(QComboBox * combo, const char * text)
 {
@@ -66,6 +109,7 @@ ModulePanel::ModulePanel(QWidget * parent)
   , m_Ui(std::make_unique<Ui::ModulePanel>())
 {
   m_Ui->setupUi(this);
+  DescribeParameters();
   for (QLabel * label : { m_Ui->volumeLabel, m_Ui->centerlineLabel, m_Ui->segmentationLabel })
   {
     label->setSizePolicy(QSizePolicy::Ignored, label->sizePolicy().verticalPolicy());
@@ -79,6 +123,53 @@ ModulePanel::ModulePanel(QWidget * parent)
     m_Ui->phantomCombo->addItem(QString::fromStdString(name));
   }
   Connect();
+  // The table's defaults, as every other front end starts with them.
+  SetParameters(ReformationParameters());
+}
+
+void
+ModulePanel::DescribeParameters()
+{
+  Ui::ModulePanel & ui = *m_Ui;
+  const auto        caption = [](QLabel * label, const char * key) { Caption(label, Parameter(key)); };
+  caption(ui.angleCaption, "angle");
+  caption(ui.upCaption, "up");
+  caption(ui.modeCaption, "mode");
+  caption(ui.sizeCaption, "size");
+  caption(ui.spacingCaption, "spacing");
+  caption(ui.interpolationCaption, "interpolation");
+  caption(ui.relaxationCaption, "relaxation");
+  caption(ui.jumpThresholdCaption, "jumpThreshold");
+  caption(ui.anisotropyCaption, "anisotropy");
+  caption(ui.solverCaption, "solver");
+  caption(ui.iterationsCaption, "iterations");
+  caption(ui.backendCaption, "backend");
+  caption(ui.windowCaption, "window");
+  caption(ui.levelCaption, "level");
+  Describe(ui.modeCombo, Parameter("mode"));
+  Describe(ui.interpolationCombo, Parameter("interpolation"));
+  Describe(ui.solverCombo, Parameter("solver"));
+  Describe(ui.backendCombo, Parameter("backend"));
+  Describe(ui.relaxationSpin, Parameter("relaxation"));
+  Describe(ui.jumpThresholdSpin, Parameter("jumpThreshold"));
+  Describe(ui.anisotropySpin, Parameter("anisotropy"));
+  Describe(ui.iterationsSpin, Parameter("iterations"));
+  Describe(ui.windowSpin, Parameter("window"));
+  Describe(ui.levelSpin, Parameter("level"));
+  // The panel's own choices, with the table's words: the angle wraps at +-180 degrees and its slider counts tenths;
+  // the up axis offers the patient directions and auto; one spacing for both axes.
+  const QString angle = QString::fromStdString(Parameter("angle").Description);
+  ui.angleSpin->setToolTip(angle + tr(" Here it wraps at plus/minus 180 degrees."));
+  ui.angleSlider->setToolTip(angle + tr(" The slider counts tenths of a degree; dragging it shows new images as fast "
+                                        "as they are computed, and a left-drag in the CPR view turns it too (0.5 "
+                                        "degrees per pixel)."));
+  ui.upCombo->setToolTip(QString::fromStdString(Parameter("up").Description));
+  ui.widthSpin->setToolTip(QString::fromStdString(Parameter("size").Description) + tr(" Here: the width W; 0 fits."));
+  ui.heightSpin->setToolTip(QString::fromStdString(Parameter("size").Description) + tr(" Here: the height H; 0 fits."));
+  ui.spacingSpin->setToolTip(QString::fromStdString(Parameter("spacing").Description) +
+                             tr(" Here one value for both axes; 0 takes the default."));
+  ui.fixLumenCheck->setText(QString::fromStdString(Parameter("fixLumen").Label));
+  ui.fixLumenCheck->setToolTip(QString::fromStdString(Parameter("fixLumen").Description));
 }
 
 ModulePanel::~ModulePanel() = default;
@@ -326,7 +417,7 @@ ModulePanel::EnableFilterControls()
   ui.jumpThresholdSpin->setEnabled(UsesJumpThreshold());
   ui.anisotropySpin->setEnabled(!UsesJumpThreshold());
   // N and w belong to the Jacobi passes; the steady solver's fixed point depends on neither.
-  const bool jacobi = ui.solverCombo->currentIndex() == 0;
+  const bool jacobi = ui.solverCombo->currentText() == QLatin1String(ToString(itk::BilateralDepthRelaxSolver::Jacobi));
   ui.iterationsSpin->setEnabled(jacobi);
   ui.relaxationSpin->setEnabled(jacobi);
 }

@@ -163,6 +163,10 @@ signals:
   saveOutputsRequested();
 
 private:
+  /** Captions, tooltips, combo entries and ranges of the reformation's controls from the parameter table
+   * (vrParameterTable.h): the panel shows each parameter as the modules describe it. */
+  void
+  DescribeParameters();
   void
   Connect();
   QWidget *
