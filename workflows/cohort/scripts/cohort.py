@@ -11,9 +11,11 @@ Then the case is published: its files and case.json (every value the modules ret
 folder beside <output>/cases/<case> and renamed into place, so that a case folder appears whole or not at all.
 The cohort table (cohort.csv, one row per published case) and failed.csv (case, step, message) come last.
 
-Usage (what the Slurm array job runs; Snakemake imports this file):
+Usage (the Slurm array job runs `case`; the Snakefile imports this file and runs `publish` and `table`):
   cohort.py case --config CONFIG.yaml --index N     run every missing step of manifest row N (0-based), publish
+  cohort.py publish --config CONFIG.yaml --case ID  publish a case whose steps have all run
   cohort.py table --config CONFIG.yaml              write cohort.csv and failed.csv from what is published
+(--settings JSON instead of --config: the settings as the Snakefile resolved them.)
 """
 import argparse
 import csv
@@ -353,16 +355,26 @@ def load_config(path):
 
 def main(arguments=None):
     parser = argparse.ArgumentParser(description=__doc__.split('\n\n')[0])
-    parser.add_argument('command', choices=('case', 'table'))
-    parser.add_argument('--config', required=True)
+    parser.add_argument('command', choices=('case', 'publish', 'table'))
+    source = parser.add_mutually_exclusive_group(required=True)
+    source.add_argument('--config', help='the settings file (YAML, as config.yaml)')
+    source.add_argument('--settings', help='the settings as JSON, every default filled in')
     parser.add_argument('--index', type=int, help='the manifest row, 0-based (SLURM_ARRAY_TASK_ID)')
+    parser.add_argument('--case', help='the case to publish')
     options = parser.parse_args(arguments)
-    cfg = load_config(options.config)
+    cfg = load_config(options.config) if options.config else settings(json.loads(options.settings))
     try:
         cases = read_manifest(cfg['manifest'])
     except ManifestError as error:
         print(f'cohort: {error}', file=sys.stderr)
         return 2
+    if options.command == 'publish':
+        chosen = [case for case in cases if case['case'] == options.case]
+        if not chosen:
+            print(f'cohort: no case "{options.case}" in the manifest', file=sys.stderr)
+            return 2
+        publish_case(cfg, chosen[0])
+        return 0
     if options.command == 'table':
         failures = write_tables(cfg, cases)
         for failure in failures:
