@@ -44,11 +44,7 @@ def output(request):
 
 def run_module(modules, name, *arguments):
     """Runs a command-line module; fails the test with its output when it fails."""
-    # In a sanitizer build the interpreter has the sanitizer's runtime preloaded (CMakeLists.txt); the modules carry
-    # their own.
-    environment = {key: value for key, value in os.environ.items() if key != "LD_PRELOAD"}
-    completed = subprocess.run([str(modules / name), *map(str, arguments)], capture_output=True, text=True,
-                               env=environment)
+    completed = subprocess.run([str(modules / name), *map(str, arguments)], capture_output=True, text=True)
     assert completed.returncode == 0, f"{name} failed ({completed.returncode}):\n{completed.stdout}\n{completed.stderr}"
     return completed
 

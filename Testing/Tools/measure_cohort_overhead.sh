@@ -57,7 +57,7 @@ for round in 1 2 3; do
   loop=$(elapsed "$start")
   rm -rf "$work/results" "$work/.snakemake"
   start=$(date +%s%N)
-  snakemake -s "$source_dir/workflows/cohort/Snakefile" --configfile cohort.yaml --directory "$work" --cores 2 \
+  snakemake -s "$source_dir/workflows/cohort/Snakefile" --configfile "$work/cohort.yaml" --directory "$work" --cores 2 \
     --quiet > "$work/snakemake-$round.log" 2>&1
   snake=$(elapsed "$start")
   rows=$(($(wc -l < "$work/results/cohort.csv") - 1))
