@@ -322,7 +322,10 @@ def write_tables(cfg, cases):
 
 
 def run_case(cfg, case):
-    """Runs the missing steps of a case in order and publishes it (the Slurm array job's work for one row)."""
+    """Runs the missing steps of a case in order and publishes it (the Slurm array job's work for one row); a case
+    published already is left as it is."""
+    if os.path.exists(os.path.join(case_folder(cfg, case['case']), 'case.json')):
+        return 0
     logs = os.path.join(cfg['output'], 'logs', case['case'])
     os.makedirs(logs, exist_ok=True)
     os.makedirs(work_folder(cfg, case['case']), exist_ok=True)
