@@ -13,7 +13,7 @@ build=$(realpath "${2:-build}")
 work=${3:-/tmp/vr-dicom-campaign}
 seed=${4:-1}
 here=$(cd "$(dirname "$0")/.." && pwd)
-data=${VR_SHARED_DATA_DIR:-$here/../shared/data}/vmtk-aorta-mra
+data=${VR_SHARED_DATA_DIR:-$here/../Testing/Data}/vmtk-aorta-mra
 module=$build/cli-modules/VesselReformation
 writer=$build/bin/WriteDicomSeries
 for tool in "$module" "$writer"; do

@@ -21,6 +21,9 @@ packages=(
   qtbase5-dev libvtk9-qt-dev                      # the widgets and VesselReformationViewer: Qt 5 Widgets, VTK's Qt support
   xvfb xauth                                      # a virtual X server: the widgets' tests and headless screenshots
   clang libclang-rt-14-dev                        # scripts/test.sh --sanitize and scripts/fuzz.sh: ASan, UBSan, libFuzzer
+  python3-dev python3-numpy pybind11-dev          # the Python package vesselreformation (Python/)
+  python3-pytest python3-venv python3-setuptools python3-wheel python3-pip   # its tests: pytest, pip into a venv
+  snakemake python3-yaml                          # the cohort workflow (workflows/cohort) and its test
 )
 
 export DEBIAN_FRONTEND=noninteractive

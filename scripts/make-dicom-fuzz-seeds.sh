@@ -9,7 +9,7 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 build=$(realpath "${1:-build}")
-data=${VR_SHARED_DATA_DIR:-$here/../shared/data}/vmtk-aorta-mra
+data=${VR_SHARED_DATA_DIR:-$here/../Testing/Data}/vmtk-aorta-mra
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python3 - "$data/aorta.mha" "$work/crop.nrrd" <<'PY'

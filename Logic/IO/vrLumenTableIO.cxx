@@ -25,6 +25,58 @@ Cell(std::ostream & output, char separator, double value)
 }
 } // namespace
 
+LumenTable
+MakeLumenTable(const itk::VesselLumenProfile & profile)
+{
+  constexpr std::size_t columns = sizeof(LumenTableColumns) / sizeof(LumenTableColumns[0]);
+  const double          empty = std::nan("");
+  const bool            segmentation = profile.Source == itk::VesselLumenSource::Segmentation;
+  LumenTable            table;
+  table.Source = itk::ToString(profile.Source);
+  table.Rows = profile.Sections.size();
+  table.Numbers.resize(columns);
+  for (std::size_t column = 0; column < columns; ++column)
+  {
+    if (column != LumenTableSourceColumn)
+    {
+      table.Numbers[column].reserve(table.Rows);
+    }
+  }
+  for (const auto & section : profile.Sections)
+  {
+    const auto   ras = LPSToRAS(section.Center);
+    const bool   inside = segmentation && section.CenterInSegmentation;
+    const double values[] = { section.ArcLength,
+                              ras[0],
+                              ras[1],
+                              ras[2],
+                              section.Area,
+                              section.EquivalentDiameter,
+                              section.MinimumDiameter,
+                              section.MaximumDiameter,
+                              section.ReferenceDiameter,
+                              section.Diameter,
+                              section.InscribedDiameter,
+                              section.ReferenceArea,
+                              section.ReferenceDiameter > 0.0
+                                ? 100.0 * (1.0 - section.Diameter / section.ReferenceDiameter)
+                                : empty,
+                              empty, // source: text
+                              segmentation ? (section.CenterInSegmentation ? 1.0 : 0.0) : empty,
+                              inside ? (section.RegionClipped ? 1.0 : 0.0) : empty,
+                              static_cast<double>(section.BranchId) };
+    static_assert(sizeof(values) / sizeof(values[0]) == columns, "one value per column of the lumen table");
+    for (std::size_t column = 0; column < columns; ++column)
+    {
+      if (column != LumenTableSourceColumn)
+      {
+        table.Numbers[column].push_back(values[column]);
+      }
+    }
+  }
+  return table;
+}
+
 char
 LumenTableSeparator(const std::string & path)
 {
@@ -59,38 +111,25 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
       first = false;
     }
     output << '\n';
-    const bool        segmentation = profile.Source == itk::VesselLumenSource::Segmentation;
-    const std::string source = itk::ToString(profile.Source);
-    for (const auto & section : profile.Sections)
+    const LumenTable table = MakeLumenTable(profile);
+    for (std::size_t row = 0; row < table.Rows; ++row)
     {
-      const auto ras = LPSToRAS(section.Center);
-      output << section.ArcLength;
-      Cell(output, separator, ras[0]);
-      Cell(output, separator, ras[1]);
-      Cell(output, separator, ras[2]);
-      Cell(output, separator, section.Area);
-      Cell(output, separator, section.EquivalentDiameter);
-      Cell(output, separator, section.MinimumDiameter);
-      Cell(output, separator, section.MaximumDiameter);
-      Cell(output, separator, section.ReferenceDiameter);
-      Cell(output, separator, section.Diameter);
-      Cell(output, separator, section.InscribedDiameter);
-      Cell(output, separator, section.ReferenceArea);
-      Cell(output,
-           separator,
-           section.ReferenceDiameter > 0.0 ? 100.0 * (1.0 - section.Diameter / section.ReferenceDiameter)
-                                           : std::nan(""));
-      output << separator << source << separator;
-      if (segmentation)
+      for (std::size_t column = 0; column < table.Numbers.size(); ++column)
       {
-        output << (section.CenterInSegmentation ? 1 : 0);
+        if (column == LumenTableSourceColumn)
+        {
+          output << separator << table.Source;
+        }
+        else if (column == 0)
+        {
+          output << table.Numbers[column][row];
+        }
+        else
+        {
+          Cell(output, separator, table.Numbers[column][row]);
+        }
       }
-      output << separator;
-      if (segmentation && section.CenterInSegmentation)
-      {
-        output << (section.RegionClipped ? 1 : 0);
-      }
-      output << separator << section.BranchId << '\n';
+      output << '\n';
     }
     output.close();
     if (!output)

@@ -4,7 +4,9 @@
 
 #include "itkVesselLumenMeasurement.h"
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace vr
 {
@@ -30,6 +32,28 @@ constexpr const char * LumenTableColumns[] = { "arc_length_mm",
                                                "in_segmentation",
                                                "region_clipped",
                                                "branch_id" };
+
+/** The position of the one text column, "source", among LumenTableColumns. */
+constexpr std::size_t LumenTableSourceColumn = 13;
+
+/** \class LumenTable
+ * \brief The lumen table's cells as WriteLumenTable writes them and the Python package returns them: per column of
+ * LumenTableColumns but "source", one number per section, NaN where the cell is empty (areas without a segmentation,
+ * sections outside it, in_segmentation and region_clipped without a segmentation); the source as text.
+ * \ingroup VesselReformation
+ */
+struct LumenTable
+{
+  /** Numbers[c][k]: column c of LumenTableColumns (Numbers[LumenTableSourceColumn] is empty), section k. */
+  std::vector<std::vector<double>> Numbers;
+  /** The lumen source, the same in every row ("segmentation" or "centerline radius"). */
+  std::string Source;
+  std::size_t Rows{ 0 };
+};
+
+/** \return the cells of \a profile's table: the section's centre in RAS, the local % stenosis and the rest. */
+LumenTable
+MakeLumenTable(const itk::VesselLumenProfile & profile);
 
 /** The separator a lumen table at \a path is written with: ',' for .csv, '\t' for .tsv (any case). Call it before
  * the work to fail early. Throws vr::InputError naming \a path for any other extension. */

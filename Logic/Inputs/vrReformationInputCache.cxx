@@ -60,8 +60,23 @@ ReformationInputCache::GetVolume(VolumeNode * node)
   }
   m_Volume = nullptr;
   const vtkMTimeType time = node->GetMTime();
-  auto               volume = std::make_shared<Volume>();
-  volume->Image = ConvertVolumeNodeToItkImage(node);
+  KeepVolume(node, time, ConvertVolumeNodeToItkImage(node));
+  return m_Volume;
+}
+
+void
+ReformationInputCache::SetVolume(VolumeNode * node, VolumeImageType::Pointer image)
+{
+  const std::lock_guard<std::mutex> lock(m_Mutex);
+  m_Volume = nullptr;
+  KeepVolume(node, node->GetMTime(), std::move(image));
+}
+
+void
+ReformationInputCache::KeepVolume(VolumeNode * node, vtkMTimeType time, VolumeImageType::Pointer image)
+{
+  auto volume = std::make_shared<Volume>();
+  volume->Image = std::move(image);
   auto calculator = itk::MinimumMaximumImageCalculator<VolumeImageType>::New();
   calculator->SetImage(volume->Image);
   calculator->ComputeMinimum();
@@ -69,7 +84,6 @@ ReformationInputCache::GetVolume(VolumeNode * node)
   m_Volume = std::move(volume);
   m_VolumeNode = node;
   m_VolumeTime = time;
-  return m_Volume;
 }
 
 std::shared_ptr<const itk::CenterlineTree>

@@ -61,6 +61,14 @@ public:
   std::shared_ptr<const Volume>
   GetVolume(VolumeNode * node);
 
+  /** Gives the conversion of \a node ready-made, for a host that holds the voxels as an ITK image already and made
+   * the node over the same memory (the Python package views a numpy array with both, vr::IJKToRASMatrixOf): until
+   * the node changes, GetVolume(node) returns \a image itself, neither converted nor copied.
+   * \param node the volume node (not null), whose voxels and IJK->RAS geometry are \a image's.
+   * \param image the volume in LPS (not null); its minimum is computed now. */
+  void
+  SetVolume(VolumeNode * node, VolumeImageType::Pointer image);
+
   /** \param node the centerline node (RAS, not null).
    * \return its tree in LPS, converted now when \a node differs from the previous call's or was modified since. */
   std::shared_ptr<const itk::CenterlineTree>
@@ -78,6 +86,10 @@ public:
   DescribeSegmentationNode(const VolumeNode * node);
 
 private:
+  /** Keeps \a image as the conversion of \a node at modified time \a time, with its minimum (m_Mutex held). */
+  void
+  KeepVolume(VolumeNode * node, vtkMTimeType time, VolumeImageType::Pointer image);
+
   std::mutex m_Mutex;
 
   vtkWeakPointer<VolumeNode>    m_VolumeNode;

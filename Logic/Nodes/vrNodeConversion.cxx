@@ -307,6 +307,29 @@ ConvertVolumeNodeToItkImage(VolumeNode * node)
   return image;
 }
 
+vtkSmartPointer<vtkMatrix4x4>
+IJKToRASMatrixOf(const itk::ImageBase<3> * image)
+{
+  const auto & direction = image->GetDirection();
+  const auto & spacing = image->GetSpacing();
+  auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    const Point3 column = LPSToRAS(AsPoint(
+      direction[0][axis] * spacing[axis], direction[1][axis] * spacing[axis], direction[2][axis] * spacing[axis]));
+    for (unsigned int row = 0; row < 3; ++row)
+    {
+      matrix->SetElement(row, axis, column[row]);
+    }
+  }
+  const Point3 origin = LPSToRAS(image->GetOrigin());
+  for (unsigned int row = 0; row < 3; ++row)
+  {
+    matrix->SetElement(row, 3, origin[row]);
+  }
+  return matrix;
+}
+
 namespace
 {
 /** A 3D ITK image in LPS as a volume node of voxels of \a vtkType (the image's pixel type). */
@@ -332,28 +355,10 @@ Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name
             image->GetBufferPointer() + region.GetNumberOfPixels(),
             static_cast<typename TImage::PixelType *>(data->GetScalarPointer()));
 
-  const auto & direction = image->GetDirection();
-  const auto & spacing = image->GetSpacing();
-  auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
-  for (unsigned int axis = 0; axis < 3; ++axis)
-  {
-    const Point3 column = LPSToRAS(AsPoint(
-      direction[0][axis] * spacing[axis], direction[1][axis] * spacing[axis], direction[2][axis] * spacing[axis]));
-    for (unsigned int row = 0; row < 3; ++row)
-    {
-      matrix->SetElement(row, axis, column[row]);
-    }
-  }
-  const Point3 origin = LPSToRAS(image->GetOrigin());
-  for (unsigned int row = 0; row < 3; ++row)
-  {
-    matrix->SetElement(row, 3, origin[row]);
-  }
-
   auto node = vtkSmartPointer<VolumeNode>::New();
   node->SetName(name);
   node->SetImageData(data);
-  node->SetIJKToRASMatrix(matrix);
+  node->SetIJKToRASMatrix(IJKToRASMatrixOf(image));
   // What a reader knew of the patient and study (DICOM's, vr::DICOMAttribute) becomes the node's attributes.
   const auto & dictionary = image->GetMetaDataDictionary();
   for (const auto & key : dictionary.GetKeys())

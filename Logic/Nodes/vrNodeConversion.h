@@ -24,6 +24,13 @@ namespace vr
 VolumeImageType::Pointer
 ConvertVolumeNodeToItkImage(VolumeNode * node);
 
+/** The IJK->RAS matrix of a 3D image's grid in LPS (voxel index -> RAS mm), as ConvertItkImageToVolumeNode gives its
+ * nodes: for a host that makes a node over voxels it holds already (the Python package's volumes).
+ * \param image any 3D image in LPS.
+ * \return a new matrix. */
+vtkSmartPointer<vtkMatrix4x4>
+IJKToRASMatrixOf(const itk::ImageBase<3> * image);
+
 /** The inverse of ConvertVolumeNodeToItkImage.
  * \param image a float volume in LPS.
  * \param name the node's name.

@@ -4,14 +4,18 @@
 //
 //   VesselReformationDemo [--phantom runoff|thorax] [--output DIR] [--angle DEG] [--size W,H] [--iterations N]
 //                         [--solver jacobi|steady] [--backend B]
+//   VesselReformationDemo --phantom runoff|thorax [--phantomSpacing MM] --writePhantom DIR
+//                         only writes the phantom's volume and exact centerlines there, as inputs for other tools
 
 #include "itkCTAPhantom.h"
 #include "vrFigure.h"
 #include "vrFilterSettingsText.h"
+#include "vrCenterlineIO.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
 #include "vrOutputWriter.h"
 #include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
 
 #include <CLI/CLI.hpp>
 
@@ -80,6 +84,7 @@ RunDemo(int argc, char * argv[])
   long long                 iterations = 500;
   double                    spacing = 1.5;
   std::string               backendName = "auto";
+  std::string               phantomFolder;
   app.add_option("--phantom", phantomName, "the synthetic CTA: runoff (legs) or thorax (aortic arch)")
     ->capture_default_str();
   app.add_option("--output", output, "folder for the pictures")->capture_default_str();
@@ -93,6 +98,10 @@ RunDemo(int argc, char * argv[])
   app.add_option("--solver", solverName, "relaxation solver: jacobi (the paper's N passes) or steady (fixed point)")
     ->capture_default_str();
   app.add_option("--backend", backendName, "relax filter backend: auto, cpu or opencl")->capture_default_str();
+  app.add_option("--writePhantom",
+                 phantomFolder,
+                 "only write the phantom's volume (<phantom>.nrrd, HU) and exact centerlines "
+                 "(<phantom>-centerlines.vtp, RAS as VMTK writes them) into this folder, and stop");
   CLI11_PARSE(app, argc, argv);
 
   try
@@ -108,6 +117,18 @@ RunDemo(int argc, char * argv[])
     }
     const bool thorax = kind == itk::CTAPhantomKind::Thorax;
     auto       phantom = itk::MakeCTAPhantom(kind, spacing);
+    if (!phantomFolder.empty())
+    {
+      // Inputs for the modules, the Python package or a cohort: the files a user's own data would come as.
+      std::filesystem::create_directories(phantomFolder);
+      const auto base = std::filesystem::path(phantomFolder) / phantom.Name;
+      phantom.Source->Update();
+      vr::WriteVolume(phantom.Source->GetOutput(), base.string() + ".nrrd");
+      vr::WriteCenterlines(phantom.Tree, base.string() + "-centerlines.vtp");
+      std::cout << "VesselReformation demo: " << phantom.Description << " written to " << base.string() << ".nrrd and "
+                << base.string() << "-centerlines.vtp" << std::endl;
+      return EXIT_SUCCESS;
+    }
     if (angleOption->count() == 0)
     {
       angle = phantom.DesignAngleInDegrees;

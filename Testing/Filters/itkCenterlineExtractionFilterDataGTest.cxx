@@ -102,7 +102,8 @@ CoveredFraction(const itk::CenterlineBranch & branch,
 TEST(CenterlineExtractionFilterData, AortaLevelSetGivesVMTKsCenterlines)
 {
   const std::string folder = vr::test::AortaDataFolder();
-  ASSERT_FALSE(folder.empty()) << "the shared data folder vmtk-aorta-mra is missing";
+  ASSERT_FALSE(folder.empty())
+    << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   // VMTK's level set: inside where < 0.
   const auto levelSet = vr::ReadVolume(folder + "/aorta-final-levelset.mha");
   auto       mask = LabelMap::New();

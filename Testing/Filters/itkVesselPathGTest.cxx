@@ -258,7 +258,8 @@ TEST(VesselPath, RunoffPhantomPathsAreContinuousAndTheDefaultIsTheLongest)
 TEST(VesselPath, VMTKAortaPathRunsFromTheTrunkIntoTheLongerIliac)
 {
   const std::string folder = vr::test::AortaDataFolder();
-  ASSERT_FALSE(folder.empty()) << "the shared data folder vmtk-aorta-mra is missing";
+  ASSERT_FALSE(folder.empty())
+    << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   const itk::CenterlineTree tree = vr::ReadCenterlines(folder + "/aorta-centerline.vtp");
   ASSERT_EQ(tree.GetNumberOfBranches(), 3u);
   const auto longest = itk::VesselPath::FromTree(tree);

@@ -10,7 +10,7 @@ namespace
 using namespace vr::test::centerlineio;
 
 // ---------------------------------------------------------------------------------------------------------------
-// Real data: VMTK centerlines of the aorta and iliacs (../shared/data/vmtk-aorta-mra, see its README).
+// Real data: VMTK centerlines of the aorta and iliacs (Testing/Data/vmtk-aorta-mra, see its README).
 
 class AortaCenterlines : public ::testing::Test
 {
@@ -21,7 +21,7 @@ protected:
     m_Folder = vr::test::AortaDataFolder();
     if (m_Folder.empty())
     {
-      GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+      GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
     }
   }
   std::string

@@ -328,7 +328,7 @@ TEST(LegacyVTKReader, AortaWrittenByVTKInEveryFormReadsAsVTKReadsIt)
   const std::string data = vr::test::AortaDataFolder();
   if (data.empty())
   {
-    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+    GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   }
   vr::test::ScopedTemporaryFolder folder;
   for (const std::string name : { "aorta-centerline.vtp", "aorta-centerline-branches.vtp" })

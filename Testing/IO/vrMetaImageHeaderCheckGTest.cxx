@@ -95,7 +95,7 @@ TEST(MetaImageHeaderCheck, PassesWhatITKWritesAndVMTKsFiles)
   const std::string shared = vr::test::AortaDataFolder();
   if (shared.empty())
   {
-    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+    GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   }
   for (const char * name : { "aorta.mha", "aorta-final-levelset.mha" })
   {

@@ -106,7 +106,7 @@ TEST(VolumeIO, ReadsTheAortaMetaImageWithItsGeometry)
   const std::string folder = vr::test::AortaDataFolder();
   if (folder.empty())
   {
-    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+    GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   }
   const VolumeImageType::Pointer volume = vr::ReadVolume(folder + "/aorta.mha");
   // The values of the MetaImage header (README: 157 x 393 x 34, direction diag(-1, -1, 1)).

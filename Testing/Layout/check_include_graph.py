@@ -23,8 +23,9 @@ through others. And each folder (a "room") may include only the rooms below it:
     Widgets/Common                        itself and the logic
     Widgets/Tree, Widgets/VesselPath      themselves, Widgets/Common and the logic (not each other)
     Applications/VesselReformationViewer  itself, the widgets and everything below (nothing includes it)
+    Python/Bindings                       itself and the logic (the Python package's extension; nothing includes it)
 
-A source file in a folder of Logic, OpenCL, Widgets or Applications that no rule names is reported too: a new
+A source file in a folder of Logic, OpenCL, Widgets, Applications or Python that no rule names is reported too: a new
 room needs its rule here (and its paragraph in docs/layout.md).
 
 Usage: check_include_graph.py ROOT      check the tree at ROOT; exit 1 naming every cycle and violation
@@ -73,9 +74,10 @@ ALLOWED = {
     'Widgets/Tree': {'Widgets/Tree', 'Widgets/Common'} | LOGIC,
     'Widgets/VesselPath': {'Widgets/VesselPath', 'Widgets/Common'} | LOGIC,
     'Applications/VesselReformationViewer': {'Applications/VesselReformationViewer'} | WIDGETS | LOGIC,
+    'Python/Bindings': {'Python/Bindings'} | LOGIC,
 }
-LAYERED = ('Logic', 'OpenCL', 'Widgets', 'Applications')
-SCANNED = ('Logic', 'OpenCL', 'Module', 'Widgets', 'Applications', 'Testing')
+LAYERED = ('Logic', 'OpenCL', 'Widgets', 'Applications', 'Python')
+SCANNED = ('Logic', 'OpenCL', 'Module', 'Widgets', 'Applications', 'Python', 'Testing')
 
 
 def unit_of(path):

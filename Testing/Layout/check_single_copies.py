@@ -2,7 +2,8 @@
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 """Checks that the outputs of a reformation have one writer and the filter settings one description.
 
-Outside their homes, the code of the logic, the modules and the widgets (comments left out) may not
+Outside their homes, the code of the logic, the modules, the widgets and the Python package's extension (comments left
+out) may not
 - write a logic output node or a surface itself: a call of WriteImage2D or WriteWindowedPNG on
   ConvertVolumeNodeTo...(), or of WriteSurface, belongs to Logic/TreeReformation/vrOutputWriter.cxx (the IO layer
   defines them);
@@ -20,7 +21,7 @@ import tempfile
 
 from layout_checks import source_files, main as run_check, write_file
 
-SCANNED = ('Logic', 'Module', 'Widgets', 'Applications')
+SCANNED = ('Logic', 'Module', 'Widgets', 'Applications', 'Python')
 # The layers below the logic define the writers and say nothing of captions.
 SKIPPED = ('Logic/Common', 'Logic/Filters', 'Logic/IO', 'Logic/Nodes', 'Logic/Phantoms')
 WRITER_HOME = 'Logic/TreeReformation/vrOutputWriter.cxx'

@@ -190,7 +190,8 @@ BranchSections(const itk::CenterlineBranch & branch)
 TEST(LumenMeasurement, AortaLevelSetAgainstVMTKsInscribedSpheres)
 {
   const std::string folder = vr::test::AortaDataFolder();
-  ASSERT_FALSE(folder.empty()) << "the shared data folder vmtk-aorta-mra is missing";
+  ASSERT_FALSE(folder.empty())
+    << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   vr::SegmentationReadReport report;
   const auto                 mask = vr::ReadSegmentationMask(folder + "/aorta-final-levelset.mha", {}, &report);
   EXPECT_EQ(report.Kind, "level set (inside where < 0)");

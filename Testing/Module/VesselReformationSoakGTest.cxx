@@ -119,7 +119,7 @@ TEST(Soak, TwoHundredKilledRunsLeaveOneCompleteConsistentOutputSet)
 {
   if (!fs::exists(DataFolder / "aorta.mha"))
   {
-    GTEST_SKIP() << "the shared data folder " << DataFolder << " is missing";
+    GTEST_FAIL() << "VMTK's aorta is missing: " << DataFolder << " (VR_SHARED_DATA_DIR, Testing/Data by default)";
   }
   const fs::path folder = fs::path(VR_TEST_OUTPUT_DIR) / "Soak";
   fs::remove_all(folder);

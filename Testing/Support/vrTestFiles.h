@@ -65,7 +65,8 @@ Contains(const std::string & text, const std::string & part);
 std::filesystem::path
 FreshFolderForThisTest(const std::filesystem::path & root, const std::string & prefix);
 
-/** The shared real-data folder (VR_SHARED_DATA_DIR/vmtk-aorta-mra), or "" when this checkout lacks it. */
+/** VMTK's aorta (VR_SHARED_DATA_DIR/vmtk-aorta-mra, Testing/Data by default), or "" when it is missing (a test then
+ * fails: the data ships with the repository). */
 std::string
 AortaDataFolder();
 } // namespace vr::test

@@ -172,7 +172,7 @@ TEST(ViewerScreenshot, OnTheVMTKAorta)
   const std::string data = vr::test::AortaDataFolder();
   if (data.empty())
   {
-    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+    GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   }
   const fs::path folder = TestFolder();
   const fs::path png = folder / "aorta.mha.png";
@@ -193,7 +193,7 @@ TEST(ViewerScreenshot, OnTheVMTKAortaWithItsLevelSetInsteadOfCenterlines)
   const std::string data = vr::test::AortaDataFolder();
   if (data.empty())
   {
-    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+    GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   }
   const fs::path folder = TestFolder();
   const fs::path png = folder / "aorta-levelset.png";

@@ -350,7 +350,7 @@ TEST(WidgetsSegmentation, TheVMTKLevelSetGivesTheLogicsCPRAndItsThreeBranchesAnd
   const std::string data = AortaDataFolder();
   if (data.empty())
   {
-    GTEST_SKIP() << "the shared data folder vmtk-aorta-mra is not beside this checkout (VR_SHARED_DATA_DIR)";
+    GTEST_FAIL() << "VMTK's aorta (vmtk-aorta-mra) is missing from VR_SHARED_DATA_DIR (Testing/Data by default)";
   }
   const std::string     volume = data + "/aorta.mha";
   const std::string     levelSet = data + "/aorta-final-levelset.mha";

@@ -1,0 +1,31 @@
+# Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+# vr_choose_python_interpreter(): sets Python3_EXECUTABLE, unless given, to the first of python3 on PATH and
+# /usr/bin/python3 that imports numpy (and pytest, when one does): the Python package builds against it and the Python
+# and workflow tests run with it. A python3 of one's own (pyenv's) often lacks both, while Debian's has them
+# (scripts/install-dependencies.sh). Without any such interpreter, FindPython3 chooses as it would.
+function(vr_choose_python_interpreter)
+  if(Python3_EXECUTABLE)
+    return()
+  endif()
+  find_program(VR_PYTHON_ON_PATH NAMES python3 NO_CACHE)
+  set(with_numpy "")
+  foreach(candidate ${VR_PYTHON_ON_PATH} /usr/bin/python3)
+    if(NOT EXISTS ${candidate})
+      continue()
+    endif()
+    execute_process(COMMAND ${candidate} -c "import numpy" RESULT_VARIABLE numpy_status OUTPUT_QUIET ERROR_QUIET)
+    if(NOT numpy_status EQUAL 0)
+      continue()
+    endif()
+    execute_process(COMMAND ${candidate} -c "import pytest" RESULT_VARIABLE pytest_status OUTPUT_QUIET ERROR_QUIET)
+    if(pytest_status EQUAL 0)
+      set(with_numpy ${candidate})
+      break()
+    elseif(with_numpy STREQUAL "")
+      set(with_numpy ${candidate})
+    endif()
+  endforeach()
+  if(with_numpy)
+    set(Python3_EXECUTABLE ${with_numpy} CACHE FILEPATH "The Python 3 interpreter (with numpy) the package and tests use")
+  endif()
+endfunction()
