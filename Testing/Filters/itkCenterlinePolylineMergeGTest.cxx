@@ -87,6 +87,24 @@ TEST(CenterlinePolylineMerge, AZeroToleranceMergesOnlyEqualPoints)
   EXPECT_EQ(branches[1].Polyline.Points, (std::vector<PointType>{ P(0, 0, 0), P(0, 0, 1.000001), P(0, 0, 2) }));
 }
 
+TEST(CenterlinePolylineMerge, CoordinatesFarBeyondAnyGridStillMergeByTheirTrueDistance)
+{
+  // A hostile file's points at +-1e160 mm (found by fuzzing: the neighbourhood grid's cell index overflowed). The
+  // repeated points still merge, the far ones stay apart, and the answer is the one the same paths give near 0.
+  const double far = 1e160;
+  const std::vector<CenterlinePolyline> paths = {
+    Line(0, { P(far, 0, 0), P(far, 0, 1), P(-far, 0, 2) }),
+    Line(1, { P(far, 0, 0), P(far, 0, 1), P(0, -far, 3) }),
+  };
+  std::size_t merged = 0;
+  const auto  branches = itk::MergeOverlappingPaths(paths, 1e-3, merged);
+  EXPECT_EQ(merged, 2u);
+  ASSERT_EQ(branches.size(), 3u);
+  EXPECT_EQ(branches[0].Polyline.Points, (std::vector<PointType>{ P(far, 0, 0), P(far, 0, 1) }));
+  EXPECT_EQ(branches[1].Polyline.Points, (std::vector<PointType>{ P(far, 0, 1), P(-far, 0, 2) }));
+  EXPECT_EQ(branches[2].Polyline.Points, (std::vector<PointType>{ P(far, 0, 1), P(0, -far, 3) }));
+}
+
 TEST(CenterlinePolylineMerge, TheResamplerPlacesEqualArcStepsWithTheEndsKept)
 {
   // An L of arm lengths 3 and 1 (length 4), resampled to 5 points: one every 1 mm along the arc.

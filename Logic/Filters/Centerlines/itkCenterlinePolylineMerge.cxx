@@ -1,7 +1,10 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "itkCenterlinePolylineMerge.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <unordered_map>
@@ -69,10 +72,15 @@ private:
   std::array<long long, 3>
   CellOf(const PointType & point) const
   {
+    // Cells are clamped to +-2^40 (and NaN goes to 0) so that any coordinate a file holds converts to an
+    // integer; far points then share a border cell, which only makes its bucket longer, never a wrong answer,
+    // because every candidate's true distance is still measured.
+    constexpr double         limit = 1099511627776.0;
     std::array<long long, 3> cell{};
     for (unsigned int axis = 0; axis < 3; ++axis)
     {
-      cell[axis] = static_cast<long long>(std::floor(point[axis] / m_Cell));
+      const double index = std::floor(point[axis] / m_Cell);
+      cell[axis] = std::isnan(index) ? 0LL : static_cast<long long>(std::clamp(index, -limit, limit));
     }
     return cell;
   }
@@ -81,7 +89,9 @@ private:
   Key(const std::array<long long, 3> & cell)
   {
     // Large odd multipliers spread neighbouring cells; collisions only cost a longer bucket.
-    return static_cast<std::size_t>(cell[0] * 73856093LL ^ cell[1] * 19349663LL ^ cell[2] * 83492791LL);
+    // Unsigned arithmetic: the products wrap by definition instead of overflowing a signed type.
+    const auto part = [](long long value, std::uint64_t factor) { return static_cast<std::uint64_t>(value) * factor; };
+    return static_cast<std::size_t>(part(cell[0], 73856093U) ^ part(cell[1], 19349663U) ^ part(cell[2], 83492791U));
   }
 
   double                                              m_Distance;
