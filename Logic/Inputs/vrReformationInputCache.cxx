@@ -6,7 +6,7 @@
 #include "vrNodeConversion.h"
 #include "vrParameterName.h"
 
-#include "itkMinimumMaximumImageCalculator.h"
+#include "itkCPRVolumeSampler.h"
 
 #include <sstream>
 
@@ -61,11 +61,11 @@ ReformationInputCache::GetVolume(VolumeNode * node)
   m_Volume = nullptr;
   const vtkMTimeType time = node->GetMTime();
   auto               volume = std::make_shared<Volume>();
-  volume->Image = ConvertVolumeNodeToItkImage(node);
-  auto calculator = itk::MinimumMaximumImageCalculator<VolumeImageType>::New();
-  calculator->SetImage(volume->Image);
-  calculator->ComputeMinimum();
-  volume->Minimum = calculator->GetMinimum();
+  const StoredVolume stored = ConvertVolumeNodeToStoredVolume(node);
+  volume->Image = stored.Image;
+  volume->Rescale = stored.Rescale;
+  itk::detail::CPRVolumeMinimum<itk::ImageBase<3>> minimum;
+  volume->Minimum = minimum.Get(stored.Image, stored.Rescale);
   m_Volume = std::move(volume);
   m_VolumeNode = node;
   m_VolumeTime = time;
