@@ -32,7 +32,7 @@ InsideGrid(const double index[3], const long low[3], const long size[3])
 } // namespace
 
 CenterlineVolumeFit
-MeasureCenterlineVolumeFit(const itk::CenterlineTree & tree, const VolumeImageType * volume)
+MeasureCenterlineVolumeFit(const itk::CenterlineTree & tree, const itk::ImageBase<3> * volume)
 {
   CenterlineVolumeFit fit;
   const auto &        region = volume->GetLargestPossibleRegion();

@@ -31,7 +31,7 @@ struct CenterlineVolumeFit
 
 /** \return the fit of \a tree (LPS mm) in \a volume's voxel grid. */
 CenterlineVolumeFit
-MeasureCenterlineVolumeFit(const itk::CenterlineTree & tree, const VolumeImageType * volume);
+MeasureCenterlineVolumeFit(const itk::CenterlineTree & tree, const itk::ImageBase<3> * volume);
 /** The same against a volume node's grid (its IJK->RAS matrix and extent), without converting its voxels. */
 CenterlineVolumeFit
 MeasureCenterlineVolumeFit(const itk::CenterlineTree & tree, const VolumeNode * volume);

@@ -23,7 +23,10 @@ IntensityUnitOf(VolumeNode * volume)
   }
   double range[2];
   image->GetScalarRange(range);
-  return range[0] <= AirBound ? "HU" : std::string();
+  // The stored values' range as intensities (a CT stored as unsigned integers has its air in the intercept).
+  const itk::CPRIntensityRescale & rescale = volume->GetIntensityRescale();
+  const double                     lowest = std::min(rescale.Apply(range[0]), rescale.Apply(range[1]));
+  return lowest <= AirBound ? "HU" : std::string();
 }
 
 void
@@ -61,8 +64,12 @@ PercentileWindowOf(VolumeNode * volume, double & window, double & level)
     std::nth_element(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(rank), samples.end());
     return samples[rank];
   };
-  const double low = percentile(0.01);
-  const double high = percentile(0.99);
+  // The rescale is monotonic: the percentiles of the intensities are those of the stored values, rescaled.
+  const itk::CPRIntensityRescale & rescale = volume->GetIntensityRescale();
+  const double                     first = rescale.Apply(percentile(0.01));
+  const double                     last = rescale.Apply(percentile(0.99));
+  const double                     low = std::min(first, last);
+  const double                     high = std::max(first, last);
   window = std::max(high - low, 1.0);
   level = 0.5 * (low + high);
 }

@@ -2,11 +2,13 @@
 #include "vrVolumeIO.h"
 
 #include "vrAtomicOutput.h"
+#include "vrAvailableMemory.h"
 #include "vrDicomSeriesProcess.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
+#include "vrNiftiVoxels.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
@@ -19,22 +21,29 @@
 #include <cmath>
 #include <filesystem>
 #include <sstream>
+#include <type_traits>
 
 namespace vr
 {
 namespace
 {
-/** Rejects a volume holding NaN or an infinity: it would turn the CPR into NaN without a word. */
+/** Rejects a volume holding NaN or an infinity: it would turn the CPR into NaN without a word. Integers are finite. */
+template<typename TImage>
 void
-RequireFiniteVoxels(const VolumeImageType & volume, const std::string & where)
+RequireFiniteVoxels(const TImage & volume, const std::string & where)
 {
-  const std::size_t count = volume.GetLargestPossibleRegion().GetNumberOfPixels();
-  const float *     voxels = volume.GetBufferPointer();
-  for (std::size_t k = 0; k < count; ++k)
+  using PixelType = typename TImage::PixelType;
+  if constexpr (std::is_floating_point_v<PixelType>)
   {
-    if (!std::isfinite(voxels[k]))
+    const std::size_t count = volume.GetLargestPossibleRegion().GetNumberOfPixels();
+    const PixelType * voxels = volume.GetBufferPointer();
+    for (std::size_t k = 0; k < count; ++k)
     {
-      const auto         index = volume.ComputeIndex(static_cast<VolumeImageType::OffsetValueType>(k));
+      if (std::isfinite(voxels[k]))
+      {
+        continue;
+      }
+      const auto         index = volume.ComputeIndex(static_cast<typename TImage::OffsetValueType>(k));
       std::ostringstream what;
       what << where << ": voxel (" << index[0] << ", " << index[1] << ", " << index[2] << ") is " << voxels[k]
            << "; a volume must hold finite values (NaN or infinite voxels would make the CPR meaningless)";
@@ -43,7 +52,7 @@ RequireFiniteVoxels(const VolumeImageType & volume, const std::string & where)
   }
 }
 
-VolumeImageType::Pointer
+StoredVolume
 ReadDicomSeries(const std::string & folder)
 {
   const std::string        where = "volume folder " + folder;
@@ -54,7 +63,8 @@ ReadDicomSeries(const std::string & folder)
     throw InputError(where + ": the DICOM series is a single 2D slice; a volume must be 3D");
   }
   RequireFiniteVoxels(*volume, where);
-  return volume;
+  // The reader process hands over float intensities (each file's rescale applied).
+  return StoredVolume{ volume.GetPointer(), itk::CPRIntensityRescale() };
 }
 
 /** "64 x 64 x 32 x 5" */
@@ -176,12 +186,29 @@ InspectVolumeFile(const std::string & path)
 
 namespace
 {
-VolumeImageType::Pointer
-ReadVolumeFile(const std::string & path)
+/** Refuses, before anything is allocated, voxels that need more memory than this process may still allocate. */
+void
+RequireMemoryForVoxels(std::uintmax_t      voxels,
+                       std::size_t         voxelBytes,
+                       const std::string & what,
+                       const std::string & where)
 {
-  const std::string         where = "volume " + path;
-  itk::ImageIOBase::Pointer io = InspectVolumeFile(path);
-  auto                      reader = itk::ImageFileReader<VolumeImageType>::New();
+  const double needed = static_cast<double>(voxels) * static_cast<double>(voxelBytes);
+  const double available = AvailableMemoryInBytes();
+  if (needed > available)
+  {
+    throw InputError(where + ": its " + std::to_string(voxels) + " voxels of " + what + " need " +
+                     DescribeBytes(needed) + " of memory, more than the " + DescribeBytes(available) + " available");
+  }
+}
+
+/** The voxel data read by ITK's reader for the pixel type of the volume: straight into the output's buffer when
+ * that is the file's type (NRRD, MetaImage), else through ITK's conversion. */
+template<typename TPixel>
+typename itk::Image<TPixel, 3>::Pointer
+ReadWithITK(itk::ImageIOBase * io, const std::string & path, const std::string & where)
+{
+  auto reader = itk::ImageFileReader<itk::Image<TPixel, 3>>::New();
   reader->SetImageIO(io);
   reader->SetFileName(path);
   {
@@ -204,21 +231,123 @@ ReadVolumeFile(const std::string & path)
       throw InputError(where + ": the voxel data cannot be read (truncated?): " + metaIO);
     }
   }
-  VolumeImageType::Pointer volume = reader->GetOutput();
+  typename itk::Image<TPixel, 3>::Pointer volume = reader->GetOutput();
   volume->DisconnectPipeline();
-  RequireFiniteVoxels(*volume, where);
   return volume;
+}
+
+/** A NIfTI volume whose voxels our own reader puts straight into the image's buffer (vrNiftiVoxels.h); the grid is
+ * the one ITK's reader gives the file. */
+template<typename TPixel>
+typename itk::Image<TPixel, 3>::Pointer
+ReadNifti(itk::ImageIOBase * io, const std::string & path, const std::string & where)
+{
+  using ImageType = itk::Image<TPixel, 3>;
+  auto reader = itk::ImageFileReader<ImageType>::New();
+  reader->SetImageIO(io);
+  reader->SetFileName(path);
+  {
+    const detail::ScopedConsoleCapture console;
+    try
+    {
+      reader->UpdateOutputInformation();
+    }
+    catch (const itk::ExceptionObject & exception)
+    {
+      throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
+    }
+  }
+  auto volume = ImageType::New();
+  volume->CopyInformation(reader->GetOutput());
+  volume->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
+  volume->SetMetaDataDictionary(io->GetMetaDataDictionary());
+  volume->Allocate();
+  const detail::ScopedConsoleCapture console;
+  detail::ReadNiftiVoxels(
+    path, volume->GetBufferPointer(), volume->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(TPixel), where);
+  return volume;
+}
+
+/** Reads the volume as an image of TPixel, checks its voxels are finite and returns it with \a rescale. */
+template<typename TPixel>
+StoredVolume
+ReadAs(itk::ImageIOBase *               io,
+       bool                             nifti,
+       const itk::CPRIntensityRescale & rescale,
+       std::uintmax_t                   voxels,
+       const std::string &              path,
+       const std::string &              where)
+{
+  RequireMemoryForVoxels(
+    voxels, sizeof(TPixel), StoredPixelTypeName(itk::ImageIOBase::MapPixelType<TPixel>::CType), where);
+  typename itk::Image<TPixel, 3>::Pointer volume =
+    nifti ? ReadNifti<TPixel>(io, path, where) : ReadWithITK<TPixel>(io, path, where);
+  RequireFiniteVoxels(*volume, where);
+  return StoredVolume{ volume.GetPointer(), rescale };
+}
+
+StoredVolume
+ReadVolumeFile(const std::string & path)
+{
+  const std::string         where = "volume " + path;
+  itk::ImageIOBase::Pointer io = InspectVolumeFile(path);
+  std::uintmax_t            voxels = 1;
+  for (unsigned int d = 0; d < io->GetNumberOfDimensions(); ++d)
+  {
+    voxels *= io->GetDimensions(d);
+  }
+  // ITK's NIfTI reader reports rescaled integers as float: the header says what the file stores.
+  const bool               nifti = std::string(io->GetNameOfClass()) == "NiftiImageIO" && !IsURIName(path);
+  itk::IOComponentEnum     pixelType = io->GetComponentType();
+  itk::CPRIntensityRescale rescale;
+  if (nifti)
+  {
+    const detail::NiftiVoxelLayout layout = detail::InspectNiftiVoxels(path, where);
+    if (layout.Voxels != voxels)
+    {
+      throw InputError(where + ": the NIfTI header describes " + std::to_string(layout.Voxels) +
+                       " voxels where its dimensions give " + std::to_string(voxels));
+    }
+    pixelType = layout.PixelType;
+    rescale.Slope = layout.Slope;
+    rescale.Intercept = layout.Intercept;
+  }
+  switch (pixelType)
+  {
+    case itk::IOComponentEnum::SHORT:
+      return ReadAs<short>(io, nifti, rescale, voxels, path, where);
+    case itk::IOComponentEnum::USHORT:
+      return ReadAs<unsigned short>(io, nifti, rescale, voxels, path, where);
+    case itk::IOComponentEnum::UCHAR:
+      return ReadAs<unsigned char>(io, nifti, rescale, voxels, path, where);
+    case itk::IOComponentEnum::CHAR:
+      return ReadAs<signed char>(io, nifti, rescale, voxels, path, where);
+    case itk::IOComponentEnum::FLOAT:
+      return ReadAs<float>(io, nifti, rescale, voxels, path, where);
+    case itk::IOComponentEnum::DOUBLE:
+      return ReadAs<double>(io, nifti, rescale, voxels, path, where);
+    default:
+      // 32- and 64-bit integers (and NIfTI's other datatypes) through ITK's reader, as float intensities: its NIfTI
+      // reader applies scl_slope and scl_inter itself.
+      return ReadAs<float>(io, false, itk::CPRIntensityRescale(), voxels, path, where);
+  }
 }
 } // namespace
 
-VolumeImageType::Pointer
-ReadVolume(const std::string & path)
+StoredVolume
+ReadStoredVolume(const std::string & path)
 {
   if (!IsURIName(path) && detail::CheckInputPath(path, "volume", true) == detail::InputKind::Folder)
   {
     return ReadDicomSeries(path);
   }
   return ReadVolumeFile(path);
+}
+
+VolumeImageType::Pointer
+ReadVolume(const std::string & path)
+{
+  return ConvertStoredVolumeToFloat(ReadStoredVolume(path));
 }
 
 void

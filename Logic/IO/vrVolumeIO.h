@@ -3,6 +3,7 @@
 #define vrVolumeIO_h
 
 #include "vrImageTypes.h"
+#include "vrStoredVolume.h"
 
 #include "itkImageIOBase.h"
 
@@ -14,14 +15,28 @@ namespace vr
 /** The most voxels a volume may declare (2^32, 16 GiB as float): more means a corrupt or hostile header. */
 constexpr std::uintmax_t MaximumVolumeVoxels = std::uintmax_t{ 1 } << 32;
 
-/** Reads a scalar volume (LPS, origin/spacing/direction kept) as float: NRRD, NIfTI, MetaImage, or a DICOM
- * series when \a path is a folder (the series with the most files). A URI name (vr::IsURIName, e.g. 3D Slicer's
- * "slicer:0x...#vtkMRMLScalarVolumeNode1") goes to ITK's reader untouched.
+/** Reads a scalar volume (LPS, origin/spacing/direction kept) in the pixel type of its file (docs/design.md "Volumes
+ * in their stored type"): NRRD, NIfTI, MetaImage, or a DICOM series when \a path is a folder (the series with the
+ * most files). A URI name (vr::IsURIName, e.g. 3D Slicer's "slicer:0x...#vtkMRMLScalarVolumeNode1") goes to ITK's
+ * reader untouched.
+ *
+ * Signed and unsigned 8- and 16-bit integers, float and double stay as stored and are read straight into the one
+ * buffer the volume keeps (NRRD and MetaImage by ITK's reader of that pixel type, NIfTI by our own, .gz files
+ * decompressed into it); NIfTI's scl_slope and scl_inter become the rescale. Other pixel types (32- and 64-bit
+ * integers) are read as float, and a DICOM series as float intensities (its rescale applied per file).
+ *
  * Throws vr::InputError naming the file and what is wrong: missing; a named pipe, device or socket (refused before
  * anything opens it, also as a detached header's data file); an unreadable header; not 3D (a 4D file says so);
- * not scalar; more than MaximumVolumeVoxels; a spacing, origin or direction that is not finite; voxel data that
- * is truncated (also where ITK's MetaImage reader would carry on with what it read); a NaN or infinite voxel
+ * not scalar; more than MaximumVolumeVoxels; voxels that need more memory than is available (refused before anything
+ * is allocated, naming the bytes needed and available); a spacing, origin or direction that is not finite; voxel data
+ * that is truncated (also where ITK's MetaImage reader would carry on with what it read); a NaN or infinite voxel
  * (named by its index); an empty DICOM folder. */
+StoredVolume
+ReadStoredVolume(const std::string & path);
+
+/** ReadStoredVolume() as float intensities (vr::ConvertStoredVolumeToFloat: the image read for a float file without
+ * rescale, else a float copy). For what needs float values; a reformation reads the stored volume. Throws as
+ * ReadStoredVolume(). */
 VolumeImageType::Pointer
 ReadVolume(const std::string & path);
 

@@ -6,7 +6,7 @@
 #include "vrNodeConversion.h"
 #include "vrParameterName.h"
 
-#include "itkMinimumMaximumImageCalculator.h"
+#include "itkCPRVolumeSampler.h"
 
 #include <sstream>
 
@@ -60,7 +60,7 @@ ReformationInputCache::GetVolume(VolumeNode * node)
   }
   m_Volume = nullptr;
   const vtkMTimeType time = node->GetMTime();
-  KeepVolume(node, time, ConvertVolumeNodeToItkImage(node));
+  KeepVolume(node, time, ConvertVolumeNodeToStoredVolume(node));
   return m_Volume;
 }
 
@@ -69,18 +69,17 @@ ReformationInputCache::SetVolume(VolumeNode * node, VolumeImageType::Pointer ima
 {
   const std::lock_guard<std::mutex> lock(m_Mutex);
   m_Volume = nullptr;
-  KeepVolume(node, node->GetMTime(), std::move(image));
+  KeepVolume(node, node->GetMTime(), StoredVolume{ image.GetPointer(), itk::CPRIntensityRescale() });
 }
 
 void
-ReformationInputCache::KeepVolume(VolumeNode * node, vtkMTimeType time, VolumeImageType::Pointer image)
+ReformationInputCache::KeepVolume(VolumeNode * node, vtkMTimeType time, const StoredVolume & stored)
 {
   auto volume = std::make_shared<Volume>();
-  volume->Image = std::move(image);
-  auto calculator = itk::MinimumMaximumImageCalculator<VolumeImageType>::New();
-  calculator->SetImage(volume->Image);
-  calculator->ComputeMinimum();
-  volume->Minimum = calculator->GetMinimum();
+  volume->Image = stored.Image;
+  volume->Rescale = stored.Rescale;
+  itk::detail::CPRVolumeMinimum<itk::ImageBase<3>> minimum;
+  volume->Minimum = minimum.Get(stored.Image, stored.Rescale);
   m_Volume = std::move(volume);
   m_VolumeNode = node;
   m_VolumeTime = time;

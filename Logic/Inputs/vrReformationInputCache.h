@@ -6,6 +6,7 @@
 #include "vrCenterlineNode.h"
 #include "vrImageTypes.h"
 #include "vrSegmentationIO.h"
+#include "vrStoredVolume.h"
 #include "vrVolumeNode.h"
 
 #include <vtkWeakPointer.h>
@@ -25,20 +26,22 @@ namespace vr
  *
  * Each Get returns the converted value, shared: the same object as long as the node is unchanged, a new one after a
  * conversion, so that a user tells a change by comparing it with the object it used last. Several users on the same
- * nodes (the module logic and a view of one vessel path) share one cache, and so one conversion and one copy of the
- * volume; the cache keeps one entry per role (volume, centerlines, segmentation). A conversion that throws
- * (vr::InputError naming the node) leaves no entry, so the next Get tries again. Thread-safe: one conversion at a
- * time.
- * \ingroup VesselReformation
+ * nodes (the module logic and a view of one vessel path) share one cache, and so one conversion; the volume is never
+ * copied (its image reads the node's voxels); the cache keeps one entry per role (volume, centerlines, segmentation). A
+ * conversion that throws (vr::InputError naming the node) leaves no entry, so the next Get tries again. Thread-safe:
+ * one conversion at a time. \ingroup VesselReformation
  */
 class ReformationInputCache
 {
 public:
-  /** The volume node as an ITK image (LPS) and its smallest voxel value (the resampling's default value). */
+  /** The volume node as an ITK image (LPS) in the node's pixel type, sharing the node's voxels
+   * (vr::ConvertVolumeNodeToStoredVolume), its intensity rescale and its smallest intensity (the resampling's default
+   * value). */
   struct Volume
   {
-    VolumeImageType::Pointer Image;
-    float                    Minimum{ 0.0f };
+    itk::ImageBase<3>::Pointer Image;
+    itk::CPRIntensityRescale   Rescale;
+    double                     Minimum{ 0.0 };
   };
   /** The segmentation node as a vessel mask (vr::MakeSegmentationMask) and the names of its regions
    * (RegionNameAttributePrefix attributes), by value; Values holds the node's voxels when it names a region (to name
@@ -86,9 +89,9 @@ public:
   DescribeSegmentationNode(const VolumeNode * node);
 
 private:
-  /** Keeps \a image as the conversion of \a node at modified time \a time, with its minimum (m_Mutex held). */
+  /** Keeps \a stored as the conversion of \a node at modified time \a time, with its minimum (m_Mutex held). */
   void
-  KeepVolume(VolumeNode * node, vtkMTimeType time, VolumeImageType::Pointer image);
+  KeepVolume(VolumeNode * node, vtkMTimeType time, const StoredVolume & stored);
 
   std::mutex m_Mutex;
 

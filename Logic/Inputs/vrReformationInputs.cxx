@@ -68,7 +68,7 @@ MakePhantomInputs(const std::string & name, double spacing)
     throw InputError("phantom \"" + name + "\": " + error.GetDescription());
   }
   ReformationInputs inputs =
-    MakeInputs(ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), phantom.Description),
+    MakeInputs(ConvertStoredVolumeToVolumeNode(StoredVolume{ phantom.Source->GetOutput(), {} }, phantom.Description),
                ConvertTreeToCenterlineNode(phantom.Tree, phantom.Description + " centerlines"));
   std::ostringstream source;
   source << phantom.Name << " phantom, " << phantom.Description << " (" << spacing << " mm voxels)";
@@ -83,8 +83,8 @@ MakePhantomInputs(const std::string & name, double spacing)
 vtkSmartPointer<VolumeNode>
 ReadVolumeNode(const std::string & path)
 {
-  const VolumeImageType::Pointer image = ReadVolume(path);
-  return ConvertItkImageToVolumeNode(image, path);
+  // In the file's pixel type, the node sharing the voxels the reader put in memory.
+  return ConvertStoredVolumeToVolumeNode(ReadStoredVolume(path), path);
 }
 
 vtkSmartPointer<CenterlineNode>

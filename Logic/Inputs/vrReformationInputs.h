@@ -72,9 +72,10 @@ PhantomNames();
 ReformationInputs
 MakePhantomInputs(const std::string & name, double spacing);
 
-/** Reads a volume (NRRD, NIfTI, MetaImage, or a DICOM series folder) into a volume node.
+/** Reads a volume (NRRD, NIfTI, MetaImage, or a DICOM series folder) into a volume node, in the pixel type of its
+ * file (vr::ReadStoredVolume): the node holds the one copy of the voxels that the logic then samples.
  * \param path the file or folder.
- * \return the node. Throws vr::InputError naming the file (vr::ReadVolume's messages). */
+ * \return the node. Throws vr::InputError naming the file (vr::ReadStoredVolume's messages). */
 vtkSmartPointer<VolumeNode>
 ReadVolumeNode(const std::string & path);
 

@@ -2,18 +2,27 @@
 #include "vrNodeConversion.h"
 
 #include "itkCPRViewGeometry.h"
+#include "itkCPRVolumeSampler.h"
 #include "itkMetaDataObject.h"
 #include "vrCenterlinePolyData.h"
 #include "vrCoordinateFrames.h"
+#include "vrAvailableMemory.h"
 #include "vrInputError.h"
 
+#include "itkImportImageContainer.h"
+
+#include <vtkDataArray.h>
 #include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkInformationObjectBaseKey.h>
+#include <vtkObjectFactory.h>
 #include <vtkMatrix3x3.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
 #include <vtkSetGet.h>
 
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 #include <sstream>
 
@@ -42,11 +51,111 @@ AsPoint(double x, double y, double z)
 
 template<typename TSource>
 void
-CopyAsFloat(const TSource * source, std::size_t count, float * target)
+CopyAsFloat(const TSource * source, std::size_t count, const itk::CPRIntensityRescale & rescale, float * target)
 {
+  if (rescale.IsIdentity())
+  {
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      target[k] = static_cast<float>(source[k]);
+    }
+    return;
+  }
   for (std::size_t k = 0; k < count; ++k)
   {
-    target[k] = static_cast<float>(source[k]);
+    target[k] = static_cast<float>(rescale.Apply(static_cast<double>(source[k])));
+  }
+}
+
+/** Keeps what owns shared voxels alive for as long as a VTK array reads them: held in the array's information, so it
+ * goes with the array (a plain free function, all VTK offers for a foreign buffer, cannot carry it). */
+class VoxelOwner : public vtkObject
+{
+public:
+  static VoxelOwner *
+  New();
+  vtkTypeMacro(VoxelOwner, vtkObject);
+  std::shared_ptr<const void> Owner;
+
+protected:
+  VoxelOwner() = default;
+  ~VoxelOwner() override = default;
+
+private:
+  VoxelOwner(const VoxelOwner &) = delete;
+  void
+  operator=(const VoxelOwner &) = delete;
+};
+vtkStandardNewMacro(VoxelOwner);
+
+vtkInformationObjectBaseKey *
+VoxelOwnerKey()
+{
+  // Deleted at exit by VTK's key manager, as every information key.
+  static auto * key = new vtkInformationObjectBaseKey("VoxelOwner", "vr::VolumeNode");
+  return key;
+}
+
+/** A VTK array of \a count values of \a vtkType read in place at \a voxels, holding \a owner. */
+vtkSmartPointer<vtkDataArray>
+WrapVoxels(void * voxels, int vtkType, vtkIdType count, std::shared_ptr<const void> owner)
+{
+  auto array = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(vtkType));
+  array->SetNumberOfComponents(1);
+  array->SetVoidArray(voxels, count, 1); // 1: VTK never frees these voxels; the owner does
+  auto holder = vtkSmartPointer<VoxelOwner>::New();
+  holder->Owner = std::move(owner);
+  array->GetInformation()->Set(VoxelOwnerKey(), holder);
+  return array;
+}
+
+/** An ITK pixel container reading voxels in place, holding what owns them (a VTK array, another image's container). */
+template<typename TPixel>
+class SharedVoxelContainer : public itk::ImportImageContainer<itk::SizeValueType, TPixel>
+{
+public:
+  ITK_DISALLOW_COPY_AND_MOVE(SharedVoxelContainer);
+  using Self = SharedVoxelContainer;
+  using Superclass = itk::ImportImageContainer<itk::SizeValueType, TPixel>;
+  using Pointer = itk::SmartPointer<Self>;
+  itkNewMacro(Self);
+  itkTypeMacro(SharedVoxelContainer, ImportImageContainer);
+
+  void
+  Share(TPixel * voxels, itk::SizeValueType count, std::shared_ptr<const void> owner)
+  {
+    this->SetImportPointer(voxels, count, false);
+    m_Owner = std::move(owner);
+  }
+
+protected:
+  SharedVoxelContainer() = default;
+  ~SharedVoxelContainer() override = default;
+
+private:
+  std::shared_ptr<const void> m_Owner;
+};
+
+/** The VTK scalar type of a stored pixel type; -1 for another type. */
+int
+VTKTypeOf(itk::IOComponentEnum pixelType)
+{
+  switch (pixelType)
+  {
+    case itk::IOComponentEnum::CHAR:
+      return VTK_SIGNED_CHAR;
+    case itk::IOComponentEnum::UCHAR:
+      return VTK_UNSIGNED_CHAR;
+    case itk::IOComponentEnum::SHORT:
+      return VTK_SHORT;
+    case itk::IOComponentEnum::USHORT:
+      return VTK_UNSIGNED_SHORT;
+    case itk::IOComponentEnum::FLOAT:
+      return VTK_FLOAT;
+    case itk::IOComponentEnum::DOUBLE:
+      return VTK_DOUBLE;
+    default:
+      return -1;
   }
 }
 
@@ -235,12 +344,29 @@ ConvertNodeTo2DImage(VolumeNode * node)
 }
 } // namespace
 
-VolumeImageType::Pointer
-ConvertVolumeNodeToItkImage(VolumeNode * node)
+namespace
 {
-  const std::string what = Describe("volume node", node ? node->GetName() : std::string());
-  vtkImageData *    data = CheckedImageData(node, what);
+/** A volume node's grid in LPS, from its IJK->RAS matrix and its image data's extent. */
+struct NodeGrid
+{
+  itk::ImageBase<3>::SpacingType   Spacing;
+  itk::ImageBase<3>::DirectionType Direction;
+  itk::ImageBase<3>::PointType     Origin;
+  itk::ImageBase<3>::RegionType    Region;
 
+  void
+  ConfigureImage(itk::ImageBase<3> & image) const
+  {
+    image.SetRegions(Region);
+    image.SetSpacing(Spacing);
+    image.SetDirection(Direction);
+    image.SetOrigin(Origin);
+  }
+};
+
+NodeGrid
+GridOfNode(VolumeNode * node, vtkImageData * data, const std::string & what)
+{
   vtkMatrix4x4 * ijkToRAS = node->GetIJKToRASMatrix();
   bool           finite = true;
   for (int r = 0; r < 4; ++r)
@@ -256,8 +382,7 @@ ConvertVolumeNodeToItkImage(VolumeNode * node)
     throw InputError(what + ": IJKToRAS is not a finite affine matrix (last row must be 0 0 0 1)");
   }
 
-  VolumeImageType::SpacingType   spacing;
-  VolumeImageType::DirectionType direction;
+  NodeGrid grid;
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
     const Point3 column =
@@ -267,81 +392,142 @@ ConvertVolumeNodeToItkImage(VolumeNode * node)
     {
       throw InputError(what + ": IJKToRAS column " + std::to_string(axis) + " is zero, so the voxel spacing is 0");
     }
-    spacing[axis] = length;
+    grid.Spacing[axis] = length;
     for (unsigned int row = 0; row < 3; ++row)
     {
-      direction[row][axis] = column[row] / length;
+      grid.Direction[row][axis] = column[row] / length;
     }
   }
-  if (std::abs(vnl_determinant(direction.GetVnlMatrix())) < 1e-6)
+  if (std::abs(vnl_determinant(grid.Direction.GetVnlMatrix())) < 1e-6)
   {
     throw InputError(what + ": IJKToRAS is singular (its axes are parallel)");
   }
   const Point3 origin =
     RASToLPS(AsPoint(ijkToRAS->GetElement(0, 3), ijkToRAS->GetElement(1, 3), ijkToRAS->GetElement(2, 3)));
+  grid.Origin = origin;
 
   int extent[6];
   data->GetExtent(extent);
-  VolumeImageType::RegionType region;
   for (unsigned int axis = 0; axis < 3; ++axis)
   {
-    region.SetIndex(axis, extent[2 * axis]);
-    region.SetSize(axis,
-                   static_cast<itk::SizeValueType>(extent[2 * axis + 1]) -
-                     static_cast<itk::SizeValueType>(extent[2 * axis]) + 1);
+    grid.Region.SetIndex(axis, extent[2 * axis]);
+    grid.Region.SetSize(axis,
+                        static_cast<itk::SizeValueType>(extent[2 * axis + 1]) -
+                          static_cast<itk::SizeValueType>(extent[2 * axis]) + 1);
+  }
+  const auto scalars = data->GetPointData()->GetScalars();
+  if (static_cast<std::uint64_t>(scalars->GetNumberOfTuples()) != grid.Region.GetNumberOfPixels())
+  {
+    throw InputError(what + ": its voxel array holds " + std::to_string(scalars->GetNumberOfTuples()) + " values for " +
+                     std::to_string(grid.Region.GetNumberOfPixels()) + " voxels");
+  }
+  return grid;
+}
+
+/** The node's voxels as an ITK image of their own type, sharing them. */
+template<typename TPixel>
+StoredVolume
+ShareNodeVoxels(const NodeGrid & grid, vtkDataArray * scalars, const itk::CPRIntensityRescale & rescale)
+{
+  auto image = itk::Image<TPixel, 3>::New();
+  grid.ConfigureImage(*image);
+  auto container = SharedVoxelContainer<TPixel>::New();
+  container->Share(static_cast<TPixel *>(scalars->GetVoidPointer(0)),
+                   grid.Region.GetNumberOfPixels(),
+                   std::make_shared<vtkSmartPointer<vtkDataArray>>(scalars));
+  image->SetPixelContainer(container);
+  return StoredVolume{ image.GetPointer(), rescale };
+}
+
+VolumeImageType::Pointer
+CopyNodeVoxelsAsFloat(const NodeGrid & grid, vtkImageData * data, VolumeNode * node, const std::string & what)
+{
+  // Refused before it is allocated, naming the bytes, as a reader refuses a volume that does not fit.
+  const double needed = static_cast<double>(grid.Region.GetNumberOfPixels()) * sizeof(float);
+  const double available = AvailableMemoryInBytes();
+  if (needed > available)
+  {
+    throw InputError(what + ": its voxels as float (a copy, for voxels of type " +
+                     std::string(data->GetScalarTypeAsString()) + ") need " + DescribeBytes(needed) +
+                     " of memory, more than the " + DescribeBytes(available) + " available");
   }
   auto image = VolumeImageType::New();
-  image->SetRegions(region);
-  image->SetSpacing(spacing);
-  image->SetDirection(direction);
-  image->SetOrigin(origin);
+  grid.ConfigureImage(*image);
   image->Allocate();
-  const std::size_t count = region.GetNumberOfPixels();
-  float *           target = image->GetBufferPointer();
+  const std::size_t                count = grid.Region.GetNumberOfPixels();
+  float *                          target = image->GetBufferPointer();
+  const itk::CPRIntensityRescale & rescale = node->GetIntensityRescale();
   switch (data->GetScalarType())
   {
-    vtkTemplateMacro(CopyAsFloat(static_cast<const VTK_TT *>(data->GetScalarPointer()), count, target));
+    vtkTemplateMacro(CopyAsFloat(static_cast<const VTK_TT *>(data->GetScalarPointer()), count, rescale, target));
     default:
       throw InputError(what + ": voxel type " + std::string(data->GetScalarTypeAsString()) + " is not supported");
   }
   return image;
 }
 
-vtkSmartPointer<vtkMatrix4x4>
-IJKToRASMatrixOf(const itk::ImageBase<3> * image)
+void
+CheckRescale(const itk::CPRIntensityRescale & rescale, const std::string & what)
 {
-  const auto & direction = image->GetDirection();
-  const auto & spacing = image->GetSpacing();
-  auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
-  for (unsigned int axis = 0; axis < 3; ++axis)
+  if (!rescale.IsValid())
   {
-    const Point3 column = LPSToRAS(AsPoint(
-      direction[0][axis] * spacing[axis], direction[1][axis] * spacing[axis], direction[2][axis] * spacing[axis]));
-    for (unsigned int row = 0; row < 3; ++row)
+    std::ostringstream message;
+    message << what << ": its intensity rescale (" << rescale
+            << ") is invalid: both must be finite and the slope must not be 0";
+    throw InputError(message.str());
+  }
+}
+} // namespace
+
+StoredVolume
+ConvertVolumeNodeToStoredVolume(VolumeNode * node)
+{
+  const std::string what = Describe("volume node", node ? node->GetName() : std::string());
+  vtkImageData *    data = CheckedImageData(node, what);
+  const NodeGrid    grid = GridOfNode(node, data, what);
+  const auto &      rescale = node->GetIntensityRescale();
+  CheckRescale(rescale, what);
+  vtkDataArray * scalars = data->GetPointData()->GetScalars();
+  if (scalars->HasStandardMemoryLayout())
+  {
+    switch (scalars->GetDataType())
     {
-      matrix->SetElement(row, axis, column[row]);
+      case VTK_SHORT:
+        return ShareNodeVoxels<short>(grid, scalars, rescale);
+      case VTK_UNSIGNED_SHORT:
+        return ShareNodeVoxels<unsigned short>(grid, scalars, rescale);
+      case VTK_FLOAT:
+        return ShareNodeVoxels<float>(grid, scalars, rescale);
+      case VTK_DOUBLE:
+        return ShareNodeVoxels<double>(grid, scalars, rescale);
+      case VTK_UNSIGNED_CHAR:
+        return ShareNodeVoxels<unsigned char>(grid, scalars, rescale);
+      case VTK_SIGNED_CHAR:
+        return ShareNodeVoxels<signed char>(grid, scalars, rescale);
+      default:
+        break;
     }
   }
-  const Point3 origin = LPSToRAS(image->GetOrigin());
-  for (unsigned int row = 0; row < 3; ++row)
-  {
-    matrix->SetElement(row, 3, origin[row]);
-  }
-  return matrix;
+  return StoredVolume{ CopyNodeVoxelsAsFloat(grid, data, node, what).GetPointer(), itk::CPRIntensityRescale() };
+}
+
+VolumeImageType::Pointer
+ConvertVolumeNodeToItkImage(VolumeNode * node)
+{
+  const std::string what = Describe("volume node", node ? node->GetName() : std::string());
+  vtkImageData *    data = CheckedImageData(node, what);
+  const NodeGrid    grid = GridOfNode(node, data, what);
+  CheckRescale(node->GetIntensityRescale(), what);
+  return CopyNodeVoxelsAsFloat(grid, data, node, what);
 }
 
 namespace
 {
-/** A 3D ITK image in LPS as a volume node of voxels of \a vtkType (the image's pixel type). */
-template<typename TImage>
-vtkSmartPointer<VolumeNode>
-Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name)
+/** The image data of a 3D image's grid: the extent from its buffered region, no scalars yet. */
+vtkSmartPointer<vtkImageData>
+ImageDataOfGrid(const itk::ImageBase<3> & image)
 {
-  if (image == nullptr)
-  {
-    throw InputError(Describe("volume", name) + ": no image given");
-  }
-  const auto & region = image->GetBufferedRegion();
+  const auto & region = image.GetBufferedRegion();
   auto         data = vtkSmartPointer<vtkImageData>::New();
   int          extent[6];
   for (unsigned int axis = 0; axis < 3; ++axis)
@@ -350,17 +536,19 @@ Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name
     extent[2 * axis + 1] = static_cast<int>(region.GetIndex(axis) + region.GetSize(axis)) - 1;
   }
   data->SetExtent(extent);
-  data->AllocateScalars(vtkType, 1);
-  std::copy(image->GetBufferPointer(),
-            image->GetBufferPointer() + region.GetNumberOfPixels(),
-            static_cast<typename TImage::PixelType *>(data->GetScalarPointer()));
+  return data;
+}
 
+/** A node of \a data placed by the geometry of \a image (IJK->RAS), with the image's DICOM attributes. */
+vtkSmartPointer<VolumeNode>
+MakeNodeOfImage(const itk::ImageBase<3> & image, vtkImageData * data, const std::string & name)
+{
   auto node = vtkSmartPointer<VolumeNode>::New();
   node->SetName(name);
   node->SetImageData(data);
   node->SetIJKToRASMatrix(IJKToRASMatrixOf(image));
   // What a reader knew of the patient and study (DICOM's, vr::DICOMAttribute) becomes the node's attributes.
-  const auto & dictionary = image->GetMetaDataDictionary();
+  const auto & dictionary = image.GetMetaDataDictionary();
   for (const auto & key : dictionary.GetKeys())
   {
     std::string value;
@@ -371,7 +559,120 @@ Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name
   }
   return node;
 }
+
+/** A 3D ITK image in LPS as a volume node of voxels of \a vtkType (the image's pixel type), copied. */
+template<typename TImage>
+vtkSmartPointer<VolumeNode>
+Convert3DImageToNode(const TImage * image, int vtkType, const std::string & name)
+{
+  if (image == nullptr)
+  {
+    throw InputError(Describe("volume", name) + ": no image given");
+  }
+  auto data = ImageDataOfGrid(*image);
+  data->AllocateScalars(vtkType, 1);
+  std::copy(image->GetBufferPointer(),
+            image->GetBufferPointer() + image->GetBufferedRegion().GetNumberOfPixels(),
+            static_cast<typename TImage::PixelType *>(data->GetScalarPointer()));
+  return MakeNodeOfImage(*image, data, name);
+}
 } // namespace
+
+vtkSmartPointer<vtkMatrix4x4>
+IJKToRASMatrixOf(const itk::ImageBase<3> & image)
+{
+  const auto & direction = image.GetDirection();
+  const auto & spacing = image.GetSpacing();
+  auto         matrix = vtkSmartPointer<vtkMatrix4x4>::New();
+  for (unsigned int axis = 0; axis < 3; ++axis)
+  {
+    const Point3 column = LPSToRAS(AsPoint(
+      direction[0][axis] * spacing[axis], direction[1][axis] * spacing[axis], direction[2][axis] * spacing[axis]));
+    for (unsigned int row = 0; row < 3; ++row)
+    {
+      matrix->SetElement(row, axis, column[row]);
+    }
+  }
+  const Point3 origin = LPSToRAS(image.GetOrigin());
+  for (unsigned int row = 0; row < 3; ++row)
+  {
+    matrix->SetElement(row, 3, origin[row]);
+  }
+  return matrix;
+}
+
+vtkSmartPointer<VolumeNode>
+ConvertStoredVolumeToVolumeNode(const StoredVolume & volume, const std::string & name)
+{
+  const std::string what = Describe("volume", name);
+  if (!volume.Image)
+  {
+    throw InputError(what + ": no image given");
+  }
+  CheckRescale(volume.Rescale, what);
+  const int vtkType = VTKTypeOf(volume.GetPixelType());
+  if (vtkType < 0)
+  {
+    throw InputError(what + ": its pixel type is not one a volume is kept in (" +
+                     std::string(itk::detail::CPRStoredPixelTypes) + ")");
+  }
+  auto data = ImageDataOfGrid(*volume.Image);
+  // The node's array reads the image's buffer and holds its pixel container (the buffer's owner).
+  itk::detail::VisitStoredVolume(volume.Image.GetPointer(),
+                                 [&data, vtkType](auto * image)
+                                 {
+                                   auto owner = std::make_shared<itk::Object::Pointer>(image->GetPixelContainer());
+                                   data->GetPointData()->SetScalars(
+                                     WrapVoxels(image->GetBufferPointer(),
+                                                vtkType,
+                                                static_cast<vtkIdType>(image->GetBufferedRegion().GetNumberOfPixels()),
+                                                std::move(owner)));
+                                 });
+  auto node = MakeNodeOfImage(*volume.Image, data, name);
+  node->SetIntensityRescale(volume.Rescale);
+  return node;
+}
+
+vtkSmartPointer<VolumeNode>
+WrapVoxelBuffer(void *                           voxels,
+                itk::IOComponentEnum             pixelType,
+                const std::array<int, 3> &       dimensions,
+                vtkMatrix4x4 *                   ijkToRAS,
+                std::shared_ptr<const void>      owner,
+                const std::string &              name,
+                const itk::CPRIntensityRescale & rescale)
+{
+  const std::string what = Describe("voxel buffer", name);
+  if (voxels == nullptr)
+  {
+    throw InputError(what + ": no voxels given (a null pointer)");
+  }
+  const int vtkType = VTKTypeOf(pixelType);
+  if (vtkType < 0)
+  {
+    std::ostringstream message;
+    message << what << ": pixel type " << pixelType << " is not one a volume is kept in ("
+            << itk::detail::CPRStoredPixelTypes << ")";
+    throw InputError(message.str());
+  }
+  if (dimensions[0] < 1 || dimensions[1] < 1 || dimensions[2] < 1)
+  {
+    throw InputError(what + ": its dimensions " + std::to_string(dimensions[0]) + " x " +
+                     std::to_string(dimensions[1]) + " x " + std::to_string(dimensions[2]) +
+                     " leave an axis empty; each must be at least 1");
+  }
+  CheckRescale(rescale, what);
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  data->SetExtent(0, dimensions[0] - 1, 0, dimensions[1] - 1, 0, dimensions[2] - 1);
+  const vtkIdType count = static_cast<vtkIdType>(dimensions[0]) * dimensions[1] * dimensions[2];
+  data->GetPointData()->SetScalars(WrapVoxels(voxels, vtkType, count, std::move(owner)));
+  auto node = vtkSmartPointer<VolumeNode>::New();
+  node->SetName(name);
+  node->SetImageData(data);
+  node->SetIJKToRASMatrix(ijkToRAS);
+  node->SetIntensityRescale(rescale);
+  return node;
+}
 
 vtkSmartPointer<VolumeNode>
 ConvertItkImageToVolumeNode(const VolumeImageType * image, const std::string & name)

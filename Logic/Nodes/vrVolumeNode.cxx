@@ -43,6 +43,16 @@ VolumeNode::SetIJKToRASMatrix(vtkMatrix4x4 * matrix)
 }
 
 void
+VolumeNode::SetIntensityRescale(const itk::CPRIntensityRescale & rescale)
+{
+  if (m_IntensityRescale != rescale)
+  {
+    m_IntensityRescale = rescale;
+    this->Modified();
+  }
+}
+
+void
 VolumeNode::SetName(const std::string & name)
 {
   if (m_Name != name)
@@ -89,6 +99,10 @@ VolumeNode::PrintSelf(ostream & os, vtkIndent indent)
     int dimensions[3];
     m_ImageData->GetDimensions(dimensions);
     os << indent << "Dimensions: " << dimensions[0] << " x " << dimensions[1] << " x " << dimensions[2] << "\n";
+  }
+  if (!m_IntensityRescale.IsIdentity())
+  {
+    os << indent << "IntensityRescale: " << m_IntensityRescale << "\n";
   }
   os << indent << "IJKToRAS:\n";
   m_IJKToRAS->PrintSelf(os, indent.GetNextIndent());

@@ -2,6 +2,8 @@
 #ifndef vrVolumeNode_h
 #define vrVolumeNode_h
 
+#include "itkCPRIntensityRescale.h"
+
 #include <vtkImageData.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObject.h>
@@ -20,7 +22,13 @@ namespace vr
  * millimetres. String attributes travel with the node, as MRML node attributes do; the 2D outputs of the
  * reformation keep their view there ("CPR_*" entries, LPS, see itk::CPRViewGeometry).
  *
- * The logic converts nodes to ITK images in one place, vrNodeConversion.h.
+ * The voxels keep the pixel type of their file (docs/design.md "Volumes in their stored type"): a CT of 16-bit integers
+ * stays one, its intensity rescale (DICOM's rescale slope and intercept, NIfTI's scl_slope and scl_inter) held beside
+ * it and applied by the filters to each value they read. 3D Slicer's node applies the rescale when it loads a series;
+ * a platform that hands over voxels already rescaled leaves the node's at the identity.
+ *
+ * The logic converts nodes to ITK images in one place, vrNodeConversion.h; the ITK image of a node shares its voxels
+ * (ConvertVolumeNodeToStoredVolume). WrapVoxelBuffer() makes a node of voxels someone else owns, without a copy.
  *
  * \sa CenterlineNode, VesselReformationLogic
  * \ingroup VesselReformation
@@ -52,6 +60,16 @@ public:
   GetIJKToRASMatrix() const
   {
     return m_IJKToRAS;
+  }
+
+  /** \param rescale how the stored voxel values map to intensities (slope and intercept); identity by default. */
+  void
+  SetIntensityRescale(const itk::CPRIntensityRescale & rescale);
+  /** \return how the stored voxel values map to intensities. */
+  const itk::CPRIntensityRescale &
+  GetIntensityRescale() const
+  {
+    return m_IntensityRescale;
   }
 
   /** \param name a name for messages ("aorta.mha"). */
@@ -95,6 +113,7 @@ private:
 
   vtkSmartPointer<vtkImageData>      m_ImageData;
   vtkSmartPointer<vtkMatrix4x4>      m_IJKToRAS;
+  itk::CPRIntensityRescale           m_IntensityRescale;
   std::string                        m_Name;
   std::map<std::string, std::string> m_Attributes;
 };

@@ -6,27 +6,16 @@
 #include "vrParameterName.h"
 
 #include <climits>
-#include <fstream>
-#include <iomanip>
 #include <sstream>
 #include <string>
-#include <unistd.h>
 
 namespace vr
 {
-namespace
-{
-std::string
-Gibibytes(double bytes)
-{
-  std::ostringstream text;
-  text << std::setprecision(3) << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
-  return text.str();
-}
-} // namespace
-
 double
-EstimateReformationBytes(const itk::Size<2> & size, std::size_t relaxWorkspaceBytes, bool surface)
+EstimateReformationBytes(const itk::Size<2> & size,
+                         std::size_t          relaxWorkspaceBytes,
+                         bool                 surface,
+                         double               volumeSamplingBytes)
 {
   // Bytes per view pixel at the peak of an update besides the relaxation's workspace, counted as allocated bytes
   // (Testing/Tools/MeasureReformationMemory; 71.0-71.3 and 83.8-83.9 at 256 x 512, 512 x 1024 and 1024 x 2048):
@@ -40,33 +29,22 @@ EstimateReformationBytes(const itk::Size<2> & size, std::size_t relaxWorkspaceBy
     perPixel += 84.0;
   }
   return perPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]) +
-         static_cast<double>(relaxWorkspaceBytes);
+         static_cast<double>(relaxWorkspaceBytes) + volumeSamplingBytes;
 }
 
 double
-AvailableMemoryInBytes()
+EstimateVolumeSamplingBytes(double voxels, itk::CPRInterpolationMode interpolation)
 {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string   key;
-  double        kibibytes = 0.0;
-  std::string   unit;
-  while (meminfo >> key >> kibibytes >> unit)
-  {
-    if (key == "MemAvailable:")
-    {
-      return kibibytes * 1024.0;
-    }
-  }
-  const long pages = ::sysconf(_SC_AVPHYS_PAGES);
-  const long pageSize = ::sysconf(_SC_PAGESIZE);
-  return pages > 0 && pageSize > 0 ? static_cast<double>(pages) * pageSize : 1e18;
+  // Both resample filters keep their interpolator between updates, and each cubic one its coefficients (float).
+  return interpolation == itk::CPRInterpolationMode::Cubic ? 2.0 * sizeof(float) * voxels : 0.0;
 }
 
 void
 CheckViewFitsInMemory(const itk::CPRViewGeometry &                           view,
                       bool                                                   sizeGiven,
                       itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & relax,
-                      bool                                                   surface)
+                      bool                                                   surface,
+                      double                                                 volumeSamplingBytes)
 {
   const auto &       size = view.GetSize();
   std::ostringstream origin;
@@ -85,13 +63,18 @@ CheckViewFitsInMemory(const itk::CPRViewGeometry &                           vie
     throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
                      parameter);
   }
-  const double needed = EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface);
+  const double needed = EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface, volumeSamplingBytes);
   const double available = AvailableMemoryInBytes();
   if (needed > available)
   {
-    throw InputError(origin.str() + ": the images would need about " + Gibibytes(needed) + ", more than the " +
-                       Gibibytes(available) +
-                       " of memory available; choose a smaller view size or a larger pixel spacing",
+    throw InputError(origin.str() + ": the reformation would need about " + DescribeBytes(needed) +
+                       (volumeSamplingBytes > 0.0 ? " (of it " + DescribeBytes(volumeSamplingBytes) +
+                                                      " for the cubic interpolation's "
+                                                      "coefficients of the volume)"
+                                                  : std::string()) +
+                       ", more than the " + DescribeBytes(available) +
+                       " of memory available; choose a smaller view size or a larger pixel spacing" +
+                       (volumeSamplingBytes > 0.0 ? ", or linear interpolation" : ""),
                      parameter);
   }
 }

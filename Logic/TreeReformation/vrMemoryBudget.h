@@ -3,8 +3,10 @@
 #define vrMemoryBudget_h
 
 #include "itkBilateralDepthRelaxFilter.h"
+#include "itkCPRSamplingModes.h"
 #include "itkImage.h"
 #include "itkSize.h"
+#include "vrAvailableMemory.h"
 
 #include <cstddef>
 
@@ -23,23 +25,30 @@ namespace vr
  * labels, relaxed depth, both CPRs, the output nodes; measured per view pixel), the relaxation's workspace as its
  * filter reports it, and the surface. A test counts what updates allocate: with the workspace of the path a solve
  * takes, within 10 % (measured: 0.2 %); CheckViewFitsInMemory() counts the most a steady solve allocates (its
- * coarser grids), 14 to 21 % above an update whose solve needs none (docs/design.md 3.7). */
+ * coarser grids), 14 to 21 % above an update whose solve needs none (docs/design.md 3.7).
+ * \param volumeSamplingBytes what sampling the volume allocates besides it (EstimateVolumeSamplingBytes()). */
 double
-EstimateReformationBytes(const itk::Size<2> & size, std::size_t relaxWorkspaceBytes, bool surface = true);
+EstimateReformationBytes(const itk::Size<2> & size,
+                         std::size_t          relaxWorkspaceBytes,
+                         bool                 surface = true,
+                         double               volumeSamplingBytes = 0.0);
 
-/** \return the memory this process may still allocate, in bytes (MemAvailable of /proc/meminfo, else the free
- * physical pages). */
+/** \return the bytes the two resample filters of an update allocate for a volume of \a voxels voxels besides the
+ * volume itself, which they read in its stored type and never copy: nothing for linear and nearest interpolation; for
+ * cubic, each filter's B-spline coefficients, a float image the size of the volume (8 bytes a voxel for the two). */
 double
-AvailableMemoryInBytes();
+EstimateVolumeSamplingBytes(double voxels, itk::CPRInterpolationMode interpolation);
 
 /** Refuses, before anything is allocated, a view of more than INT_MAX pixels a side or one whose reformation would
- * need more than AvailableMemoryInBytes() (EstimateReformationBytes() with \a relax's workspace and \a surface):
- * vr::InputError naming the view size (\a sizeGiven) or else the pixel spacing it follows from. */
+ * need more than AvailableMemoryInBytes() (EstimateReformationBytes() with \a relax's workspace, \a surface and
+ * \a volumeSamplingBytes): vr::InputError naming the view size (\a sizeGiven) or else the pixel spacing it follows
+ * from, and the bytes needed and available. */
 void
 CheckViewFitsInMemory(const itk::CPRViewGeometry &                           view,
                       bool                                                   sizeGiven,
                       itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & relax,
-                      bool                                                   surface);
+                      bool                                                   surface,
+                      double                                                 volumeSamplingBytes = 0.0);
 } // namespace vr
 
 #endif

@@ -53,8 +53,10 @@ struct VesselReformationLogic::Internals
 
   // The inputs as ITK sees them, from the cache (converted again only when a node changes; possibly shared with
   // another logic on the same nodes): the ones this logic's pipeline holds now.
-  std::shared_ptr<ReformationInputCache>                     Inputs = std::make_shared<ReformationInputCache>();
-  std::shared_ptr<const ReformationInputCache::Volume>       Volume;
+  std::shared_ptr<ReformationInputCache>               Inputs = std::make_shared<ReformationInputCache>();
+  std::shared_ptr<const ReformationInputCache::Volume> Volume;
+  // The volume whose cubic B-spline coefficients the resamplers hold (they keep them between updates), or null.
+  const ReformationInputCache::Volume *                      CubicCoefficientsOf{ nullptr };
   std::shared_ptr<const ReformationInputCache::Segmentation> Segmentation;
   std::shared_ptr<const itk::CenterlineTree>                 Tree;
   bool                                                       VolumeChanged{ false };
@@ -357,10 +359,11 @@ VesselReformationLogic::Internals::ConfigurePipeline()
   for (ResampleFilterType * resample : { UnfilteredResample.GetPointer(), RelaxedResample.GetPointer() })
   {
     resample->SetVolume(Volume->Image);
+    resample->SetIntensityRescale(Volume->Rescale);
     resample->SetInterpolation(Parameters.Interpolation);
     resample->SetSlabThickness(Parameters.SlabThickness);
     resample->SetSlabMode(Parameters.SlabMode);
-    resample->SetDefaultValue(Volume->Minimum);
+    resample->SetDefaultValue(static_cast<float>(Volume->Minimum));
   }
   RelaxedResample->SetDepth(Relax->GetOutput());
 }
@@ -578,7 +581,18 @@ VesselReformationLogic::Update()
     }
     detail::RethrowFilterError("view", error);
   }
-  CheckViewFitsInMemory(d.Depth->GetView(), d.Parameters.ImageSize[0] > 0, *d.Relax, d.SurfaceEnabled);
+  // The volume is sampled where it lies, in its stored type: only cubic interpolation allocates for it (the
+  // coefficients, which the resamplers then keep for the next views of the same volume), and the check counts that.
+  const bool cubicHeld =
+    d.Parameters.Interpolation == itk::CPRInterpolationMode::Cubic && d.CubicCoefficientsOf == d.Volume.get();
+  CheckViewFitsInMemory(d.Depth->GetView(),
+                        d.Parameters.ImageSize[0] > 0,
+                        *d.Relax,
+                        d.SurfaceEnabled,
+                        cubicHeld ? 0.0
+                                  : EstimateVolumeSamplingBytes(
+                                      static_cast<double>(d.Volume->Image->GetBufferedRegion().GetNumberOfPixels()),
+                                      d.Parameters.Interpolation));
   d.PlanProgress();
 
   const StageCounts before = GetStageExecutionCounts();
@@ -593,6 +607,7 @@ VesselReformationLogic::Update()
   }
   d.Monitor.Run(d.UnfilteredResample, "resample");
   d.Monitor.Run(d.RelaxedResample, "resample");
+  d.CubicCoefficientsOf = d.Parameters.Interpolation == itk::CPRInterpolationMode::Cubic ? d.Volume.get() : nullptr;
   d.Counts = GetStageExecutionCounts();
   const bool resampled =
     d.Counts.UnfilteredSamplings != before.UnfilteredSamplings || d.Counts.RelaxedSamplings != before.RelaxedSamplings;

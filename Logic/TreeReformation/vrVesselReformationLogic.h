@@ -134,7 +134,8 @@ public:
   /** Receives each warning as it arises, and the parameter it concerns by meaning (vr::ParameterName), or "". */
   using WarningCallback = std::function<void(const std::string & message, const std::string & parameter)>;
   using DepthFilterType = itk::CPRDepthImageFilter<DepthImageType>;
-  using ResampleFilterType = itk::CPRResampleImageFilter<VolumeImageType, DepthImageType, DepthImageType>;
+  /** Samples the volume in its stored pixel type, whichever it is (docs/design.md "Volumes in their stored type"). */
+  using ResampleFilterType = itk::CPRResampleImageFilter<itk::ImageBase<3>, DepthImageType, DepthImageType>;
 
   VesselReformationLogic();
   ~VesselReformationLogic();

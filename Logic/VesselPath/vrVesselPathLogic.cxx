@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrVesselPathLogic.h"
 
+#include "itkCPRVolumeSampler.h"
 #include "itkCrossSectionStackImageFilter.h"
 #include "itkRotationMinimizingFrame.h"
 #include "itkStraightenedCPRImageFilter.h"
@@ -16,8 +17,9 @@ namespace vr
 {
 namespace
 {
-using CPRFilterType = itk::StraightenedCPRImageFilter<VolumeImageType, DepthImageType>;
-using StackFilterType = itk::CrossSectionStackImageFilter<VolumeImageType, VolumeImageType>;
+// The volume in its stored pixel type, whichever it is (docs/design.md "Volumes in their stored type").
+using CPRFilterType = itk::StraightenedCPRImageFilter<itk::ImageBase<3>, DepthImageType>;
+using StackFilterType = itk::CrossSectionStackImageFilter<itk::ImageBase<3>, VolumeImageType>;
 
 /** What identifies an image's content for the recompute rules: the object, its buffer and its modified time. */
 struct ImageStamp
@@ -26,11 +28,16 @@ struct ImageStamp
   const void *          Buffer{ nullptr };
   itk::ModifiedTimeType Time{ 0 };
 
-  template<typename TImage>
   static ImageStamp
-  Of(const TImage * image)
+  Of(const itk::ImageBase<3> * image)
   {
-    return image ? ImageStamp{ image, image->GetBufferPointer(), image->GetMTime() } : ImageStamp{};
+    return image ? ImageStamp{ image, BufferOf(image), image->GetMTime() } : ImageStamp{};
+  }
+  static const void *
+  BufferOf(const itk::ImageBase<3> * image)
+  {
+    return itk::detail::VisitStoredVolume(image,
+                                          [](const auto * typed) -> const void * { return typed->GetBufferPointer(); });
   }
   bool
   operator==(const ImageStamp & other) const
@@ -52,7 +59,7 @@ Describe(const itk::ExceptionObject & error)
 
 /** The tree view of \a parameters on \a tree (for the frame's start and the stretch direction). */
 itk::CPRViewGeometry
-TreeView(const VesselPathParameters & parameters, const itk::CenterlineTree & tree, const VolumeImageType * volume)
+TreeView(const VesselPathParameters & parameters, const itk::CenterlineTree & tree, const itk::ImageBase<3> * volume)
 {
   itk::CPRViewSpecification specification;
   specification.AutomaticUp = parameters.AutomaticUp;
@@ -64,7 +71,8 @@ TreeView(const VesselPathParameters & parameters, const itk::CenterlineTree & tr
 
 struct VesselPathLogic::Internals
 {
-  VolumeImageType::ConstPointer    Volume;
+  itk::ImageBase<3>::ConstPointer  Volume;
+  itk::CPRIntensityRescale         Rescale;
   itk::CenterlineTree              Tree;
   bool                             HasTree{ false };
   LabelMapVolumeType::ConstPointer Mask;
@@ -84,6 +92,7 @@ struct VesselPathLogic::Internals
   itk::CPRViewGeometry       View;
   bool                       ResamplingValid{ false };
   ImageStamp                 ResampledVolume;
+  itk::CPRIntensityRescale   ResampledRescale;
   VesselPathParameters       ResampledParameters;
   bool                       ResampledStack{ false };
   bool                       ResampledPoints{ false };
@@ -131,9 +140,10 @@ VesselPathLogic::VesselPathLogic()
 VesselPathLogic::~VesselPathLogic() = default;
 
 void
-VesselPathLogic::SetVolume(const VolumeImageType * volume)
+VesselPathLogic::SetVolume(const itk::ImageBase<3> * volume, const itk::CPRIntensityRescale & rescale)
 {
   m->Volume = volume;
+  m->Rescale = rescale;
 }
 
 void
@@ -264,6 +274,7 @@ VesselPathLogic::Internals::RunResampling()
     throw InputError(message.str(), ParameterName::PixelSpacing);
   }
   CPRFilter->SetVolume(Volume);
+  CPRFilter->SetIntensityRescale(Rescale);
   CPRFilter->SetPath(Results.Path);
   CPRFilter->SetView(View);
   CPRFilter->SetMode(p.Reformation == PathReformation::Stretched ? itk::VesselPathCPRMode::Stretched
@@ -303,6 +314,7 @@ VesselPathLogic::Internals::RunResampling()
     StackFilterType::SectionSpacingType sectionPixel;
     sectionPixel.Fill(spacing);
     StackFilter->SetVolume(Volume);
+    StackFilter->SetIntensityRescale(Rescale);
     StackFilter->SetPath(Results.Path);
     StackFilter->SetView(View);
     StackFilter->SetRollAngle(p.RollInDegrees);
@@ -327,6 +339,7 @@ VesselPathLogic::Internals::RunResampling()
     Results.CrossSections = nullptr;
   }
   ResampledVolume = ImageStamp::Of(Volume.GetPointer());
+  ResampledRescale = Rescale;
   ResampledParameters = p;
   ResampledStack = CrossSectionsEnabled;
   ResampledPoints = PointImageEnabled;
@@ -398,10 +411,11 @@ VesselPathLogic::Update()
   }
   const VesselPathParameters & sampled = m->ResampledParameters;
   if (!m->ResamplingValid || m->ResampledVolume != ImageStamp::Of(m->Volume.GetPointer()) ||
-      sampled.Reformation != p.Reformation || sampled.RollInDegrees != p.RollInDegrees || sampled.Width != p.Width ||
-      sampled.PixelSpacing != p.PixelSpacing || sampled.Interpolation != p.Interpolation ||
-      sampled.SlabThickness != p.SlabThickness || sampled.SlabMode != p.SlabMode ||
-      m->ResampledStack != m->CrossSectionsEnabled || m->ResampledPoints != m->PointImageEnabled)
+      m->ResampledRescale != m->Rescale || sampled.Reformation != p.Reformation ||
+      sampled.RollInDegrees != p.RollInDegrees || sampled.Width != p.Width || sampled.PixelSpacing != p.PixelSpacing ||
+      sampled.Interpolation != p.Interpolation || sampled.SlabThickness != p.SlabThickness ||
+      sampled.SlabMode != p.SlabMode || m->ResampledStack != m->CrossSectionsEnabled ||
+      m->ResampledPoints != m->PointImageEnabled)
   {
     m->RunResampling();
   }

@@ -7,6 +7,7 @@
 #include "itkVesselPath.h"
 #include "itkVesselPathSection.h"
 #include "itkVesselStenosis.h"
+#include "itkCPRIntensityRescale.h"
 #include "vrImageTypes.h"
 #include "vrVesselPathParameters.h"
 
@@ -89,9 +90,10 @@ public:
   VesselPathLogic &
   operator=(const VesselPathLogic &) = delete;
 
-  /** The volume sampled (LPS). */
+  /** The volume sampled (LPS): an itk::Image<T, 3> of a stored pixel type (vr::StoredVolume), read in place, and the
+   * rescale of its stored values to intensities. */
   void
-  SetVolume(const VolumeImageType * volume);
+  SetVolume(const itk::ImageBase<3> * volume, const itk::CPRIntensityRescale & rescale = {});
   /** The centerline tree the path is taken from (LPS mm). */
   void
   SetCenterlineTree(const itk::CenterlineTree & tree);

@@ -147,8 +147,9 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
                          " (the second argument) or a vessel segmentation with " + arguments.Spelling("segmentation"));
   }
   progress.Update(0.0, "reading");
-  const std::string                  volumePath = arguments.String("inputVolume");
-  const vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
+  // The volume in its file's pixel type, read once and sampled where it lies.
+  const std::string      volumePath = arguments.String("inputVolume");
+  const vr::StoredVolume volume = vr::ReadStoredVolume(volumePath);
 
   vr::Segmentation segmentation;
   std::string      segmentationName;
@@ -198,7 +199,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   stopIfCancelled("reading");
 
   vr::VesselPathLogic logic;
-  logic.SetVolume(volume);
+  logic.SetVolume(volume.Image, volume.Rescale);
   logic.SetCenterlineTree(tree);
   if (hasSegmentation)
   {

@@ -141,11 +141,10 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
                          " (the second argument) or a vessel segmentation with " + arguments.Spelling("segmentation"));
   }
 
-  const std::string            volumePath = arguments.String("inputVolume");
-  vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
-  vr::VesselReformationLogic   logic;
-  logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, FileName(volumePath)));
-  volume = nullptr; // the node holds the voxels now
+  // The volume in its file's pixel type, read once: the node, the logic's image and the resampler share its voxels.
+  const std::string          volumePath = arguments.String("inputVolume");
+  vr::VesselReformationLogic logic;
+  logic.SetVolumeNode(vr::ConvertStoredVolumeToVolumeNode(vr::ReadStoredVolume(volumePath), FileName(volumePath)));
   std::string source;
   if (fromSegmentation)
   {

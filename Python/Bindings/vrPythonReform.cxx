@@ -72,7 +72,7 @@ NodeOver(const Volume & volume)
   auto node = vtkSmartPointer<VolumeNode>::New();
   node->SetName(volume.Name);
   node->SetImageData(data);
-  node->SetIJKToRASMatrix(IJKToRASMatrixOf(volume.Image));
+  node->SetIJKToRASMatrix(IJKToRASMatrixOf(*volume.Image));
   return node;
 }
 

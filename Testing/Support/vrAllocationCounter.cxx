@@ -28,6 +28,10 @@ namespace
 {
 std::atomic<long long> Live{ 0 };
 std::atomic<long long> Peak{ 0 };
+// The blocks of at least LargeThreshold bytes (0: not counted) allocated since the threshold was set.
+std::atomic<long long> LargeThreshold{ 0 };
+std::atomic<long long> LargeCount{ 0 };
+std::atomic<long long> LargeBytes{ 0 };
 
 /** Blocks aligned to a page or more whose usable size exceeds the pages asked for by more than a page: glibc maps an
  * aligned block of that size with room to align it, and leaves the room after the block as part of it, mapped but
@@ -64,6 +68,12 @@ PageSize()
 void
 Add(long long bytes)
 {
+  const long long threshold = LargeThreshold.load(std::memory_order_relaxed);
+  if (threshold > 0 && bytes >= threshold)
+  {
+    LargeCount.fetch_add(1, std::memory_order_relaxed);
+    LargeBytes.fetch_add(bytes, std::memory_order_relaxed);
+  }
   const long long live = Live.fetch_add(bytes, std::memory_order_relaxed) + bytes;
   long long       peak = Peak.load(std::memory_order_relaxed);
   while (live > peak && !Peak.compare_exchange_weak(peak, live, std::memory_order_relaxed))
@@ -236,5 +246,25 @@ void
 ResetAllocationPeak()
 {
   Peak.store(Live.load());
+}
+
+void
+CountAllocationsOfAtLeast(long long bytes)
+{
+  LargeCount.store(0);
+  LargeBytes.store(0);
+  LargeThreshold.store(bytes);
+}
+
+long long
+LargeAllocations()
+{
+  return LargeCount.load();
+}
+
+long long
+LargeAllocationBytes()
+{
+  return LargeBytes.load();
 }
 } // namespace vr::test

@@ -20,6 +20,17 @@ AllocationPeak();
 /** Sets AllocationPeak() to AllocatedBytes(). */
 void
 ResetAllocationPeak();
+
+/** Starts counting the blocks of at least \a bytes allocated from now on (LargeAllocations()); 0 stops. */
+void
+CountAllocationsOfAtLeast(long long bytes);
+
+/** The blocks of at least the size CountAllocationsOfAtLeast() set that were allocated since it was called (freed or
+ * not), and their bytes. */
+long long
+LargeAllocations();
+long long
+LargeAllocationBytes();
 } // namespace vr::test
 
 #endif

@@ -175,7 +175,7 @@ VesselPathPanel::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
 {
   m_Inputs = std::move(inputs);
   m_Logic = std::make_unique<VesselPathLogic>();
-  m_Volume = nullptr;
+  m_Volume = StoredVolume();
   m_LogicReady = false;
   m_HasPath = false;
   m_Section = 0;
@@ -251,11 +251,12 @@ VesselPathPanel::PrepareLogic()
     m_LastError = tr("no volume to read a vessel path in");
     return false;
   }
-  if (!m_Volume)
+  if (!m_Volume.Image)
   {
-    m_Volume = ConvertVolumeNodeToItkImage(m_Inputs->Volume);
+    // The node's voxels, shared: the panel reads the volume the tree view reads, in its stored type.
+    m_Volume = ConvertVolumeNodeToStoredVolume(m_Inputs->Volume);
   }
-  m_Logic->SetVolume(m_Volume);
+  m_Logic->SetVolume(m_Volume.Image, m_Volume.Rescale);
   m_Logic->SetCenterlineTree(m_Inputs->Tree);
   LabelMapVolumeType::Pointer mask = m_Mask;
   std::string                 name = m_MaskName;

@@ -4,6 +4,7 @@
 
 #include "vrReformationInputs.h"
 #include "vrReformationParameters.h"
+#include "vrStoredVolume.h"
 #include "vrVesselPathLogic.h"
 
 #include <QString>
@@ -170,7 +171,7 @@ private:
 
   std::unique_ptr<VesselPathLogic>         m_Logic;
   std::shared_ptr<const ReformationInputs> m_Inputs;
-  VolumeImageType::Pointer                 m_Volume;
+  StoredVolume                             m_Volume;
   LabelMapVolumeType::Pointer              m_Mask;
   std::string                              m_MaskName;
   bool                                     m_LogicReady{ false };

@@ -32,4 +32,5 @@ operator<<(std::ostream & os, CPRSlabMode mode)
 }
 
 template class CPRResampleImageFilter<Image<float, 3>, Image<float, 2>, Image<float, 2>>;
+template class CPRResampleImageFilter<ImageBase<3>, Image<float, 2>, Image<float, 2>>;
 } // namespace itk

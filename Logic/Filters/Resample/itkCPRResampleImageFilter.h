@@ -24,6 +24,11 @@ namespace itk
  * BilateralDepthRelaxFilter put it there). The output has the depth image's grid and metadata. The volume's
  * origin, spacing and direction are honoured.
  *
+ * TVolumeImage is an itk::Image<T, 3> of a scalar pixel type, or itk::ImageBase<3> for a volume of any of the stored
+ * pixel types (detail::CPRStoredPixelTypes) chosen at run time, as the module's logic holds a volume in the type of
+ * its file. The volume is sampled in its stored type, its IntensityRescale applied to every value read (and to the
+ * minimum): no float copy of it is made.
+ *
  * \sa CPRDepthImageFilter, BilateralDepthRelaxFilter
  * \ingroup VesselReformation
  */
@@ -81,6 +86,16 @@ public:
   itkGetConstMacro(UseVolumeMinimumAsDefault, bool);
   itkBooleanMacro(UseVolumeMinimumAsDefault);
 
+  /** Stored values to intensities (DICOM's rescale slope and intercept); the identity by default. A slope of 0 or a
+   * value that is not finite is refused when the filter runs. */
+  void
+  SetIntensityRescale(const CPRIntensityRescale & rescale);
+  const CPRIntensityRescale &
+  GetIntensityRescale() const
+  {
+    return m_IntensityRescale;
+  }
+
   /** Slab thickness T along v, in mm; 0 samples the surface alone. */
   itkSetMacro(SlabThickness, double);
   itkGetConstMacro(SlabThickness, double);
@@ -119,6 +134,7 @@ private:
   bool                 m_UseVolumeMinimumAsDefault{ true };
   double               m_SlabThickness{ 0.0 };
   CPRSlabMode          m_SlabMode{ CPRSlabMode::MIP };
+  CPRIntensityRescale  m_IntensityRescale;
 
   // Per-update state, set in BeforeThreadedGenerateData: the sampling the path view's filters share.
   detail::CPRVolumeSampler<VolumeImageType> m_Sampler;
@@ -142,6 +158,7 @@ namespace itk
 {
 // Instantiated once, in the VesselReformationFilters library, for the pixel types the module uses.
 extern template class CPRResampleImageFilter<Image<float, 3>, Image<float, 2>, Image<float, 2>>;
+extern template class CPRResampleImageFilter<ImageBase<3>, Image<float, 2>, Image<float, 2>>;
 } // namespace itk
 
 #endif

@@ -58,6 +58,18 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetDefaultValue
 
 template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::SetIntensityRescale(
+  const CPRIntensityRescale & rescale)
+{
+  if (m_IntensityRescale != rescale)
+  {
+    m_IntensityRescale = rescale;
+    this->Modified();
+  }
+}
+
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VerifyPreconditions() ITKv5_CONST
 {
   Superclass::VerifyPreconditions();
@@ -68,6 +80,11 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::VerifyPrecondit
   if (!m_UseVolumeMinimumAsDefault && !std::isfinite(static_cast<double>(m_DefaultValue)))
   {
     itkExceptionMacro(<< "DefaultValue = " << m_DefaultValue << " is not finite");
+  }
+  if (!m_IntensityRescale.IsValid())
+  {
+    itkExceptionMacro(<< "IntensityRescale = " << m_IntensityRescale
+                      << " is invalid: both must be finite and the slope must not be 0");
   }
 }
 
@@ -115,9 +132,10 @@ void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::BeforeThreadedGenerateData()
 {
   const VolumeImageType * volume = this->GetVolume();
-  m_Sampler.Prepare(volume, m_Interpolation);
-  m_OutsideValue =
-    m_UseVolumeMinimumAsDefault ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume)) : m_DefaultValue;
+  m_Sampler.Prepare(volume, m_Interpolation, m_IntensityRescale);
+  m_OutsideValue = m_UseVolumeMinimumAsDefault
+                     ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume, m_IntensityRescale))
+                     : m_DefaultValue;
 
   // X = B(i, j) + d v is affine in (i, j, d), and so is the volume's continuous index of X.
   ContinuousIndexType atCenter;
@@ -180,6 +198,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::PrintSelf(std::
   os << indent << "DefaultValue: " << static_cast<double>(m_DefaultValue) << std::endl;
   os << indent << "SlabThickness (mm): " << m_SlabThickness << std::endl;
   os << indent << "SlabMode: " << m_SlabMode << std::endl;
+  os << indent << "IntensityRescale: " << m_IntensityRescale << std::endl;
   os << indent << "View (" << (m_HasExplicitView ? "explicit" : "from the depth image") << "):" << std::endl;
   m_View.Print(os, indent.GetNextIndent());
   os << indent << "Interpolator: " << m_Sampler.GetInterpolator() << std::endl;

@@ -4,4 +4,5 @@
 namespace itk
 {
 template class CrossSectionStackImageFilter<Image<float, 3>, Image<float, 3>>;
+template class CrossSectionStackImageFilter<ImageBase<3>, Image<float, 3>>;
 } // namespace itk

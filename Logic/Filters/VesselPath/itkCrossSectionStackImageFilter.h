@@ -94,6 +94,15 @@ public:
   itkGetConstMacro(SlabThickness, double);
   itkSetEnumMacro(SlabMode, CPRSlabMode);
   itkGetEnumMacro(SlabMode, CPRSlabMode);
+  /** Stored values to intensities (DICOM's rescale slope and intercept), applied to every value read; the identity
+   * by default (CPRResampleImageFilter::SetIntensityRescale). */
+  void
+  SetIntensityRescale(const CPRIntensityRescale & rescale);
+  const CPRIntensityRescale &
+  GetIntensityRescale() const
+  {
+    return m_IntensityRescale;
+  }
   /** Value for points outside the volume. Setting it turns UseVolumeMinimumAsDefault off. */
   void
   SetDefaultValue(OutputPixelType value);
@@ -142,6 +151,7 @@ private:
   CPRInterpolationMode m_Interpolation{ CPRInterpolationMode::Linear };
   double               m_SlabThickness{ 0.0 };
   CPRSlabMode          m_SlabMode{ CPRSlabMode::MIP };
+  CPRIntensityRescale  m_IntensityRescale;
   OutputPixelType      m_DefaultValue{};
   bool                 m_UseVolumeMinimumAsDefault{ true };
 
@@ -165,6 +175,7 @@ namespace itk
 {
 // Instantiated once, in the VesselReformationFilters library.
 extern template class CrossSectionStackImageFilter<Image<float, 3>, Image<float, 3>>;
+extern template class CrossSectionStackImageFilter<ImageBase<3>, Image<float, 3>>;
 } // namespace itk
 
 #endif

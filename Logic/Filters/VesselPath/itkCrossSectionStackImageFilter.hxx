@@ -43,6 +43,17 @@ CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::SetView(const CPRViewG
 
 template<typename TVolumeImage, typename TOutputImage>
 void
+CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::SetIntensityRescale(const CPRIntensityRescale & rescale)
+{
+  if (m_IntensityRescale != rescale)
+  {
+    m_IntensityRescale = rescale;
+    this->Modified();
+  }
+}
+
+template<typename TVolumeImage, typename TOutputImage>
+void
 CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::SetDefaultValue(OutputPixelType value)
 {
   const auto same = [](double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); };
@@ -86,6 +97,11 @@ CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::VerifyPreconditions() 
   if (!m_UseVolumeMinimumAsDefault && !std::isfinite(static_cast<double>(m_DefaultValue)))
   {
     itkExceptionMacro(<< "DefaultValue = " << m_DefaultValue << " is not finite");
+  }
+  if (!m_IntensityRescale.IsValid())
+  {
+    itkExceptionMacro(<< "IntensityRescale = " << m_IntensityRescale
+                      << " is invalid: both must be finite and the slope must not be 0");
   }
   if (!(m_Path.GetLength() > 0.0))
   {
@@ -168,9 +184,10 @@ void
 CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::BeforeThreadedGenerateData()
 {
   const VolumeImageType * volume = this->GetVolume();
-  m_Sampler.Prepare(volume, m_Interpolation);
-  m_OutsideValue =
-    m_UseVolumeMinimumAsDefault ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume)) : m_DefaultValue;
+  m_Sampler.Prepare(volume, m_Interpolation, m_IntensityRescale);
+  m_OutsideValue = m_UseVolumeMinimumAsDefault
+                     ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume, m_IntensityRescale))
+                     : m_DefaultValue;
   m_SlabOffsets = detail::CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
 
   m_IndexFrames = detail::SectionIndexFrames(volume, m_Sections);
@@ -227,6 +244,7 @@ CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::PrintSelf(std::ostream
   os << indent << "Interpolation: " << m_Interpolation << std::endl;
   os << indent << "SlabThickness (mm): " << m_SlabThickness << std::endl;
   os << indent << "SlabMode: " << m_SlabMode << std::endl;
+  os << indent << "IntensityRescale: " << m_IntensityRescale << std::endl;
   os << indent << "UseVolumeMinimumAsDefault: " << (m_UseVolumeMinimumAsDefault ? "On" : "Off") << std::endl;
   os << indent << "DefaultValue: " << static_cast<double>(m_DefaultValue) << std::endl;
   os << indent << "Planes: " << m_Sections.size() << std::endl;

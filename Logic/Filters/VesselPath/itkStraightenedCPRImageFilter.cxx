@@ -10,4 +10,5 @@ operator<<(std::ostream & os, VesselPathCPRMode mode)
 }
 
 template class StraightenedCPRImageFilter<Image<float, 3>, Image<float, 2>>;
+template class StraightenedCPRImageFilter<ImageBase<3>, Image<float, 2>>;
 } // namespace itk

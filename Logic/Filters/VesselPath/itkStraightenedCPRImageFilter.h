@@ -125,6 +125,15 @@ public:
   itkGetConstMacro(SlabThickness, double);
   itkSetEnumMacro(SlabMode, CPRSlabMode);
   itkGetEnumMacro(SlabMode, CPRSlabMode);
+  /** Stored values to intensities (DICOM's rescale slope and intercept), applied to every value read; the identity
+   * by default (CPRResampleImageFilter::SetIntensityRescale). */
+  void
+  SetIntensityRescale(const CPRIntensityRescale & rescale);
+  const CPRIntensityRescale &
+  GetIntensityRescale() const
+  {
+    return m_IntensityRescale;
+  }
   /** Value for points outside the volume. Setting it turns UseVolumeMinimumAsDefault off. */
   void
   SetDefaultValue(OutputPixelType value);
@@ -224,6 +233,7 @@ private:
   CPRInterpolationMode m_Interpolation{ CPRInterpolationMode::Linear };
   double               m_SlabThickness{ 0.0 };
   CPRSlabMode          m_SlabMode{ CPRSlabMode::MIP };
+  CPRIntensityRescale  m_IntensityRescale;
   OutputPixelType      m_DefaultValue{};
   bool                 m_UseVolumeMinimumAsDefault{ true };
   bool                 m_ComputePointImage{ false };
@@ -257,6 +267,7 @@ namespace itk
 {
 // Instantiated once, in the VesselReformationFilters library.
 extern template class StraightenedCPRImageFilter<Image<float, 3>, Image<float, 2>>;
+extern template class StraightenedCPRImageFilter<ImageBase<3>, Image<float, 2>>;
 } // namespace itk
 
 #endif

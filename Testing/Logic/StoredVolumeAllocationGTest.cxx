@@ -1,0 +1,183 @@
+// Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
+// One allocation of the voxel bytes from the file to the resampler (issue 40, docs/design.md "Volumes in their stored
+// type"): a 16-bit CT read from NRRD, NIfTI or MetaImage (plain, detached and compressed), made a node as the viewer
+// and the modules make it, converted by the logic and sampled by both resamplers, and read by the one-vessel logic
+// too, allocates its voxel bytes once, and the resamplers read the node's buffer. Counted by vrAllocationCounter,
+// which replaces malloc (so this executable is not built under the sanitizers).
+#include "vrAllocationCounter.h"
+#include "vrCenterlineIO.h"
+#include "vrNodeConversion.h"
+#include "vrReformationInputs.h"
+#include "vrTestFiles.h"
+#include "vrText.h"
+#include "vrVesselPathLogic.h"
+#include "vrVesselReformationLogic.h"
+#include "vrVolumeIO.h"
+
+#include "itkImageFileWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkImageData.h>
+
+#include <filesystem>
+
+namespace
+{
+using ShortVolume = itk::Image<short, 3>;
+
+/** A 160 x 128 x 96 CT-like int16 volume (3.9 MB): a bright tube along z in soft tissue, smooth enough to compress. */
+ShortVolume::Pointer
+MakeVolume()
+{
+  auto                    volume = ShortVolume::New();
+  ShortVolume::RegionType region;
+  region.SetSize({ { 160, 128, 96 } });
+  volume->SetRegions(region);
+  ShortVolume::SpacingType spacing;
+  spacing[0] = 0.7;
+  spacing[1] = 0.7;
+  spacing[2] = 1.0;
+  volume->SetSpacing(spacing);
+  volume->Allocate();
+  short * voxel = volume->GetBufferPointer();
+  for (int k = 0; k < 96; ++k)
+  {
+    for (int j = 0; j < 128; ++j)
+    {
+      for (int i = 0; i < 160; ++i)
+      {
+        const double distance = std::hypot(i - 80.0, j - 64.0);
+        *voxel++ = static_cast<short>(distance < 6.0 ? 350 : 40 + (i + 2 * j + 3 * k) % 7);
+      }
+    }
+  }
+  return volume;
+}
+
+/** A centerline along the tube, in LPS. */
+itk::CenterlineTree
+TubeCenterline()
+{
+  itk::CenterlineBranch branch;
+  branch.Id = 1;
+  for (int k = 4; k <= 92; k += 4)
+  {
+    itk::Point<double, 3> point;
+    point[0] = 80 * 0.7;
+    point[1] = 64 * 0.7;
+    point[2] = k;
+    branch.Points.push_back(point);
+    branch.Radii.push_back(4.0);
+  }
+  itk::CenterlineTree tree;
+  tree.AddBranch(branch);
+  return tree;
+}
+
+struct Written
+{
+  std::string Path;
+  bool        Compress;
+};
+
+void
+PrintTo(const Written & written, std::ostream * os)
+{
+  *os << written.Path << (written.Compress ? " (compressed)" : "");
+}
+
+class StoredVolumeAllocation : public ::testing::TestWithParam<Written>
+{
+};
+} // namespace
+
+TEST_P(StoredVolumeAllocation, TheVoxelBytesAreAllocatedOnceFromTheFileToTheResampler)
+{
+  const vr::test::ScopedTemporaryFolder folder;
+  const std::string                     path = folder.File(GetParam().Path);
+  std::size_t                           voxelBytes = 0;
+  {
+    const auto volume = MakeVolume();
+    voxelBytes = volume->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(short);
+    auto writer = itk::ImageFileWriter<ShortVolume>::New();
+    writer->SetInput(volume);
+    writer->SetFileName(path);
+    writer->SetUseCompression(GetParam().Compress);
+    writer->Update();
+  }
+  std::uintmax_t fileBytes = 0;
+  for (const auto & entry : std::filesystem::directory_iterator(folder.Path()))
+  {
+    fileBytes += entry.file_size();
+  }
+  const auto                centerlines = vr::ConvertTreeToCenterlineNode(TubeCenterline(), "tube");
+  vr::ReformationParameters parameters;
+  parameters.ImageSize[0] = 48;
+  parameters.ImageSize[1] = 64;
+  parameters.Iterations = 20;
+  parameters.Backend = vr::RelaxBackend::CPU;
+  vr::VesselReformationLogic logic;
+  vr::VesselPathLogic        pathLogic;
+
+  // From here on: no block of half the voxel bytes or more but the voxels'.
+  const long long before = vr::test::AllocatedBytes();
+  vr::test::ResetAllocationPeak();
+  vr::test::CountAllocationsOfAtLeast(static_cast<long long>(voxelBytes / 2));
+
+  auto node = vr::ReadVolumeNode(path); // the viewer's way; the modules' is the same two calls
+  logic.SetVolumeNode(node);
+  logic.SetCenterlineNode(centerlines);
+  logic.SetParameters(parameters);
+  logic.Update();
+  const vr::StoredVolume stored = vr::ConvertVolumeNodeToStoredVolume(node); // the one-vessel panel's way
+  pathLogic.SetVolume(stored.Image, stored.Rescale);
+  pathLogic.SetCenterlineTree(TubeCenterline());
+  pathLogic.SetCrossSectionsEnabled(true);
+  pathLogic.Update();
+
+  const long long large = vr::test::LargeAllocations();
+  const long long largeBytes = vr::test::LargeAllocationBytes();
+  const long long peak = vr::test::AllocationPeak() - before;
+  vr::test::CountAllocationsOfAtLeast(0);
+  std::cout << GetParam().Path << (GetParam().Compress ? " (compressed)" : "") << ": " << large
+            << " blocks of at least half the voxel bytes (" << largeBytes << " bytes; voxels " << voxelBytes
+            << "), peak " << peak << " bytes above the start, files " << fileBytes << " bytes\n";
+  EXPECT_EQ(large, 1);
+  EXPECT_LT(largeBytes, static_cast<long long>(voxelBytes + 4096));
+  const void * voxels = node->GetImageData()->GetScalarPointer();
+  EXPECT_EQ(node->GetImageData()->GetScalarType(), VTK_SHORT);
+  EXPECT_EQ(static_cast<const void *>(
+              dynamic_cast<const ShortVolume *>(logic.GetResampleFilter()->GetVolume())->GetBufferPointer()),
+            voxels);
+  EXPECT_EQ(stored.GetBufferPointer(), voxels);
+  // The peak: the voxels, the vessel's cross-sections (a float image of its own), what a 48 x 64 view and the rest of
+  // a short vessel path take (under 1 MiB), and for a compressed MetaImage the compressed bytes, which MetaIO reads
+  // whole before it inflates them into the voxels.
+  const auto sectionBytes = static_cast<long long>(
+    pathLogic.GetResults().CrossSections->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(float));
+  const bool metaCompressed = GetParam().Compress && vr::EndsWith(GetParam().Path, ".mha");
+  std::cout << "cross-sections " << sectionBytes << " bytes; the rest "
+            << peak - static_cast<long long>(voxelBytes) - sectionBytes << " bytes\n";
+  EXPECT_LT(peak, static_cast<long long>(voxelBytes + (metaCompressed ? fileBytes : 0) + (1u << 20)) + sectionBytes);
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats,
+                         StoredVolumeAllocation,
+                         ::testing::Values(Written{ "ct.nrrd", false },
+                                           Written{ "ct.nrrd", true },
+                                           Written{ "ct.nhdr", false },
+                                           Written{ "ct.nii", false },
+                                           Written{ "ct.nii.gz", false },
+                                           Written{ "ct.mha", false },
+                                           Written{ "ct.mha", true },
+                                           Written{ "ct.mhd", false }),
+                         [](const ::testing::TestParamInfo<Written> & info)
+                         {
+                           std::string name = info.param.Path + (info.param.Compress ? "_gz" : "");
+                           for (char & c : name)
+                           {
+                             c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                           }
+                           return name;
+                         });
