@@ -116,7 +116,9 @@ aorta=${data:+$data/vmtk-aorta-mra}
 step_timeout=${VR_REPORT_STEP_TIMEOUT:-300}
 min_time=${VR_REPORT_MIN_TIME:-0.2}
 filter=${VR_REPORT_BENCHMARKS:-'^(Relax_CPU|Relax_OpenCL|Relax_OpenCL_Passes|Relax_Plain|Depth|Depth_OpenCL|Resample|Resample_OpenCL|DepthResample|DepthResample_OpenCL|Pipeline_CPU|Pipeline_OpenCL|View_CPU|View_OpenCL)/512/1024/'}
-steady_filter=${VR_REPORT_STEADY-'^(Relax_Steady[A-Za-z_]*|Relax_CPU_FullSize)/'}
+# The steady families up to 1024 x 2048 (from 2048 x 4096 up the aorta where its iliacs cross takes tens of seconds a
+# solve), the full-size views and the 500 passes on them.
+steady_filter=${VR_REPORT_STEADY-'^(Relax_Steady[A-Za-z_]*/(256/512|512/1024|1024/2048)/|Relax_Steady_FullSize/|Relax_CPU_FullSize/)'}
 
 md=$report/report.md
 say() { printf '%s\n' "$*" >>"$md"; }
@@ -261,7 +263,7 @@ if [[ -n $steady_filter ]]; then
   begin=$(now)
   # The steady families' own repetitions (3, once from 2048 x 4096 up) as registered, with Relax_CPU/512/1024 for
   # the ratio in the same run.
-  run_step benchmarks-steady "$benchmarks" --benchmark_filter="$steady_filter|^Relax_CPU/512/1024/repeats" \
+  run_step benchmarks-steady "$benchmarks" --benchmark_filter="$steady_filter|^Relax_CPU/(256/512|512/1024|1024/2048)/(repeats|iterations)" \
     --benchmark_min_time="$min_time" --benchmark_out="$report/benchmarks-steady.json" \
     --benchmark_out_format=json --benchmark_format=console --benchmark_color=false
   status=$?
