@@ -5,7 +5,7 @@
 #include "vrInputError.h"
 #include "vrOpenCLDevices.h"
 #include "vrOpenCLRuntime.h"
-#include "vrOpenCLSessionInternals.h"
+#include "vrOpenCLSessionState.h"
 
 #include <algorithm>
 #include <array>
@@ -239,7 +239,7 @@ struct OpenCLBilateralDepthRelaxFilter::DeviceState
   /** The relaxed depth, one float a pixel, W x H: downloaded, and published for the session's resampling. */
   cl::Buffer Packed;
 
-  vr::OpenCLSession::Internals &
+  vr::OpenCLSessionState &
   Device()
   {
     return Session->GetInternals();
@@ -252,7 +252,7 @@ OpenCLBilateralDepthRelaxFilter::~OpenCLBilateralDepthRelaxFilter()
 {
   if (m_DeviceState)
   {
-    m_DeviceState->Device().Withdraw(this->GetOutput());
+    m_DeviceState->Device().WithdrawAll(this);
   }
 }
 
@@ -382,7 +382,7 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
 
   if (m_DeviceState)
   {
-    m_DeviceState->Device().Withdraw(this->GetOutput());
+    m_DeviceState->Device().WithdrawAll(this);
   }
   m_DeviceState.reset();
   auto state = std::make_unique<DeviceState>();
@@ -391,7 +391,7 @@ OpenCLBilateralDepthRelaxFilter::PrepareDevice()
   state->ForcedVectorWidth = m_ForcedVectorWidth;
   state->ForcedGPULayout = m_ForcedGPULayout;
   state->RequestedPassesPerLaunch = m_PassesPerLaunch;
-  vr::OpenCLSession::Internals & device = state->Device();
+  vr::OpenCLSessionState & device = state->Device();
   try
   {
     state->Shape = ChooseKernelShape(
@@ -443,7 +443,7 @@ OpenCLBilateralDepthRelaxFilter::GenerateData()
   // The output is about to change: no filter of the session may read the device's copy of what it held.
   if (m_DeviceState)
   {
-    m_DeviceState->Device().Withdraw(this->GetOutput());
+    m_DeviceState->Device().WithdrawAll(this);
   }
   m_NumberOfLaunches = 0;
   m_InputsWereOnDevice = false;
@@ -463,7 +463,7 @@ void
 OpenCLBilateralDepthRelaxFilter::LoadInputs(std::size_t width, std::size_t height, std::size_t pitch, std::size_t plane)
 {
   DeviceState &                    state = *m_DeviceState;
-  vr::OpenCLSession::Internals &   device = state.Device();
+  vr::OpenCLSessionState &         device = state.Device();
   const ImageType *                depth = this->GetInput();
   const MaskImageType *            mask = this->GetFixedMask();
   const std::size_t                vectorWidth = state.Shape.VectorWidth;
@@ -532,11 +532,11 @@ OpenCLBilateralDepthRelaxFilter::LoadInputs(std::size_t width, std::size_t heigh
 void
 OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
 {
-  const ImageType *              depth = this->GetInput();
-  ImageType *                    output = this->GetOutput();
-  DeviceState &                  state = *m_DeviceState;
-  vr::OpenCLSession::Internals & device = state.Device();
-  const KernelShape &            shape = state.Shape;
+  const ImageType *        depth = this->GetInput();
+  ImageType *              output = this->GetOutput();
+  DeviceState &            state = *m_DeviceState;
+  vr::OpenCLSessionState & device = state.Device();
+  const KernelShape &      shape = state.Shape;
 
   const auto        size = depth->GetLargestPossibleRegion().GetSize();
   const std::size_t width = size[0];
@@ -645,7 +645,7 @@ OpenCLBilateralDepthRelaxFilter::RelaxOnDevice()
     published.Width = width;
     published.Height = height;
     published.PixelBytes = sizeof(float);
-    device.Publish(output, output->GetBufferPointer(), published);
+    device.Publish(this, output, output->GetBufferPointer(), published);
   }
   catch (const cl::Error & error)
   {

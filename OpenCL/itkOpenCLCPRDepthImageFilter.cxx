@@ -5,7 +5,7 @@
 #include "vrCPRDepthKernelSource.h"
 #include "vrInputError.h"
 #include "vrOpenCLRuntime.h"
-#include "vrOpenCLSessionInternals.h"
+#include "vrOpenCLSessionState.h"
 
 #include <algorithm>
 #include <array>
@@ -112,7 +112,7 @@ struct OpenCLCPRDepthImageFilter::DeviceState
   cl::Buffer                              Index, ListOwner, ListDepth, Reach, Key, Radius, FilledRows;
   std::vector<detail::CPRCenterlinePixel> Pixels;
 
-  vr::OpenCLSession::Internals &
+  vr::OpenCLSessionState &
   Device()
   {
     return Session->GetInternals();
@@ -131,8 +131,7 @@ OpenCLCPRDepthImageFilter::WithdrawOutputs()
 {
   if (m_DeviceState)
   {
-    m_DeviceState->Device().Withdraw(this->GetDepthOutput());
-    m_DeviceState->Device().Withdraw(this->GetFixedMaskOutput());
+    m_DeviceState->Device().WithdrawAll(this);
   }
 }
 
@@ -192,7 +191,7 @@ OpenCLCPRDepthImageFilter::PrepareDevice()
   m_DeviceState.reset();
   auto state = std::make_unique<DeviceState>();
   state->Session = session;
-  vr::OpenCLSession::Internals & device = state->Device();
+  vr::OpenCLSessionState & device = state->Device();
   try
   {
     const std::size_t maximumGroup = device.Device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
@@ -286,11 +285,11 @@ OpenCLCPRDepthImageFilter::ComputeOnDevice()
   mask->Allocate();
   labels->Allocate();
 
-  DeviceState &                  state = *m_DeviceState;
-  vr::OpenCLSession::Internals & device = state.Device();
-  const CPRViewGeometry &        view = this->GetView();
-  const std::size_t              width = view.GetSize()[0];
-  const std::size_t              height = view.GetSize()[1];
+  DeviceState &            state = *m_DeviceState;
+  vr::OpenCLSessionState & device = state.Device();
+  const CPRViewGeometry &  view = this->GetView();
+  const std::size_t        width = view.GetSize()[0];
+  const std::size_t        height = view.GetSize()[1];
   if (width * height > static_cast<std::size_t>(INT_MAX))
   {
     itkExceptionMacro(<< "the view of " << width << " x " << height
@@ -494,11 +493,11 @@ OpenCLCPRDepthImageFilter::ComputeOnDevice()
     published.Width = width;
     published.Height = height;
     published.PixelBytes = sizeof(float);
-    device.Publish(depth, depth->GetBufferPointer(), published);
+    device.Publish(this, depth, depth->GetBufferPointer(), published);
     published.Buffer = state.Fixed;
     published.RowPitch = width;
     published.PixelBytes = 1;
-    device.Publish(mask, mask->GetBufferPointer(), published);
+    device.Publish(this, mask, mask->GetBufferPointer(), published);
   }
   catch (const cl::Error & error)
   {

@@ -98,7 +98,8 @@ private:
   void
   ComputeOnDevice();
 
-  /** Takes the outputs' device copies back from the session (they are about to change). */
+  /** Takes back from the session the device copies of every image the filter published (its device buffers are
+   * about to change, or go away). */
   void
   WithdrawOutputs();
 

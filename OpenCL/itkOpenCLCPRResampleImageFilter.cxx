@@ -4,7 +4,7 @@
 #include "vrCPRResampleKernelSource.h"
 #include "vrInputError.h"
 #include "vrOpenCLRuntime.h"
-#include "vrOpenCLSessionInternals.h"
+#include "vrOpenCLSessionState.h"
 
 #include <algorithm>
 #include <cmath>
@@ -78,7 +78,7 @@ struct OpenCLCPRResampleImageFilter<TVolumeImage>::DeviceState
   cl::Buffer          SlabOffsets;
   std::vector<double> UploadedSlabOffsets;
 
-  vr::OpenCLSession::Internals &
+  vr::OpenCLSessionState &
   Device()
   {
     return Session->GetInternals();
@@ -163,7 +163,7 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::PrepareDevice()
   m_DeviceState.reset();
   auto state = std::make_unique<DeviceState>();
   state->Session = session;
-  vr::OpenCLSession::Internals & device = state->Device();
+  vr::OpenCLSessionState & device = state->Device();
   if (device.DoublePrecision)
   {
     try
@@ -199,7 +199,7 @@ template<typename TVolumeImage>
 std::string
 OpenCLCPRResampleImageFilter<TVolumeImage>::WhyHost() const
 {
-  const vr::OpenCLSession::Internals & device = m_DeviceState->Session->GetInternals();
+  const vr::OpenCLSessionState & device = m_DeviceState->Session->GetInternals();
   if (this->GetInterpolation() == CPRInterpolationMode::Cubic)
   {
     return "cubic interpolation has no OpenCL kernel: the CPU samples the volume";
@@ -250,11 +250,11 @@ std::string
 OpenCLCPRResampleImageFilter<TVolumeImage>::SampleOnDevice()
 {
   using PixelType = typename TVolumeImage::PixelType;
-  const TVolumeImage *           volume = this->GetVolume();
-  const DepthImageType *         depth = this->GetDepth();
-  OutputImageType *              output = this->GetOutput();
-  DeviceState &                  state = *m_DeviceState;
-  vr::OpenCLSession::Internals & device = state.Device();
+  const TVolumeImage *     volume = this->GetVolume();
+  const DepthImageType *   depth = this->GetDepth();
+  OutputImageType *        output = this->GetOutput();
+  DeviceState &            state = *m_DeviceState;
+  vr::OpenCLSessionState & device = state.Device();
   this->PrepareIndexMapping();
 
   // The outside value, when it is the volume's minimum, rescaled as the samples are.

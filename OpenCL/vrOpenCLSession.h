@@ -10,6 +10,8 @@
 
 namespace vr
 {
+struct OpenCLSessionState;
+
 /** \class OpenCLSession
  * \brief One OpenCL device, its context and its in-order queue, shared by the OpenCL filters of one view
  * (docs/opencl.md "The whole view on the device").
@@ -66,15 +68,14 @@ public:
   void
   ReleaseVolume();
 
-  /** What the library's OpenCL code works with; defined in vrOpenCLSessionInternals.h (not installed). */
-  struct Internals;
-  Internals &
+  /** What the library's OpenCL code works with; defined in vrOpenCLSessionState.h (not installed). */
+  OpenCLSessionState &
   GetInternals();
 
 private:
-  explicit OpenCLSession(std::unique_ptr<Internals> internals);
+  explicit OpenCLSession(std::unique_ptr<OpenCLSessionState> internals);
 
-  std::unique_ptr<Internals> m_Internals;
+  std::unique_ptr<OpenCLSessionState> m_Internals;
 };
 } // namespace vr
 

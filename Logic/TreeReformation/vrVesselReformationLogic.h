@@ -118,7 +118,9 @@ struct ReformationOutputs
  * - new centerlines, view (up, angle, centre, size, spacing), depth mode or lumen fixing: everything;
  * - a new volume: resampling and the surface; the depth map and its relaxation too only when the volume's geometry
  *   changed (it supplies the view's defaults);
- * - new relaxation w, anisotropy a, iterations N, backend or OpenCL device: relaxation, the relaxed CPR, surface;
+ * - new relaxation w, anisotropy a, iterations N: relaxation, the relaxed CPR, surface; a new backend or OpenCL
+ *   device: the same, and where the view moves between the CPU and a device, its depth map and unfiltered CPR too
+ *   (on the other backend's filters; a set still up to date from before does not rerun);
  * - new interpolation or slab: both CPR images and the surface;
  * - new window or level: nothing (they only choose how the CPR is displayed, GetDisplayWindowLevel()).
  * GetStageExecutionCounts() counts every stage execution (the filters' StartEvent) so that tests can check these

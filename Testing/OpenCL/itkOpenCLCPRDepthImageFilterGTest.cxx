@@ -235,3 +235,33 @@ TEST(OpenCLCPRDepth, ARelaxationInAnotherSessionUploads)
   relax->Update();
   EXPECT_FALSE(relax->GetInputsWereOnDevice());
 }
+
+// An output disconnected from the depth filter keeps its host pixels while the filter computes a new view into its
+// device buffers: the relaxation must then upload it, not read the device buffer that holds the newer view.
+TEST(OpenCLCPRDepth, AnOutputDisconnectedBeforeTheNextViewIsUploadedNotReadFromTheDevice)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto session = vr::OpenCLSession::Create("", "test");
+  auto       depth = OpenCLFilter::New();
+  depth->SetSession(session);
+  Configure(depth.GetPointer(), RunoffScene(), View(120, 200, 30.0), itk::CPRDepthMode::Scanline, true);
+  depth->Update();
+  itk::Image<float, 2>::Pointer old = depth->GetDepthOutput();
+  old->DisconnectPipeline();
+  const auto oldPixels = vr::test::PixelsOf(old.GetPointer());
+  depth->SetViewSpecification(View(120, 200, 45.0));
+  depth->Update();
+  ASSERT_NE(vr::test::PixelsOf(depth->GetDepthOutput()), oldPixels);
+
+  auto relax = itk::OpenCLBilateralDepthRelaxFilter::New();
+  relax->SetSession(session);
+  relax->SetInput(old);
+  relax->SetNumberOfIterations(20);
+  relax->Update();
+  EXPECT_FALSE(relax->GetInputsWereOnDevice());
+  auto reference = itk::OpenCLBilateralDepthRelaxFilter::New();
+  reference->SetInput(vr::test::MakeDepthImage(120, 200, oldPixels));
+  reference->SetNumberOfIterations(20);
+  reference->Update();
+  EXPECT_EQ(vr::test::PixelsOf(relax->GetOutput()), vr::test::PixelsOf(reference->GetOutput()));
+}

@@ -1,10 +1,10 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-#ifndef vrOpenCLSessionInternals_h
-#define vrOpenCLSessionInternals_h
+#ifndef vrOpenCLSessionState_h
+#define vrOpenCLSessionState_h
 
-// Private to VesselReformationOpenCL: what the OpenCL filters share through a vr::OpenCLSession.
+// Private to VesselReformationOpenCL: what the OpenCL filters share through a vr::OpenCLSession (which holds one).
+#include "vrOpenCLDevices.h"
 #include "vrOpenCLRuntime.h"
-#include "vrOpenCLSession.h"
 
 #include <cstddef>
 #include <map>
@@ -53,7 +53,8 @@ struct OpenCLDeviceVolume
   std::size_t Bytes{ 0 };
 };
 
-struct OpenCLSession::Internals
+/** A vr::OpenCLSession's device, context, queue, programs, published device images and volume. */
+struct OpenCLSessionState
 {
   OpenCLDeviceInfo Info;
   cl::Device       Device;
@@ -69,13 +70,16 @@ struct OpenCLSession::Internals
   cl::Program
   Program(const std::string & fileName, const std::string & source, const std::string & options);
 
-  /** Records that the host image \a image (a data object of a filter of this session), whose pixels are at
-   * \a hostBuffer, holds what \a device holds. A later Find() for it reads the device copy. */
+  /** Records that the host image \a image, an output of the filter \a producer of this session whose pixels are at
+   * \a hostBuffer, holds what \a device holds. A later Find() for it reads the device copy, until the producer
+   * withdraws its images. */
   void
-  Publish(const void * image, const void * hostBuffer, const OpenCLDeviceImage & device);
-  /** Forgets the device copy of \a image (its producer runs again, or goes away). */
+  Publish(const void * producer, const void * image, const void * hostBuffer, const OpenCLDeviceImage & device);
+  /** Forgets the device copies of every image \a producer published: it is about to write its device buffers again
+   * (its next update), or goes away. An output disconnected from the producer in between is forgotten too, so a
+   * consumer never reads a device buffer that holds something newer than its host image. */
   void
-  Withdraw(const void * image);
+  WithdrawAll(const void * producer);
   /** The device copy of \a image when a filter of this session published it and the image's pixels are still at
    * \a hostBuffer with \a width x \a height pixels of \a pixelBytes bytes; counts a hand-off. */
   bool
@@ -112,6 +116,7 @@ struct OpenCLSession::Internals
 private:
   struct Published
   {
+    const void *      Producer{ nullptr };
     const void *      Host{ nullptr };
     OpenCLDeviceImage Device;
   };
