@@ -17,6 +17,8 @@
 //   ROWS_PER_ITEM              rows a work-item relaxes one below the other
 //   LOCAL_WIDTH, LOCAL_HEIGHT  the work-group size
 //   WEIGHT_UNDERFLOW_POWER     -log2(FLT_MIN) = 126: R = 0 when a log2(e) x^2 exceeds it (the same rule)
+//   PASSES_PER_LAUNCH          only for RelaxPasses (several passes a launch on tiles in local memory, GPUs), with
+//   TILE_WIDTH, TILE_HEIGHT    the pixels a work-group keeps of its tile (the tile has a border of PASSES_PER_LAUNCH)
 //
 // Layout (in each plane): row y of a W-pixel image starts at y * pitch; pixel x lies at y * pitch + VECTOR_WIDTH + x. The pitch
 // holds a vector of padding before the row and at least one pixel after it, and the pixels of a row are padded to
@@ -202,3 +204,170 @@ RelaxIteration(__global const float * restrict current,
     }
   }
 }
+
+// The relaxed depth as one float a pixel, high + low (what the host made of the two planes before), in a packed
+// W x H buffer: downloaded once, and read by the resampling of the same view on the device.
+__kernel void
+CombinePlanes(__global const float * restrict depth,
+              __global float * restrict       packed,
+              const int                       width,
+              const int                       height,
+              const int                       pitch,
+              const int                       plane)
+{
+  const int x = get_global_id(0);
+  const int y = get_global_id(1);
+  if (x >= width || y >= height)
+  {
+    return;
+  }
+  const int k = y * pitch + VECTOR_WIDTH + x;
+  packed[y * width + x] = depth[k] + depth[plane + k];
+}
+
+#ifdef PASSES_PER_LAUNCH
+// Several Jacobi passes per launch (GPUs): a work-group loads a tile of TILE_WIDTH x TILE_HEIGHT pixels with a
+// border of PASSES_PER_LAUNCH pixels (clipped nowhere: pixels outside the image are kept and their edges have
+// weight 0) into local memory, runs `passes` passes there, and writes the tile's own pixels back. Pass j (from 0)
+// relaxes the pixels at least j + 1 from the border's outer edge: after `passes` <= PASSES_PER_LAUNCH passes the
+// tile's own pixels hold what `passes` launches of RelaxIteration give, computed by the same expressions (each
+// edge's difference and weight from the pixel's side: a - b is exactly -(b - a), and a weight depends on the
+// difference's square), so the bits do not depend on PASSES_PER_LAUNCH. Pixels of neighbouring tiles' borders are
+// computed again by each tile that needs them instead of being exchanged between passes.
+#  if VECTOR_WIDTH != 1
+#    error "the multi-pass kernel relaxes one pixel at a time: VECTOR_WIDTH must be 1"
+#  endif
+#  define TILE_EXTENDED_WIDTH (TILE_WIDTH + 2 * PASSES_PER_LAUNCH)
+#  define TILE_EXTENDED_HEIGHT (TILE_HEIGHT + 2 * PASSES_PER_LAUNCH)
+#  define TILE_PIXELS (TILE_EXTENDED_WIDTH * TILE_EXTENDED_HEIGHT)
+#  define SLOTS_X ((TILE_EXTENDED_WIDTH + LOCAL_WIDTH - 1) / LOCAL_WIDTH)
+#  define SLOTS_Y ((TILE_EXTENDED_HEIGHT + LOCAL_HEIGHT - 1) / LOCAL_HEIGHT)
+
+__kernel __attribute__((reqd_work_group_size(LOCAL_WIDTH, LOCAL_HEIGHT, 1))) void
+RelaxPasses(__global const float * restrict current,
+            __global float * restrict       next,
+            __global const uchar * restrict fixedMask,
+            const int                       width,
+            const int                       height,
+            const int                       pitch,
+            const float                     relaxation,
+            const float                     weightPower,
+            const int                       plane,
+            const int                       passes)
+{
+  __local float high[TILE_PIXELS];
+  __local float low[TILE_PIXELS];
+  __local uchar kept[TILE_PIXELS]; // fixed, or outside the image
+
+  const int localX = get_local_id(0);
+  const int localY = get_local_id(1);
+  // The image position of the bordered tile's first pixel.
+  const int originX = get_group_id(0) * TILE_WIDTH - PASSES_PER_LAUNCH;
+  const int originY = get_group_id(1) * TILE_HEIGHT - PASSES_PER_LAUNCH;
+  const float selfWeight = 1.0f - relaxation;
+  const bool  isotropic = weightPower == 0.0f;
+
+  for (int ty = localY; ty < TILE_EXTENDED_HEIGHT; ty += LOCAL_HEIGHT)
+  {
+    for (int tx = localX; tx < TILE_EXTENDED_WIDTH; tx += LOCAL_WIDTH)
+    {
+      const int  x = originX + tx;
+      const int  y = originY + ty;
+      const int  t = ty * TILE_EXTENDED_WIDTH + tx;
+      const bool inside = x >= 0 && x < width && y >= 0 && y < height;
+      const int  k = inside ? y * pitch + VECTOR_WIDTH + x : 0;
+      high[t] = inside ? current[k] : 0.0f;
+      low[t] = inside ? current[plane + k] : 0.0f;
+      kept[t] = inside ? (fixedMask[k] != 0) : 1;
+    }
+  }
+  barrier(CLK_LOCAL_MEM_FENCE);
+
+  for (int pass = 0; pass < passes; ++pass)
+  {
+    const int margin = pass + 1;
+    float     nextHigh[SLOTS_Y][SLOTS_X];
+    float     nextLow[SLOTS_Y][SLOTS_X];
+    for (int sy = 0; sy < SLOTS_Y; ++sy)
+    {
+      for (int sx = 0; sx < SLOTS_X; ++sx)
+      {
+        const int tx = localX + sx * LOCAL_WIDTH;
+        const int ty = localY + sy * LOCAL_HEIGHT;
+        if (tx < margin || tx >= TILE_EXTENDED_WIDTH - margin || ty < margin || ty >= TILE_EXTENDED_HEIGHT - margin)
+        {
+          continue;
+        }
+        const int   t = ty * TILE_EXTENDED_WIDTH + tx;
+        const int   x = originX + tx;
+        const int   y = originY + ty;
+        const float dp = high[t];
+        const float dpLow = low[t];
+        const float toLeft = (high[t - 1] - dp) + (low[t - 1] - dpLow);
+        const float toRight = (high[t + 1] - dp) + (low[t + 1] - dpLow);
+        const float toAbove = (high[t - TILE_EXTENDED_WIDTH] - dp) + (low[t - TILE_EXTENDED_WIDTH] - dpLow);
+        const float toBelow = (high[t + TILE_EXTENDED_WIDTH] - dp) + (low[t + TILE_EXTENDED_WIDTH] - dpLow);
+
+        const float leftWeight = EDGE_WEIGHT(toLeft, x > 0);
+        const float rightWeight = EDGE_WEIGHT(toRight, x + 1 < width);
+        const float upWeight = EDGE_WEIGHT(toAbove, y > 0);
+        const float downWeight = EDGE_WEIGHT(toBelow, y + 1 < height);
+        // One product a statement, as RelaxIteration computes them: no fused multiply-add may join two of them.
+        const float leftWeightedDifference = leftWeight * toLeft;
+        const float rightWeightedDifference = rightWeight * toRight;
+        const float upWeightedDifference = upWeight * toAbove;
+        const float downWeightedDifference = downWeight * toBelow;
+
+        const float verticalNeighbours = (float)(y > 0) + (float)(y + 1 < height);
+        const float neighbours =
+          verticalNeighbours + select(0.0f, 1.0f, x > 0) + select(0.0f, 1.0f, x + 1 < width);
+        const float weightSum = leftWeight + rightWeight + upWeight + downWeight;
+        const float weightedDifference =
+          leftWeightedDifference + rightWeightedDifference + upWeightedDifference + downWeightedDifference;
+        const float denominator = selfWeight * neighbours + relaxation * weightSum;
+        const float step = relaxation * weightedDifference / denominator;
+        const float lowAndStep = dpLow + step;
+        const float relaxed = dp + lowAndStep;
+        const float relaxedLow = lowAndStep - (relaxed - dp);
+
+        const bool keep = kept[t] != 0 || !(denominator > 0.0f);
+        nextHigh[sy][sx] = keep ? dp : relaxed;
+        nextLow[sy][sx] = keep ? dpLow : relaxedLow;
+      }
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+    for (int sy = 0; sy < SLOTS_Y; ++sy)
+    {
+      for (int sx = 0; sx < SLOTS_X; ++sx)
+      {
+        const int tx = localX + sx * LOCAL_WIDTH;
+        const int ty = localY + sy * LOCAL_HEIGHT;
+        if (tx < margin || tx >= TILE_EXTENDED_WIDTH - margin || ty < margin || ty >= TILE_EXTENDED_HEIGHT - margin)
+        {
+          continue;
+        }
+        const int t = ty * TILE_EXTENDED_WIDTH + tx;
+        high[t] = nextHigh[sy][sx];
+        low[t] = nextLow[sy][sx];
+      }
+    }
+    barrier(CLK_LOCAL_MEM_FENCE);
+  }
+
+  for (int ty = PASSES_PER_LAUNCH + localY; ty < PASSES_PER_LAUNCH + TILE_HEIGHT; ty += LOCAL_HEIGHT)
+  {
+    for (int tx = PASSES_PER_LAUNCH + localX; tx < PASSES_PER_LAUNCH + TILE_WIDTH; tx += LOCAL_WIDTH)
+    {
+      const int x = originX + tx;
+      const int y = originY + ty;
+      if (x < width && y < height)
+      {
+        const int t = ty * TILE_EXTENDED_WIDTH + tx;
+        const int k = y * pitch + VECTOR_WIDTH + x;
+        next[k] = high[t];
+        next[plane + k] = low[t];
+      }
+    }
+  }
+}
+#endif

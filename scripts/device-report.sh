@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-# Measures a machine with a GPU or many cores: lists its OpenCL devices, runs the OpenCL tests, the relax and
-# pipeline benchmarks, and the whole job with each relax backend (cpu, opencl, auto), and writes report.md.
+# Measures a machine with a GPU or many cores: lists its OpenCL devices, runs the OpenCL tests, the relax, view and
+# pipeline benchmarks (the OpenCL relax with each number of passes per launch; depth, relax and both CPR images for a
+# new angle on the device against the CPU), the steady solver's families with their ratios to the 500 passes and
+# their growth, and the whole job with each relax backend (cpu, opencl, auto), and writes report.md.
 #
 #   scripts/device-report.sh [FROM] [REPORT_DIR]
 #     FROM        a build folder (default build/), or a bundle folder made by --pack (it holds unpack.sh): then the
@@ -14,20 +16,24 @@
 #     packs the programs the report runs, with their shared libraries, the kernel source the tests read and the
 #     VMTK aorta, into BUNDLE_DIR (default device-bundle/, ignored by git) with ../shared/tools/device-bundle.sh,
 #     for a machine that has none of Debian's ITK, VTK or OpenCL loader. Build them first:
-#       cmake --build build --target itkOpenCLBilateralDepthRelaxFilterGTest vrOpenCLDevicesGTest \
+#       cmake --build build --target itkOpenCLBilateralDepthRelaxFilterGTest itkOpenCLCPRDepthImageFilterGTest \
+#         itkOpenCLCPRResampleImageFilterGTest VesselReformationLogicOpenCLGTest vrOpenCLDevicesGTest \
 #         vrRelaxBackendOpenCLGTest VesselReformationBenchmarks VesselReformationDemo VesselReformation
 #
 # The default benchmark filter takes Relax_CPU/512/1024/threads:N (N = 1, 2, 4, 8, 16) too: the CPU relax's scaling
 # with the cores in the same run (benchmark_table.py checks 16 threads against 2 where there are 16 cores).
 #
 # Settings (environment): VR_REPORT_MIN_TIME (seconds per benchmark repetition, default 0.2),
-# VR_REPORT_BENCHMARKS (the benchmark filter), VR_REPORT_STEP_TIMEOUT (seconds before a step is stopped, default 300).
+# VR_REPORT_BENCHMARKS (the filter of the 512 x 1024 benchmarks, 5 repetitions), VR_REPORT_STEADY (the filter of the
+# steady families, 3 repetitions; "" skips them), VR_REPORT_STEP_TIMEOUT (seconds before a step is stopped, default
+# 300).
 # python3, where there is one, compares the backends' relaxed depth maps; without it the report says so.
 set -uo pipefail
 
 repository=$(cd "$(dirname "$0")/.." && pwd)
-programs=(bin/itkOpenCLBilateralDepthRelaxFilterGTest bin/vrOpenCLDevicesGTest bin/vrRelaxBackendOpenCLGTest
-  bin/VesselReformationBenchmarks bin/VesselReformationDemo cli-modules/VesselReformation)
+programs=(bin/itkOpenCLBilateralDepthRelaxFilterGTest bin/itkOpenCLCPRDepthImageFilterGTest
+  bin/itkOpenCLCPRResampleImageFilterGTest bin/VesselReformationLogicOpenCLGTest bin/vrOpenCLDevicesGTest
+  bin/vrRelaxBackendOpenCLGTest bin/VesselReformationBenchmarks bin/VesselReformationDemo cli-modules/VesselReformation)
 
 fail() {
   echo "device-report: $*" >&2
@@ -109,7 +115,10 @@ benchmarks=$build/bin/VesselReformationBenchmarks
 aorta=${data:+$data/vmtk-aorta-mra}
 step_timeout=${VR_REPORT_STEP_TIMEOUT:-300}
 min_time=${VR_REPORT_MIN_TIME:-0.2}
-filter=${VR_REPORT_BENCHMARKS:-'^(Relax_CPU|Relax_OpenCL|Relax_Steady|Depth|Resample|DepthResample|Pipeline_CPU|Pipeline_OpenCL)/512/1024/'}
+filter=${VR_REPORT_BENCHMARKS:-'^(Relax_CPU|Relax_OpenCL|Relax_OpenCL_Passes|Relax_Plain|Depth|Depth_OpenCL|Resample|Resample_OpenCL|DepthResample|DepthResample_OpenCL|Pipeline_CPU|Pipeline_OpenCL|View_CPU|View_OpenCL)/512/1024/'}
+# The steady families up to 1024 x 2048 (from 2048 x 4096 up the aorta where its iliacs cross takes tens of seconds a
+# solve), the full-size views and the 500 passes on them.
+steady_filter=${VR_REPORT_STEADY-'^(Relax_Steady[A-Za-z_]*/(256/512|512/1024|1024/2048)/|Relax_Steady_FullSize/|Relax_CPU_FullSize/)'}
 
 md=$report/report.md
 say() { printf '%s\n' "$*" >>"$md"; }
@@ -220,6 +229,9 @@ gtest() {
   say "| $name | $result | $(seconds_since "$begin") |"
 }
 gtest itkOpenCLBilateralDepthRelaxFilterGTest "$build/bin/itkOpenCLBilateralDepthRelaxFilterGTest"
+gtest itkOpenCLCPRDepthImageFilterGTest "$build/bin/itkOpenCLCPRDepthImageFilterGTest"
+gtest itkOpenCLCPRResampleImageFilterGTest "$build/bin/itkOpenCLCPRResampleImageFilterGTest"
+gtest VesselReformationLogicOpenCLGTest "$build/bin/VesselReformationLogicOpenCLGTest"
 gtest vrOpenCLDevicesGTest "$build/bin/vrOpenCLDevicesGTest"
 gtest vrRelaxBackendOpenCLGTest "$build/bin/vrRelaxBackendOpenCLGTest" --gtest_filter=-RelaxBackendWithoutOpenCL.*
 # What ctest runs as RelaxBackendWithoutAnyOpenCLPlatform: the ICD loader pointed at an empty vendors folder.
@@ -231,9 +243,10 @@ gtest "vrRelaxBackendOpenCLGTest (no platform)" env OCL_ICD_VENDORS="$scratch/no
 say ""
 say "## Benchmarks"
 say ""
-say "\`VesselReformationBenchmarks --benchmark_filter='$filter' --benchmark_min_time=$min_time\`; Relax_OpenCL"
-say "repeated 5 times (the others repeat as registered). Medians of real time; the label names the device or"
-say "the CPU path. All figures in $report/benchmarks.json."
+say "\`VesselReformationBenchmarks --benchmark_filter='$filter' --benchmark_min_time=$min_time\`, 5 repetitions,"
+say "then the steady families \`--benchmark_filter='$steady_filter'\`, 3 repetitions (the largest once). Medians"
+say "of real time; the label names the device or the CPU path. All figures in benchmarks.json and"
+say "benchmarks-steady.json."
 say ""
 begin=$(now)
 run_step benchmarks "$benchmarks" --benchmark_filter="$filter" --benchmark_min_time="$min_time" \
@@ -245,12 +258,31 @@ sed -n '/^===== benchmarks:/,$p' "$log" | grep -E '^(Benchmark|-{20})|_median ' 
 say '```'
 say ""
 say "Benchmarks: exit $status, $(seconds_since "$begin") s."
+jsons=("$report/benchmarks.json")
+if [[ -n $steady_filter ]]; then
+  begin=$(now)
+  # The steady families' own repetitions (3, once from 2048 x 4096 up) as registered, with Relax_CPU/512/1024 for
+  # the ratio in the same run.
+  run_step benchmarks-steady "$benchmarks" --benchmark_filter="$steady_filter|^Relax_CPU/(256/512|512/1024|1024/2048)/(repeats|iterations)" \
+    --benchmark_min_time="$min_time" --benchmark_out="$report/benchmarks-steady.json" \
+    --benchmark_out_format=json --benchmark_format=console --benchmark_color=false
+  status=$?
+  say ""
+  say '```'
+  sed -n '/^===== benchmarks-steady:/,$p' "$log" | grep -E '^(Benchmark|-{20})|_median |/iterations:1 ' |
+    sed 's/repeats:[0-9]*\///' >>"$md"
+  say '```'
+  say ""
+  say "Steady benchmarks: exit $status, $(seconds_since "$begin") s."
+  [[ -s $report/benchmarks-steady.json ]] && jsons+=("$report/benchmarks-steady.json")
+fi
 table=$repository/Testing/Benchmarks/benchmark_table.py
 if command -v python3 >/dev/null && [[ -f $table && -s $report/benchmarks.json ]]; then
   say ""
-  say "The paper's Table 1 beside these figures (Testing/Benchmarks/benchmark_table.py):"
+  say "The paper's Table 1 beside these figures, the OpenCL relax and the steady families"
+  say "(Testing/Benchmarks/benchmark_table.py):"
   say ""
-  python3 "$table" --json "$report/benchmarks.json" >>"$md" 2>>"$log"
+  python3 "$table" $(printf -- '--json %q ' "${jsons[@]}") >>"$md" 2>>"$log"
 fi
 
 # --- The whole job with each backend --------------------------------------------------------------------------------
@@ -271,6 +303,7 @@ for backend in cpu opencl auto; do
   output=$(sed -n '/^===== demo --backend '"$backend"':/,$p' "$log")
   relax=$(grep -o '^    relax  *[0-9]* ms' <<<"$output" | grep -o '[0-9]*' | paste -sd '+' - | sed 's/+/ + /g')
   used=$(grep -m1 '^    backend ' <<<"$output" | sed 's/^    backend *//')
+  used+=$(grep -m1 '^    view ' <<<"$output" | sed 's/^    view */; /')
   difference="-"
   if [[ $backend != cpu && -f $scratch/demo-$backend/depth-relaxed.nrrd && -f $scratch/demo-cpu/depth-relaxed.nrrd ]]
   then
@@ -282,10 +315,11 @@ done
 say ""
 if [[ -n $aorta && -f $aorta/aorta.mha ]]; then
   say "The VesselReformation command-line module on the VMTK aorta (MRA, --up auto, 512 x 1024, 500 iterations; the module's"
-  say "returned relaxTime):"
+  say "returned stage times; with opencl the whole view runs on the device, and the log's summary line says where each"
+  say "stage ran):"
   say ""
-  say "| Backend | Exit | Wall (s) | relaxTime (ms) | backendUsed | Image | max \\|depth - CPU's\\| (mm) |"
-  say "| --- | --- | --- | --- | --- | --- | --- |"
+  say "| Backend | Exit | Wall (s) | depth, relax, resample (ms) | backendUsed | Image | max \\|depth - CPU's\\| (mm) | max \\|CPR - CPU's\\| |"
+  say "| --- | --- | --- | --- | --- | --- | --- | --- |"
   for backend in cpu opencl auto; do
     begin=$(now)
     run_step "module --backend $backend" "$build/cli-modules/VesselReformation" --up auto --size 512,1024 \
@@ -296,10 +330,13 @@ if [[ -n $aorta && -f $aorta/aorta.mha ]]; then
     wall=$(seconds_since "$begin")
     value() { sed -n "s/^$1 = //p" "$scratch/aorta-$backend.txt" 2>/dev/null; }
     difference="-"
+    cpr="-"
     if [[ $backend != cpu && -f $scratch/aorta-$backend-relaxed.nrrd && -f $scratch/aorta-cpu-relaxed.nrrd ]]; then
       difference=$(nrrd_difference "$scratch/aorta-cpu-relaxed.nrrd" "$scratch/aorta-$backend-relaxed.nrrd")
+      cpr=$(nrrd_difference "$scratch/aorta-cpu-cpr.nrrd" "$scratch/aorta-$backend-cpr.nrrd")
     fi
-    say "| $backend | $status | $wall | $(value relaxTime) | $(value backendUsed) | $(value imageSize) | $difference |"
+    times="$(value depthTime), $(value relaxTime), $(value resampleTime)"
+    say "| $backend | $status | $wall | $times | $(value backendUsed) | $(value imageSize) | $difference | $cpr |"
   done
 else
   say "The module run on the VMTK aorta was skipped: no data at '${aorta:-(VR_SHARED_DATA_DIR unset)}'."

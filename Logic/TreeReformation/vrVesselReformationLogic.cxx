@@ -6,6 +6,7 @@
 #include "vrImageGrid.h"
 #include "vrMemoryBudget.h"
 #include "vrStageMonitor.h"
+#include "vrViewBackend.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRDepthImageFilter.h"
@@ -64,26 +65,36 @@ struct VesselReformationLogic::Internals
   bool         TreeFromExtraction{ false };
   unsigned int TreeExtractionRuns{ 0 };
 
-  // The pipeline, one filter of each kind for the logic's lifetime: [extraction ->] depth -> relax -> resample
-  // (relaxed CPR), and depth -> resample (unfiltered CPR).
+  // The pipeline, one filter of each kind and backend for the logic's lifetime: [extraction ->] depth -> relax ->
+  // resample (relaxed CPR), and depth -> resample (unfiltered CPR). Where the relaxation runs on an OpenCL device,
+  // the depth map and the resampling run there too (vrViewBackend.h): one set of filters per device asked for.
   CenterlineExtractionFilterType::Pointer         Extraction = CenterlineExtractionFilterType::New();
-  DepthFilterType::Pointer                        Depth = DepthFilterType::New();
+  DepthFilterType::Pointer                        CPUDepth = DepthFilterType::New();
   RelaxFilterType::Pointer                        CPURelax = RelaxFilterType::New();
+  ResampleFilterType::Pointer                     CPUUnfilteredResample = ResampleFilterType::New();
+  ResampleFilterType::Pointer                     CPURelaxedResample = ResampleFilterType::New();
   std::map<std::string, RelaxFilterType::Pointer> OpenCLRelax; // by device request
-  RelaxFilterType::Pointer                        Relax;       // the one in use
-  bool                                            HasBackendChoice{ false };
-  RelaxBackend                                    ChosenFor{ RelaxBackend::Auto };
-  std::string                                     ChosenForDevice;
-  itk::BilateralDepthRelaxSolver                  ChosenForSolver{ itk::BilateralDepthRelaxSolver::Jacobi };
-  OpenCLDeviceQuery                               OpenCLDevices = QueryOpenCLDevice; // which device Auto would get
-  ResampleFilterType::Pointer                     UnfilteredResample = ResampleFilterType::New();
-  ResampleFilterType::Pointer                     RelaxedResample = ResampleFilterType::New();
+  std::map<std::string, OpenCLViewFilters>        OpenCLViews; // by device request
+  // The filters in use.
+  DepthFilterType::Pointer       Depth = CPUDepth;
+  RelaxFilterType::Pointer       Relax;
+  bool                           HasBackendChoice{ false };
+  RelaxBackend                   ChosenFor{ RelaxBackend::Auto };
+  std::string                    ChosenForDevice;
+  itk::BilateralDepthRelaxSolver ChosenForSolver{ itk::BilateralDepthRelaxSolver::Jacobi };
+  OpenCLDeviceQuery              OpenCLDevices = QueryOpenCLDevice; // which device Auto would get
+  ResampleFilterType::Pointer    UnfilteredResample = CPUUnfilteredResample;
+  ResampleFilterType::Pointer    RelaxedResample = CPURelaxedResample;
 
   detail::StageMonitor Monitor; // counts, times, progress, abort
   bool                 SurfaceValid{ false };
   bool                 HasCPR{ false };
-  /** The relax filter whose output Outputs.RelaxedDepth copies. */
-  const RelaxFilterType * RelaxedDepthFrom{ nullptr };
+  /** The filters whose outputs the output nodes copy: a node is made anew when another filter (the other
+   * backend's) is in use, even where that filter did not need to run. */
+  const RelaxFilterType *    RelaxedDepthFrom{ nullptr };
+  const DepthFilterType *    DepthFrom{ nullptr };
+  const ResampleFilterType * UnfilteredCPRFrom{ nullptr };
+  const ResampleFilterType * CPRFrom{ nullptr };
   /** The stage counts when the output nodes were last made: a stage that ran since (also in an update that was
    * cancelled later) gets its node made anew. */
   StageCounts Refreshed;
@@ -101,10 +112,8 @@ struct VesselReformationLogic::Internals
   Internals()
   {
     Monitor.Watch(Extraction, detail::Stage::Extraction, "centerlines");
-    Monitor.Watch(Depth, detail::Stage::Depth, "depth");
+    WatchView(CPUDepth, CPUUnfilteredResample, CPURelaxedResample);
     Monitor.Watch(CPURelax, detail::Stage::Relax, "relax");
-    Monitor.Watch(UnfilteredResample, detail::Stage::UnfilteredSampling, "resample");
-    Monitor.Watch(RelaxedResample, detail::Stage::RelaxedSampling, "resample");
     RelaxedResample->SetDepth(CPURelax->GetOutput());
     UnfilteredResample->SetDepth(Depth->GetDepthOutput());
   }
@@ -119,9 +128,19 @@ struct VesselReformationLogic::Internals
   }
 
   void
+  WatchView(DepthFilterType * depth, ResampleFilterType * unfiltered, ResampleFilterType * relaxed)
+  {
+    Monitor.Watch(depth, detail::Stage::Depth, "depth");
+    Monitor.Watch(unfiltered, detail::Stage::UnfilteredSampling, "resample");
+    Monitor.Watch(relaxed, detail::Stage::RelaxedSampling, "resample");
+  }
+
+  void
   ConvertInputs();
   std::string
   SegmentationName() const;
+  void
+  ChooseViewFilters();
   void
   CheckSegmentationAgainstVolume();
   void
@@ -332,6 +351,7 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
   const RelaxFilterChoice choice =
     vr::ChooseRelaxFilter(Parameters.Backend, Parameters.Solver, Parameters.OpenCLDevice, openCL, OpenCLDevices);
   Relax = choice.Filter ? choice.Filter : CPURelax;
+  ChooseViewFilters();
   Outputs.RelaxBackendUsed = ToString(choice.Backend);
   Outputs.RelaxBackendReason = choice.Reason;
   BackendNotice = choice.Notice;
@@ -343,15 +363,43 @@ VesselReformationLogic::Internals::ChooseRelaxFilter()
 }
 
 void
+VesselReformationLogic::Internals::ChooseViewFilters()
+{
+  Depth = CPUDepth;
+  UnfilteredResample = CPUUnfilteredResample;
+  RelaxedResample = CPURelaxedResample;
+  if (Relax == CPURelax)
+  {
+    return;
+  }
+  // The relaxation runs on an OpenCL device: so do the depth map and the resampling, on the same device.
+  auto found = OpenCLViews.find(Parameters.OpenCLDevice);
+  if (found == OpenCLViews.end())
+  {
+    std::string             whyNot;
+    const OpenCLViewFilters view = CreateOpenCLViewFilters(Relax, whyNot);
+    if (!view.Depth)
+    {
+      return;
+    }
+    WatchView(view.Depth, view.UnfilteredResample, view.RelaxedResample);
+    found = OpenCLViews.emplace(Parameters.OpenCLDevice, view).first;
+  }
+  Depth = found->second.Depth;
+  UnfilteredResample = found->second.UnfilteredResample;
+  RelaxedResample = found->second.RelaxedResample;
+}
+
+void
 VesselReformationLogic::Internals::ConfigurePipeline()
 {
+  ChooseRelaxFilter(); // and with it the depth and resampling filters in use
   Depth->SetCenterlineTree(*Tree);
   Depth->SetViewSpecification(Parameters.ToViewSpecification());
   Depth->SetReferenceVolume(Volume->Image);
   Depth->SetMode(Parameters.Mode);
   Depth->SetFixLumen(Parameters.FixLumen);
 
-  ChooseRelaxFilter();
   Relax->SetInput(Depth->GetDepthOutput());
   Relax->SetFixedMask(Depth->GetFixedMaskOutput());
   Parameters.ConfigureRelaxFilter(Relax);
@@ -365,6 +413,7 @@ VesselReformationLogic::Internals::ConfigurePipeline()
     resample->SetSlabMode(Parameters.SlabMode);
     resample->SetDefaultValue(static_cast<float>(Volume->Minimum));
   }
+  UnfilteredResample->SetDepth(Depth->GetDepthOutput());
   RelaxedResample->SetDepth(Relax->GetOutput());
 }
 
@@ -384,10 +433,17 @@ VesselReformationLogic::Internals::PlanProgress()
 std::vector<itk::ProcessObject *>
 VesselReformationLogic::Internals::Filters() const
 {
-  std::vector<itk::ProcessObject *> filters = { Extraction, Depth, CPURelax, UnfilteredResample, RelaxedResample };
+  std::vector<itk::ProcessObject *> filters = {
+    Extraction, CPUDepth, CPURelax, CPUUnfilteredResample, CPURelaxedResample
+  };
   for (const auto & entry : OpenCLRelax)
   {
     filters.push_back(entry.second);
+  }
+  for (const auto & entry : OpenCLViews)
+  {
+    filters.insert(filters.end(),
+                   { entry.second.Depth, entry.second.UnfilteredResample, entry.second.RelaxedResample });
   }
   return filters;
 }
@@ -396,8 +452,9 @@ void
 VesselReformationLogic::Internals::RefreshOutputs(const StageCounts & now)
 {
   const StageCounts & before = Refreshed;
-  if (now.Depth != before.Depth)
+  if (now.Depth != before.Depth || DepthFrom != Depth.GetPointer())
   {
+    DepthFrom = Depth;
     Outputs.View = Depth->GetView();
     Outputs.Depth = ConvertItkImageToVolumeNode(Depth->GetDepthOutput(), "Depth");
     Outputs.FixedMask = ConvertItkImageToVolumeNode(Depth->GetFixedMaskOutput(), "Fixed mask");
@@ -408,12 +465,14 @@ VesselReformationLogic::Internals::RefreshOutputs(const StageCounts & now)
     Outputs.RelaxedDepth = ConvertItkImageToVolumeNode(Relax->GetOutput(), "Relaxed depth");
     RelaxedDepthFrom = Relax;
   }
-  if (now.UnfilteredSamplings != before.UnfilteredSamplings)
+  if (now.UnfilteredSamplings != before.UnfilteredSamplings || UnfilteredCPRFrom != UnfilteredResample.GetPointer())
   {
+    UnfilteredCPRFrom = UnfilteredResample;
     Outputs.UnfilteredCPR = ConvertItkImageToVolumeNode(UnfilteredResample->GetOutput(), "CPR (unfiltered)");
   }
-  if (now.RelaxedSamplings != before.RelaxedSamplings)
+  if (now.RelaxedSamplings != before.RelaxedSamplings || CPRFrom != RelaxedResample.GetPointer())
   {
+    CPRFrom = RelaxedResample;
     Outputs.CPR = ConvertItkImageToVolumeNode(RelaxedResample->GetOutput(), "CPR");
     SurfaceValid = false;
   }
@@ -621,6 +680,8 @@ VesselReformationLogic::Update()
                                                                 : 0.0) +
     (d.Counts.RelaxedSamplings != before.RelaxedSamplings ? monitor.GetSeconds(detail::Stage::RelaxedSampling) : 0.0);
   d.RefreshOutputs(d.Counts);
+  d.Outputs.DepthBackendUsed = DescribeDepthBackend(d.Depth, d.Outputs.DepthBackendReason);
+  d.Outputs.ResampleBackendUsed = DescribeResampleBackend(d.RelaxedResample, d.Outputs.ResampleBackendReason);
 
   if (d.SurfaceEnabled && !d.SurfaceValid)
   {

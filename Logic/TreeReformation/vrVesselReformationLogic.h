@@ -86,6 +86,13 @@ struct ReformationOutputs
    * a CPU device, where the native CPU path is faster on the same cores, so the CPU"). */
   std::string RelaxBackendUsed;
   std::string RelaxBackendReason;
+  /** Where the depth map and the resampling ran ("cpu" or "opencl"), and why: on the relaxation's OpenCL device
+   * when it has one, unless the stage has no kernel for the parameters (e.g. cubic interpolation), which the reason
+   * then names. */
+  std::string DepthBackendUsed;
+  std::string DepthBackendReason;
+  std::string ResampleBackendUsed;
+  std::string ResampleBackendReason;
   StageTimes  Times;
 };
 
@@ -99,7 +106,10 @@ struct ReformationOutputs
  * ITK pipeline for its lifetime: with a segmentation, CenterlineExtractionFilter first; CPRDepthImageFilter, then
  * BilateralDepthRelaxFilter on the backend the parameters ask for (one CPU filter, and one OpenCL filter per device
  * asked for), then a CPRResampleImageFilter on the unfiltered and one on the relaxed depth; then it builds the cut
- * surface. Each Update() passes the parameters to the filters, whose setters change nothing when a value is the
+ * surface. Where the relaxation runs on an OpenCL device, the depth map and the resampling run on it too (their
+ * OpenCL filters, one set per device, sharing the relaxation's session: the volume is uploaded once and the images
+ * pass between the stages on the device, vrViewBackend.h); GetDepthFilter() and the resample getters return the
+ * filters in use. Each Update() passes the parameters to the filters, whose setters change nothing when a value is the
  * same, and updates the two resample filters: ITK's modified times decide what reruns. Output nodes are made
  * anew for the stages that ran. So:
  * - a new segmentation node (or a change to it), new vessel labels: its vessel mask, the extraction, and everything
@@ -108,7 +118,9 @@ struct ReformationOutputs
  * - new centerlines, view (up, angle, centre, size, spacing), depth mode or lumen fixing: everything;
  * - a new volume: resampling and the surface; the depth map and its relaxation too only when the volume's geometry
  *   changed (it supplies the view's defaults);
- * - new relaxation w, anisotropy a, iterations N, backend or OpenCL device: relaxation, the relaxed CPR, surface;
+ * - new relaxation w, anisotropy a, iterations N: relaxation, the relaxed CPR, surface; a new backend or OpenCL
+ *   device: the same, and where the view moves between the CPU and a device, its depth map and unfiltered CPR too
+ *   (on the other backend's filters; a set still up to date from before does not rerun);
  * - new interpolation or slab: both CPR images and the surface;
  * - new window or level: nothing (they only choose how the CPR is displayed, GetDisplayWindowLevel()).
  * GetStageExecutionCounts() counts every stage execution (the filters' StartEvent) so that tests can check these

@@ -172,6 +172,8 @@ RunDemo(int argc, char * argv[])
       std::cout << "  " << what << " relaxation (" << vr::DescribeFilterSettings(parameters) << ", "
                 << outputs.RelaxBackendUsed << "):" << std::endl;
       std::cout << "    backend    " << outputs.RelaxBackendUsed << ": " << outputs.RelaxBackendReason << std::endl;
+      std::cout << "    view       depth map on " << outputs.DepthBackendUsed << ", resampling on "
+                << outputs.ResampleBackendUsed << std::endl;
       PrintStages(outputs, before, logic.GetStageExecutionCounts());
       return Result{ vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth),
                      vr::ConvertVolumeNodeToDepthImage(outputs.CPR) };

@@ -240,7 +240,9 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
           << (fromSegmentation ? std::to_string(std::lround(1e3 * times.Extraction)) : std::string()) << ", depth "
           << 1e3 * times.Depth << ", relax " << 1e3 * times.Relax << " (" << results.RelaxBackendUsed << ", "
           << vr::DescribeFilterSettings(parameters) << "), resample " << 1e3 * times.Resample << ", surface "
-          << 1e3 * times.Surface << "; relax backend: " << results.RelaxBackendReason;
+          << 1e3 * times.Surface << "; relax backend: " << results.RelaxBackendReason << "; depth map on "
+          << results.DepthBackendUsed << " (" << results.DepthBackendReason << "), resampling on "
+          << results.ResampleBackendUsed << " (" << results.ResampleBackendReason << ")";
   progress.Print(std::cout, summary.str());
 }
 } // namespace

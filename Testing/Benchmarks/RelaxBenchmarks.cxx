@@ -7,7 +7,10 @@
 // is now J = 3 mm). Relax_Steady/W/H: the steady solver (the fixed point, J = 3 mm, residual 1e-4 mm) on the same
 // map, against the same plain reference; Relax_Steady_Thorax/W/H and Relax_Steady_Aorta/W/H on the thoracic phantom
 // and the VMTK aorta MRA, at 256 x 512 to 2048 x 4096 beside Relax_CPU at the same sizes (issue 26: the steady
-// solve's cost grows with the pixels).
+// solve's cost grows with the pixels); Relax_Steady_AortaIliacs/W/H on the aorta at 97 degrees, where its iliacs
+// cross in the image, and Relax_Steady_FullSize/W/H on the thoracic phantom as the module views a full-size study of
+// it (0.5 mm voxels) at 1, 0.5 and 0.25 mm a pixel, beside Relax_CPU_FullSize/W/H, the 500 passes on the same maps
+// (issue 40: the steady solve on real anatomy).
 #include "vrBenchmarkScene.h"
 
 #include "PlainBilateralDepthRelax.h"
@@ -27,6 +30,7 @@ namespace
 {
 using vr::benchmarks::AortaDepthMap;
 using vr::benchmarks::DepthImage;
+using vr::benchmarks::FullSizeDepthMap;
 using vr::benchmarks::PhantomScene;
 using vr::benchmarks::ThoraxDepthMap;
 
@@ -68,11 +72,13 @@ WarmUp(itk::ProcessObject & filter)
 }
 
 /** Relax_CPU/W/H (all cores), Relax_CPU/W/H/threads:N (a team of N threads, on any machine), and
- * Relax_CPU_Passes/W/H/threads:N/passes:K (K passes between synchronizations instead of the kernel's choice). */
+ * Relax_CPU_Passes/W/H/threads:N/passes:K (K passes between synchronizations instead of the kernel's choice); with
+ * \a fullSize, Relax_CPU_FullSize/W/H on the full-size view's map instead of the run-off phantom's. */
 void
-RelaxCPU(benchmark::State & state, unsigned int threads, unsigned int passes)
+RelaxCPU(benchmark::State & state, unsigned int threads, unsigned int passes, bool fullSize = false)
 {
-  const auto & map = PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
+  const auto & map = fullSize ? FullSizeDepthMap(state.range(0), state.range(1))
+                              : PhantomScene::Instance().GetDepthMap(state.range(0), state.range(1));
   auto         filter = itk::BilateralDepthRelaxFilter<DepthImage>::New();
   filter->SetDepthInput(map.Depth);
   filter->SetFixedMask(map.Fixed);
@@ -140,7 +146,9 @@ enum class SteadyCase
 {
   Runoff,
   Thorax,
-  Aorta
+  Aorta,
+  AortaIliacs,
+  FullSize
 };
 
 /** The steady solver with the filter's defaults (J = 3 mm, tolerance 1e-4 mm), all cores, on the run-off phantom's
@@ -161,6 +169,14 @@ RelaxSteady(benchmark::State & state, SteadyCase steadyCase)
     else if (steadyCase == SteadyCase::Aorta)
     {
       map = &AortaDepthMap(width, height);
+    }
+    else if (steadyCase == SteadyCase::AortaIliacs)
+    {
+      map = &AortaDepthMap(width, height, vr::benchmarks::AortaIliacsOverlapAngle);
+    }
+    else if (steadyCase == SteadyCase::FullSize)
+    {
+      map = &FullSizeDepthMap(width, height);
     }
   }
   catch (const std::exception & error)
@@ -253,8 +269,11 @@ const bool Registered = []
   {
     const bool largest = size.first == 2048;
     const bool large = size.first >= 1024;
-    Register(
-      benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU, 0u, 0u), size.first, size.second, large ? 3 : 10, large);
+    Register(benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU, 0u, 0u, false),
+             size.first,
+             size.second,
+             large ? 3 : 10,
+             large);
     if (size.second == 2 * size.first)
     {
       Register(benchmark::RegisterBenchmark("Relax_Steady", RelaxSteady, SteadyCase::Runoff),
@@ -272,19 +291,39 @@ const bool Registered = []
                size.second,
                largest ? 1 : (large ? 3 : 10),
                large);
+      Register(benchmark::RegisterBenchmark("Relax_Steady_AortaIliacs", RelaxSteady, SteadyCase::AortaIliacs),
+               size.first,
+               size.second,
+               largest ? 1 : (large ? 3 : 10),
+               large);
     }
+  }
+  // The full-size study's views, each x 4 the pixels of the one before, with the 500 passes on the same maps.
+  for (const auto & view : vr::benchmarks::FullSizeViews())
+  {
+    const bool large = static_cast<double>(view.Width) * view.Height > 1.5e6;
+    Register(benchmark::RegisterBenchmark("Relax_Steady_FullSize", RelaxSteady, SteadyCase::FullSize),
+             view.Width,
+             view.Height,
+             large ? 3 : 10,
+             large);
+    Register(benchmark::RegisterBenchmark("Relax_CPU_FullSize", RelaxCPU, 0u, 0u, true),
+             view.Width,
+             view.Height,
+             large ? 3 : 10,
+             large);
   }
   // Team sizes for scaling: the same run compares them (docs/design.md, temporal blocking).
   for (const unsigned int threads : { 1u, 2u, 4u, 8u, 16u })
   {
-    Register(benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU, threads, 0u), 512, 1024, 10, false, threads);
+    Register(benchmark::RegisterBenchmark("Relax_CPU", RelaxCPU, threads, 0u, false), 512, 1024, 10, false, threads);
   }
   // Fixed passes between synchronizations, to check the kernel's choice on a new machine.
   for (const unsigned int threads : { 1u, 2u, 16u })
   {
     for (const unsigned int passes : { 1u, 4u, 8u, 16u, 32u })
     {
-      Register(benchmark::RegisterBenchmark("Relax_CPU_Passes", RelaxCPU, threads, passes),
+      Register(benchmark::RegisterBenchmark("Relax_CPU_Passes", RelaxCPU, threads, passes, false),
                512,
                1024,
                5,

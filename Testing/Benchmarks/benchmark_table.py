@@ -3,11 +3,12 @@
 """Prints the paper's Table 1 beside this machine's figures, from VesselReformationBenchmarks' JSON output.
 
     benchmark_table.py --run build/bin/VesselReformationBenchmarks [--json-out results.json] [-- ARGS...]
-    benchmark_table.py --json results.json
+    benchmark_table.py --json results.json [--json more.json ...]
 
 --run runs the benchmark executable (its console output goes to stderr; ARGS after -- are passed on, e.g.
 --benchmark_filter=Relax) and reads the JSON it writes; --json reads a file written earlier with
---benchmark_out=FILE --benchmark_out_format=json. Figures are medians of the repetitions, real time, in ms.
+--benchmark_out=FILE --benchmark_out_format=json (several: their benchmarks together, the first one's context).
+Figures are medians of the repetitions, real time, in ms.
 Python 3 standard library only.
 """
 
@@ -36,6 +37,13 @@ TARGETS = [
     ("whole pipeline on the CPU", "Pipeline_CPU", 250.0),
 ]
 MINIMUM_SPEED_UP = 15.0
+# Issue 40 on a GPU: the OpenCL relax, 500 passes at 512 x 1024, at most this long (ms).
+OPENCL_RELAX_TARGET = 2.0
+# Issue 40: the steady solve at 512 x 1024 at most this many times the 500 Jacobi passes (Relax_CPU/512/1024) of the
+# same run, and each x 4 of pixels at most this many times the time, on every case.
+STEADY_RATIO_TARGET = 2.0
+STEADY_GROWTH_TARGET = 5.0
+STEADY_PREFIX = "Relax_Steady"
 # Issue 22: on a machine with 16 cores, Relax_CPU/512/1024/threads:16 at least this much faster than threads:2.
 MINIMUM_SCALING_16_OVER_2 = 5.0
 
@@ -120,9 +128,13 @@ def table(report):
     row("depth + resample (new angle)", None, "DepthResample")
     row("total: depth + CPU filter + resample", None, "Pipeline_CPU")
     row("total: depth + GPU/OpenCL filter + resample", "total GPU", "Pipeline_OpenCL")
+    row("view on the CPU: depth + filter + 2 CPRs", None, "View_CPU")
+    row("view on the device: depth + filter + 2 CPRs", None, "View_OpenCL",
+        lambda size, value: f" ({ratio(ours('View_CPU', size), value)} the CPU's)")
 
     # Relax_CPU_<set>/W/H only; Relax_CPU_Passes/W/H/threads:N/passes:K has more fields.
-    others = sorted(name for name in medians if name.startswith("Relax_CPU_") and name.count("/") == 2)
+    others = sorted(name for name in medians
+                    if name.startswith("Relax_CPU_") and name.count("/") == 2 and not name.startswith("Relax_CPU_FullSize"))
     teams = {}
     for name in medians:
         parts = name.split("/")
@@ -146,6 +158,15 @@ def table(report):
         notes.append(f"- CPU relax with a team of {threads} threads, {width}×{height}: "
                      f"{milliseconds(teams[(width, height, threads)])}, "
                      f"{ratio(two, teams[(width, height, threads)])} the speed of 2 threads")
+
+    passes = {}
+    for name in medians:
+        parts = name.split("/")
+        if len(parts) == 4 and parts[0] == "Relax_OpenCL_Passes" and parts[3].startswith("passes:"):
+            passes[int(parts[3][len("passes:"):])] = medians[name]
+    for count in sorted(passes):
+        notes.append(f"- OpenCL relax with {count} passes a launch ({-(-500 // count)} launches), 512×1024: "
+                     f"{milliseconds(passes[count])}")
 
     checks = []
     big = SIZES[-1]
@@ -173,6 +194,14 @@ def table(report):
         checks.append(f"- CPU relax with 16 threads against 2: {two / sixteen:.1f}×, not a check on {cpus} CPUs "
                       f"(16 threads need 16 cores)")
 
+    opencl = ours("Relax_OpenCL", big)
+    if opencl is not None:
+        best = min(passes.values()) if passes else opencl
+        verdict = "met" if min(opencl, best) <= OPENCL_RELAX_TARGET else "MISSED"
+        checks.append(f"- OpenCL relax, 500 passes ≤ {OPENCL_RELAX_TARGET:.0f} ms at {big[0]}×{big[1]} (upload and "
+                      f"download included): {milliseconds(opencl)} with the device's choice, "
+                      f"{milliseconds(best)} at best, {verdict}")
+
     machine = (f"Ours: {context.get('cpu_model', 'unknown CPU')}, {context.get('num_cpus', '?')} CPUs "
                f"({context.get('itk_threads', '?')} ITK threads), relax kernel "
                f"{context.get('relax_instruction_set', '?')}, {context.get('build_type', '?')} build "
@@ -183,11 +212,57 @@ def table(report):
     return "\n".join([machine, paper, ""] + lines + [""] + notes + ([""] if notes else []) + ["Targets:"] + checks)
 
 
+def steady_table(report):
+    """The steady solver's families (Relax_Steady*/W/H): time, the ratio to the 500 Jacobi passes of the same run
+    (Relax_CPU/W/H, or Relax_CPU_<case>/W/H on the case's own maps where the run has it), and the growth per x 4 of
+    pixels, with the targets checked: at 512 x 1024, or for a family without that size at its middle size."""
+    medians = read_medians(report)
+    families = {}
+    for name, time in medians.items():
+        parts = name.split("/")
+        if len(parts) == 3 and parts[0].startswith(STEADY_PREFIX):
+            families.setdefault(parts[0], {})[(int(parts[1]), int(parts[2]))] = time
+    if not families:
+        return ""
+    lines = ["| case | " + " | ".join(["W×H", "ms", "× passes", "growth"]) + " |", "|---|---|---:|---:|---:|"]
+    checks = []
+    for family in sorted(families):
+        sizes = sorted(families[family], key=lambda size: size[0] * size[1])
+        target = (512, 1024) if (512, 1024) in sizes else sizes[len(sizes) // 2]
+        suffix = family[len(STEADY_PREFIX):]
+
+        def passes(size):
+            return medians.get(f"Relax_CPU{suffix}/{size[0]}/{size[1]}") or medians.get(f"Relax_CPU/{size[0]}/{size[1]}")
+
+        previous = None
+        for size in sizes:
+            time = families[family][size]
+            jacobi = passes(size)
+            times_passes = f"{time / jacobi:.2f}" if jacobi else "–"
+            growth = "–"
+            if previous and size[0] * size[1] == 4 * previous[0][0] * previous[0][1]:
+                growth = f"×{time / previous[1]:.2f}"
+                if time / previous[1] > STEADY_GROWTH_TARGET:
+                    checks.append(f"- {family}: {previous[0][0]}×{previous[0][1]} → {size[0]}×{size[1]} costs "
+                                  f"×{time / previous[1]:.2f}, above ×{STEADY_GROWTH_TARGET:.0f}: MISSED")
+            lines.append(f"| {family} | {size[0]}×{size[1]} | {milliseconds(time)} | {times_passes} | {growth} |")
+            previous = (size, time)
+        at, jacobi = families[family].get(target), passes(target)
+        if jacobi and at:
+            verdict = "met" if at / jacobi <= STEADY_RATIO_TARGET else "MISSED"
+            checks.append(f"- {family} at {target[0]}×{target[1]} ≤ {STEADY_RATIO_TARGET:.0f}× the 500 passes "
+                          f"({milliseconds(jacobi)}): {at / jacobi:.2f}×, {verdict}")
+    growths = [line for line in checks if "costs ×" in line]
+    if not growths:
+        checks.append(f"- every ×4 of pixels ≤ ×{STEADY_GROWTH_TARGET:.0f} on every case: met")
+    return "\n".join(lines + ["", "Steady targets:"] + checks)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     source = parser.add_mutually_exclusive_group(required=True)
     source.add_argument("--run", metavar="EXE", help="run this benchmark executable")
-    source.add_argument("--json", metavar="FILE", help="read this JSON output")
+    source.add_argument("--json", metavar="FILE", action="append", help="read this JSON output (repeatable)")
     parser.add_argument("--json-out", metavar="FILE", help="with --run: keep the JSON here")
     parser.add_argument("extra", nargs="*", help="with --run: arguments for the executable (after --)")
     arguments = parser.parse_args()
@@ -195,11 +270,17 @@ def main():
     if arguments.json:
         if arguments.extra or arguments.json_out:
             parser.error("--json takes no executable arguments or --json-out")
-        try:
-            with open(arguments.json, encoding="utf-8") as file:
-                report = json.load(file)
-        except (OSError, ValueError) as error:
-            sys.exit(f"benchmark_table.py: cannot read --json {arguments.json}: {error}")
+        report = None
+        for path in arguments.json:
+            try:
+                with open(path, encoding="utf-8") as file:
+                    part = json.load(file)
+            except (OSError, ValueError) as error:
+                sys.exit(f"benchmark_table.py: cannot read --json {path}: {error}")
+            if report is None:
+                report = part
+            else:
+                report.setdefault("benchmarks", []).extend(part.get("benchmarks", []))
     else:
         if not (os.path.isfile(arguments.run) and os.access(arguments.run, os.X_OK)):
             sys.exit(f"benchmark_table.py: --run {arguments.run} is not an executable file")
@@ -213,6 +294,10 @@ def main():
         if not arguments.json_out:
             os.unlink(out)
     print(table(report))
+    steady = steady_table(report)
+    if steady:
+        print()
+        print(steady)
 
 
 if __name__ == "__main__":

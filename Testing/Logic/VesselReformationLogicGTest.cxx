@@ -188,11 +188,21 @@ TEST_F(VesselReformationLogicTest, NewBackendRerunsRelaxAndResample)
   std::string whyNot;
   if (vr::TryCreateOpenCLRelaxFilter("", whyNot))
   {
+    // On an OpenCL device the depth map and both CPR images are computed there too (their own filters, in the
+    // relaxation's session): the whole view runs again, on the device.
     parameters.Backend = vr::RelaxBackend::OpenCL;
     m_Logic.SetParameters(parameters);
     m_Logic.Update();
     EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendUsed, "opencl");
-    ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 2, 2, 1, 2);
+    EXPECT_EQ(m_Logic.GetOutputs().DepthBackendUsed, "opencl");
+    ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 2, 2, 2, 2);
+
+    // Back to the CPU: its filters are still up to date, nothing reruns, and the outputs are theirs again.
+    parameters.Backend = vr::RelaxBackend::CPU;
+    m_Logic.SetParameters(parameters);
+    m_Logic.Update();
+    EXPECT_EQ(m_Logic.GetOutputs().DepthBackendUsed, "cpu");
+    ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 2, 2, 2, 2);
   }
 }
 

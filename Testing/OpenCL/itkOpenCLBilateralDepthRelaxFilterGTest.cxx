@@ -186,6 +186,7 @@ TEST_P(KernelLayoutAgreement, EveryVectorWidthAndLayoutMatchesCPU)
       const auto mask = vr::test::MakeRandomMaskImage(size[0], size[1], 0.1, seed + 1000);
       auto       filter = OpenCLFilter::New();
       filter->SetKernelLayoutForTesting(vectorWidth, gpuLayout);
+      filter->SetPassesPerLaunch(1); // the one-pass kernel; MultiPassLaunches below checks the other
       const auto opencl = Relax<OpenCLFilter>(filter, depth, mask, parameters);
       const auto cpu = RelaxOnCPU(depth, mask, parameters);
       EXPECT_LE(MaxAbsoluteDifference(cpu, opencl), Tolerance)
@@ -216,6 +217,105 @@ TEST(OpenCLBilateralDepthRelax, AnInvalidForcedVectorWidthIsRejected)
   EXPECT_THROW(filter->SetKernelLayoutForTesting(3, false), itk::ExceptionObject);
   EXPECT_THROW(filter->SetKernelLayoutForTesting(32, true), itk::ExceptionObject);
   EXPECT_NO_THROW(filter->SetKernelLayoutForTesting(0, false));
+}
+
+// --- Several passes per launch (GPUs) --------------------------------------------------------------------------
+
+/** The OpenCL filter with the GPU layout forced and \a passesPerLaunch passes a launch. */
+OpenCLFilter::Pointer
+MultiPassFilter(unsigned int passesPerLaunch)
+{
+  auto filter = OpenCLFilter::New();
+  filter->SetKernelLayoutForTesting(1, true);
+  filter->SetPassesPerLaunch(passesPerLaunch);
+  return filter;
+}
+
+// Each tile computes its border pixels again instead of exchanging them between passes: the pixels a tile keeps
+// must not depend on how many passes a launch runs (bits), and must be the CPU's (1e-4 mm). Sizes around the tile
+// (96 x 48 pixels with the border) and below it, iterations that are no multiple of the passes per launch.
+TEST(OpenCLBilateralDepthRelax, MultiPassLaunchesGiveTheSameBitsForEveryPassCountAndMatchTheCPU)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const unsigned int sizes[][2] = { { 1, 1 }, { 3, 70 }, { 95, 47 }, { 200, 130 } };
+  const Parameters   cases[] = { { 1.0, 0.5, 37 }, { 0.7, 0.0, 20 }, { 1.0, 1.0 / 9.0, 50 } };
+  unsigned int       seed = 700;
+  for (const auto & size : sizes)
+  {
+    for (const auto & parameters : cases)
+    {
+      ++seed;
+      const auto                depth = vr::test::MakeRandomDepthImage(size[0], size[1], -2.0f, 3.0f, seed);
+      const auto                mask = vr::test::MakeRandomMaskImage(size[0], size[1], 0.1, seed + 1000);
+      const auto                cpu = RelaxOnCPU(depth, mask, parameters);
+      const DepthImage::Pointer first = Relax<OpenCLFilter>(MultiPassFilter(2), depth, mask, parameters);
+      EXPECT_LE(MaxAbsoluteDifference(cpu, first), Tolerance) << size[0] << " x " << size[1];
+      // The one-pass kernel computes the same expressions; whether its bits are the same depends on the compiler
+      // contracting the same products into fused multiply-adds in both, so it is reported, not required.
+      const DepthImage::Pointer onePass = Relax<OpenCLFilter>(MultiPassFilter(1), depth, mask, parameters);
+      std::cout << size[0] << " x " << size[1] << ", " << parameters.Iterations << " iterations: several passes a "
+                << "launch differ from one pass a launch by " << MaxAbsoluteDifference(onePass, first) << " mm"
+                << std::endl;
+      for (const unsigned int passes : { 3u, 4u, 8u, 13u, 16u })
+      {
+        auto       filter = MultiPassFilter(passes);
+        const auto opencl = Relax<OpenCLFilter>(filter, depth, mask, parameters);
+        EXPECT_EQ(vr::test::PixelsOf(opencl.GetPointer()), vr::test::PixelsOf(first.GetPointer()))
+          << size[0] << " x " << size[1] << ", " << passes << " passes a launch, " << parameters.Iterations
+          << " iterations";
+        EXPECT_EQ(filter->GetEffectivePassesPerLaunch(), passes);
+        // One launch per block of passes, and the one that joins the depth pairs.
+        EXPECT_EQ(filter->GetNumberOfLaunches(), (parameters.Iterations + passes - 1) / passes + 1);
+      }
+    }
+  }
+}
+
+// 500 passes at the paper's size in 63 launches instead of 500, still within 1e-4 mm of the CPU.
+TEST(OpenCLBilateralDepthRelax, MultiPassLaunchesMatchTheCPUOnThePhantomAt512x1024)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const PhantomDepthMap map = MakePhantomDepthMap(512, 1024);
+  const Parameters      parameters{ 1.0, 0.5, 500 };
+  auto                  filter = MultiPassFilter(8);
+  const auto            opencl = Relax<OpenCLFilter>(filter, map.Depth, map.Fixed, parameters);
+  const auto            cpu = RelaxOnCPU(map.Depth, map.Fixed, parameters);
+  EXPECT_LE(MaxAbsoluteDifference(cpu, opencl), Tolerance);
+  EXPECT_EQ(filter->GetNumberOfLaunches(), 63u + 1u);
+  std::ostringstream printed;
+  filter->Print(printed);
+  EXPECT_NE(printed.str().find("Kernel shape: 8 passes a launch on tiles of 80 x 32 pixels"), std::string::npos)
+    << printed.str();
+}
+
+TEST(OpenCLBilateralDepthRelax, TheDevicesChoiceIsOnePassALaunchOnACPUDeviceAndSeveralOnAGPU)
+{
+  VR_SKIP_WITHOUT_OPENCL_DEVICE();
+  const auto depth = vr::test::MakeRandomDepthImage(40, 30, -2.0f, 3.0f, 5);
+  auto       filter = OpenCLFilter::New();
+  Relax<OpenCLFilter>(filter, depth, nullptr, { 1.0, 0.5, 24 });
+  const bool cpuDevice = filter->GetDeviceLabel().find(", CPU)") != std::string::npos;
+  EXPECT_EQ(filter->GetEffectivePassesPerLaunch(), cpuDevice ? 1u : OpenCLFilter::DefaultPassesPerLaunchOnGPUs)
+    << filter->GetDeviceLabel();
+  EXPECT_EQ(filter->GetNumberOfLaunches(), cpuDevice ? 25u : 3u + 1u);
+}
+
+TEST(OpenCLBilateralDepthRelax, TooManyPassesPerLaunchAreRejectedNamingTheParameter)
+{
+  const auto depth = vr::test::MakeRandomDepthImage(8, 8, 0.0f, 1.0f, 3);
+  auto       filter = OpenCLFilter::New();
+  filter->SetInput(depth);
+  filter->SetPassesPerLaunch(OpenCLFilter::MaximumPassesPerLaunch + 1);
+  try
+  {
+    filter->Update();
+    FAIL() << "17 passes a launch were accepted";
+  }
+  catch (const itk::ExceptionObject & error)
+  {
+    EXPECT_NE(std::string(error.GetDescription()).find("PassesPerLaunch = 17"), std::string::npos)
+      << error.GetDescription();
+  }
 }
 
 // --- Answers worked out by hand -------------------------------------------------------------------------------
@@ -551,12 +651,23 @@ TEST(OpenCLBilateralDepthRelax, TheProgramIsTheClFileWithItsDefinitionsAsBuildOp
             "-D LOCAL_HEIGHT=4 -D WEIGHT_UNDERFLOW_POWER=126.0f");
 
   filter->SetKernelLayoutForTesting(2, true);
+  filter->SetPassesPerLaunch(1);
   filter->PrepareDevice();
   ExpectSameText(filter->GetProgramSource(), onDisk);
   const std::string gpuOptions = filter->GetBuildOptions();
   EXPECT_EQ(gpuOptions.rfind("-D VECTOR_WIDTH=2 -D VECTORS_PER_ITEM=1 -D ROWS_PER_ITEM=4 -D LOCAL_WIDTH=", 0), 0)
     << gpuOptions;
   EXPECT_NE(gpuOptions.find(" -D WEIGHT_UNDERFLOW_POWER=126.0f"), std::string::npos) << gpuOptions;
+  EXPECT_EQ(gpuOptions.find("PASSES_PER_LAUNCH"), std::string::npos) << gpuOptions;
+
+  // Several passes a launch (a GPU's default): the multi-pass kernel's tile and passes, scalar, work-groups of
+  // 32 x 8, tiles of 96 x 48 pixels with a border of 6 (the passes) on each side.
+  filter->SetPassesPerLaunch(6);
+  filter->PrepareDevice();
+  ExpectSameText(filter->GetProgramSource(), onDisk);
+  EXPECT_EQ(filter->GetBuildOptions(),
+            "-D VECTOR_WIDTH=1 -D VECTORS_PER_ITEM=1 -D ROWS_PER_ITEM=1 -D LOCAL_WIDTH=32 -D LOCAL_HEIGHT=8 "
+            "-D WEIGHT_UNDERFLOW_POWER=126.0f -D PASSES_PER_LAUNCH=6 -D TILE_WIDTH=84 -D TILE_HEIGHT=36");
 
   // The rebuilt program still relaxes as the CPU does.
   const auto depth = vr::test::MakeRandomDepthImage(37, 23, -2.0f, 3.0f, 77);

@@ -2,22 +2,28 @@
 // Measurement, not a test: the steady solver from the input depths (as before issue 26) and with nested iteration,
 // alternately, on the thoracic phantom, the run-off phantom and the VMTK aorta MRA at W x H, H = 2 W: median times of
 // repeated solves, outer iterations on the image's grid and on the coarser ones, and the energy and residual of each
-// result from the plain reference code (docs/measurements/2026-11-26-steady-nested-iteration.md).
+// result from the plain reference code (docs/measurements/2026-11-26-steady-nested-iteration.md). Beside the wall time,
+// the process's CPU time (all threads): on a machine shared with other work, where wall time also counts the waits
+// for a core, it tells what a solve cost. --jacobi also times the 500 Jacobi passes (the CPU filter, w = 1, the same J
+// and threads) on the same map, alternately with the solves, and prints the ratio (issue 40).
 //
-//   MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] case:W ...
-//   (case thorax|runoff|aorta; a in mm^-2, default 1/9: J = 3 mm)
+//   MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] [--jacobi] case:W ...
+//   (case thorax|runoff|aorta|aortailiacs|aorta@ANGLE (the aorta at ANGLE degrees), H = 2 W, or fullsize, W one of the
+//   full-size views' widths (vr::benchmarks::FullSizeViews); a in mm^-2, default 1/9: J = 3 mm)
 #include "PlainBilateralDepthRelax.h"
 #include "vrBenchmarkScene.h"
 #include "vrCenterlineIO.h"
 #include "vrTestDepthMaps.h"
 #include "vrVolumeIO.h"
 
+#include "itkBilateralDepthRelaxFilter.h"
 #include "itkBilateralDepthRelaxSteadySolver.h"
 #include "itkCTAPhantom.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -53,15 +59,54 @@ MakeMap(const std::string & name, unsigned int width)
   {
     return MapOf(vr::benchmarks::AortaDepthMap(width, height), width, height);
   }
-  throw std::invalid_argument("unknown case " + name + " (thorax, runoff or aorta)");
+  if (name.rfind("aorta@", 0) == 0)
+  {
+    const double angle = std::stod(name.substr(6));
+    return MapOf(vr::benchmarks::AortaDepthMap(width, height, angle), width, height);
+  }
+  if (name == "aortailiacs")
+  {
+    return MapOf(vr::benchmarks::AortaDepthMap(width, height, vr::benchmarks::AortaIliacsOverlapAngle), width, height);
+  }
+  if (name == "fullsize")
+  {
+    for (const auto & view : vr::benchmarks::FullSizeViews())
+    {
+      if (view.Width == width)
+      {
+        return MapOf(vr::benchmarks::FullSizeDepthMap(view.Width, view.Height), view.Width, view.Height);
+      }
+    }
+    throw std::invalid_argument("no full-size view is " + std::to_string(width) + " pixels wide");
+  }
+  throw std::invalid_argument("unknown case " + name + " (thorax, runoff, aorta, aortailiacs or fullsize)");
 }
 
 struct Run
 {
   Solver::Report      Report;
   double              Milliseconds;
+  double              CPUMilliseconds;
   std::vector<double> Relaxed;
 };
+
+double
+CPUMillisecondsSince(std::clock_t start)
+{
+  return 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+}
+
+/** The 500 Jacobi passes (w = 1, the same a) of the CPU filter on \a map with \a threads: wall and CPU ms. */
+std::pair<double, double>
+JacobiOnce(itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & filter)
+{
+  filter.Modified();
+  const auto         start = std::chrono::steady_clock::now();
+  const std::clock_t processStart = std::clock();
+  filter.Update();
+  return { std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+           CPUMillisecondsSince(processStart) };
+}
 
 Run
 SolveOnce(const Map & map, bool nested, unsigned int threads, Solver::Workspace & workspace)
@@ -70,8 +115,9 @@ SolveOnce(const Map & map, bool nested, unsigned int threads, Solver::Workspace 
   Solver::Settings   settings = Solver::DefaultSettings();
   settings.NestedIteration = nested;
   settings.MaximumOuterIterations = 1000;
-  const auto   start = std::chrono::steady_clock::now();
-  const auto   report = Solver::Solve(map.Depth.data(),
+  const auto         start = std::chrono::steady_clock::now();
+  const std::clock_t processStart = std::clock();
+  const auto         report = Solver::Solve(map.Depth.data(),
                                     map.Fixed.data(),
                                     relaxed.data(),
                                     map.Width,
@@ -82,9 +128,11 @@ SolveOnce(const Map & map, bool nested, unsigned int threads, Solver::Workspace 
                                     {},
                                     &workspace,
                                     settings);
-  const double milliseconds =
+  const double       milliseconds =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return { report, milliseconds, std::vector<double>(relaxed.begin(), relaxed.end()) };
+  return {
+    report, milliseconds, CPUMillisecondsSince(processStart), std::vector<double>(relaxed.begin(), relaxed.end())
+  };
 }
 
 double
@@ -104,6 +152,7 @@ main(int argc, char * argv[])
     unsigned int             repeat = 5;
     unsigned int             threads = 2;
     std::string              only;
+    bool                     jacobi = false;
     std::vector<std::string> cases;
     for (int k = 1; k < argc; ++k)
     {
@@ -124,15 +173,20 @@ main(int argc, char * argv[])
       {
         only = argv[++k];
       }
+      else if (argument == "--jacobi")
+      {
+        jacobi = true;
+      }
       else
       {
         cases.push_back(argument);
       }
     }
     std::cout
-      << "| case | W x H | start | median ms (n) | fine outer | coarse outer | grids | V-cycles | energy mm^2 | "
-         "plain residual mm |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
-      << std::endl;
+      << "| case | W x H | start | median ms (n) | median CPU ms | fine outer | coarse outer | grids | V-cycles | "
+         "energy mm^2 | plain residual mm |"
+      << (jacobi ? " 500 passes: ms, CPU ms | x passes (CPU) |" : "")
+      << "\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|" << (jacobi ? "---:|---:|" : "") << std::endl;
     for (const std::string & item : cases)
     {
       const auto          colon = item.find(':');
@@ -141,9 +195,31 @@ main(int argc, char * argv[])
       const Map           map = MakeMap(name, width);
       Solver::Workspace   input, nested;
       std::vector<double> times[2];
+      std::vector<double> cpuTimes[2];
+      std::vector<double> jacobiTimes;
+      std::vector<double> jacobiCPUTimes;
       Run                 last[2];
+      auto                filter = itk::BilateralDepthRelaxFilter<itk::Image<float, 2>>::New();
+      auto                depthImage = vr::test::MakeDepthImage(map.Width, map.Height, map.Depth);
+      auto                maskImage = vr::test::MakeMaskImage(map.Width, map.Height, map.Fixed);
+      filter->SetInput(depthImage);
+      filter->SetFixedMask(maskImage);
+      filter->SetRelaxation(1.0);
+      filter->SetAnisotropy(Anisotropy);
+      filter->SetNumberOfIterations(500);
+      filter->SetNumberOfWorkUnits(threads);
+      if (jacobi)
+      {
+        JacobiOnce(*filter); // its workspace, as the solves keep theirs
+      }
       for (unsigned int r = 0; r < repeat; ++r)
       {
+        if (jacobi)
+        {
+          const auto [wall, cpu] = JacobiOnce(*filter);
+          jacobiTimes.push_back(wall);
+          jacobiCPUTimes.push_back(cpu);
+        }
         for (int n = 0; n < 2; ++n)
         {
           if ((only == "nested" && n == 0) || (only == "input" && n == 1))
@@ -152,6 +228,7 @@ main(int argc, char * argv[])
           }
           last[n] = SolveOnce(map, n == 1, threads, n == 1 ? nested : input);
           times[n].push_back(last[n].Milliseconds);
+          cpuTimes[n].push_back(last[n].CPUMilliseconds);
         }
       }
       for (int n = 0; n < 2; ++n)
@@ -163,12 +240,20 @@ main(int argc, char * argv[])
         const Run & run = last[n];
         std::cout << "| " << name << " | " << map.Width << " x " << map.Height << " | " << (n ? "nested" : "input")
                   << " | " << std::fixed << std::setprecision(1) << Median(times[n]) << " (" << times[n].size()
-                  << ") | " << run.Report.OuterIterations << " | " << run.Report.CoarseOuterIterations << " | "
-                  << run.Report.Grids << " | " << run.Report.Cycles << " | " << std::setprecision(6)
+                  << ") | " << Median(cpuTimes[n]) << " | " << run.Report.OuterIterations << " | "
+                  << run.Report.CoarseOuterIterations << " | " << run.Report.Grids << " | " << run.Report.Cycles
+                  << " | " << std::setprecision(6)
                   << vr::test::PlainRelaxEnergy(run.Relaxed, map.Width, map.Height, Anisotropy) << " | "
                   << std::scientific << std::setprecision(2)
                   << vr::test::PlainFixedPointResidual(run.Relaxed, map.Fixed, map.Width, map.Height, Anisotropy)
-                  << std::defaultfloat << (run.Report.Converged ? "" : " (stopped)") << " |" << std::endl;
+                  << std::defaultfloat << (run.Report.Converged ? "" : " (stopped)") << " |";
+        if (jacobi)
+        {
+          std::cout << std::fixed << std::setprecision(1) << " " << Median(jacobiTimes) << ", "
+                    << Median(jacobiCPUTimes) << " | " << std::setprecision(2)
+                    << Median(cpuTimes[n]) / Median(jacobiCPUTimes) << " |" << std::defaultfloat;
+        }
+        std::cout << std::endl;
       }
     }
     return EXIT_SUCCESS;

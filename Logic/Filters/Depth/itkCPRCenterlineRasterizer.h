@@ -35,6 +35,16 @@ struct CPRCenterlinePixels
   CountCenterlinePixels() const;
 };
 
+/** One centerline pixel of a view: its row-major index k = row * W + column and what CPRCenterlinePixels holds
+ * there. */
+struct CPRCenterlinePixel
+{
+  std::size_t Index{ 0 };
+  double      Depth{ 0.0 };
+  double      Radius{ 0.0 };
+  uint32_t    Owner{ 0 };
+};
+
 /** Projects every centerline point into \a view and marks each pixel that a projected segment passes through
  * (an exact cell traversal, 8-connected through exact corners). A pixel's depth and radius are interpolated at
  * the segment point nearest the pixel centre. Where segments of two vessels meet in a pixel, the smaller depth
@@ -44,6 +54,12 @@ RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view);
 /** As above, into \a pixels, reusing its memory (a view that rotates needs no new allocation). */
 void
 RasterizeCenterlines(const CenterlineTree & tree, const CPRViewGeometry & view, CPRCenterlinePixels & pixels);
+/** The same centerline pixels as a list in increasing Index, without the W x H arrays: what a device computes the
+ * depth map from (the OpenCL depth filter uploads this list, a few KB, per view). \a pixels is reused. */
+void
+RasterizeCenterlines(const CenterlineTree &            tree,
+                     const CPRViewGeometry &           view,
+                     std::vector<CPRCenterlinePixel> & pixels);
 
 } // namespace itk::detail
 

@@ -118,6 +118,42 @@ protected:
   /** Builds the interpolator and the pixel-to-volume-index mapping, and finds the default value. */
   void
   BeforeThreadedGenerateData() override;
+  /** BeforeThreadedGenerateData() without the interpolator: the outside value, the pixel-to-volume-index mapping
+   * and the slab offsets, read by the getters below (for a subclass that samples elsewhere, e.g. on a device). */
+  void
+  PrepareIndexMapping();
+  /** The continuous volume index of the view's centre pixel's surface point at depth 0, and its change per column,
+   * per row and per mm of depth; the slab's offsets (mm); the value of pixels with no sample inside the volume. */
+  const ContinuousIndex<double, 3> &
+  GetIndexAtCenter() const
+  {
+    return m_IndexAtCenter;
+  }
+  const Vector<double, 3> &
+  GetIndexStepPerColumn() const
+  {
+    return m_IndexStepPerColumn;
+  }
+  const Vector<double, 3> &
+  GetIndexStepPerRow() const
+  {
+    return m_IndexStepPerRow;
+  }
+  const Vector<double, 3> &
+  GetIndexStepPerMillimetreDepth() const
+  {
+    return m_IndexStepPerMillimetreDepth;
+  }
+  const std::vector<double> &
+  GetSlabOffsets() const
+  {
+    return m_SlabOffsets;
+  }
+  OutputPixelType
+  GetOutsideValue() const
+  {
+    return m_OutsideValue;
+  }
   void
   DynamicThreadedGenerateData(const OutputRegionType & region) override;
 

@@ -131,8 +131,15 @@ template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
 void
 CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::BeforeThreadedGenerateData()
 {
+  m_Sampler.Prepare(this->GetVolume(), m_Interpolation, m_IntensityRescale);
+  this->PrepareIndexMapping();
+}
+
+template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>
+void
+CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::PrepareIndexMapping()
+{
   const VolumeImageType * volume = this->GetVolume();
-  m_Sampler.Prepare(volume, m_Interpolation, m_IntensityRescale);
   m_OutsideValue = m_UseVolumeMinimumAsDefault
                      ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume, m_IntensityRescale))
                      : m_DefaultValue;

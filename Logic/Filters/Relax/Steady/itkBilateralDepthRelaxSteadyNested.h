@@ -10,9 +10,10 @@
 namespace itk::detail::BilateralDepthRelaxSteady
 {
 /** An image's map starts from a coarser grid's solution only when that grid has at least this many pixels
- * (128 x 256): smaller maps are solved from their input, as before nested iteration, which is cheap there and keeps
- * their results. */
-constexpr long NestedMinimumPixels = 1 << 15;
+ * (128 x 128; an image from about 181 x 362 at H = 2 W): smaller maps are solved from their input, as before nested
+ * iteration, which is cheap there and keeps their results. (Until issue 40 the limit was 128 x 256, and the module's
+ * 253 x 395 view of a full-size thoracic study took 26 outer iterations from its input: docs/steady-solver.md.) */
+constexpr long NestedMinimumPixels = 1 << 14;
 
 /** A coarser grid of a nested solve starts from a coarser grid of its own down to this many pixels (64 x 128): its
  * solution is only a start, and one from a coarser start costs less and is a lower minimum

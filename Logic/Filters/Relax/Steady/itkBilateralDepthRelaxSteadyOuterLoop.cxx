@@ -80,7 +80,7 @@ OuterLoop::Run(double                   tolerance,
     const bool wasNewton = m_Newton;
     m_Newton = !m_Field.Isotropic && (m_Newton || residual > NewtonAfterReduction * previous);
     previous = residual;
-    if (stopWhenSlowed && m_Newton && !wasNewton)
+    if (stopWhenSlowed && m_Newton && !wasNewton && residual > NestedBeforeReduction * m_First)
     {
       m_Report.Slowed = true;
       m_Report.Converged = false;

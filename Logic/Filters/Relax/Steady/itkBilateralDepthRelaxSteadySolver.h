@@ -44,16 +44,17 @@ namespace itk
  *
  * Those outer iterations settle the seams near the inflection a few at a time, so from the input they grew with the
  * image's height (the thoracic phantom: 34, 54, 124 at 256 x 512 to 1024 x 2048). So a solve starts from the input,
- * and where lagged weights slow down (the first outer iteration that turns to Newton steps) on a map of 256 x 512
- * pixels or more, it starts again from the solution on a grid of half the pixels per axis (the same view, fixed
- * where any of a 2 x 2 block is, with J times sqrt 2 and ten times the tolerance; solved the same way, recursively,
- * down to 64 x 128 and at most three grids deep), interpolated across without blurring its depth jumps: nested
- * iteration, after which the map's own grid takes 7 to 11 outer iterations (the one from the input included) on
- * the thoracic phantom at 256 x 512 to 2048 x 4096. Maps that lagged weights finish (the run-off phantom, the VMTK
- * aorta) and smaller maps are solved as before, with the same bits. The energy is not convex, so a different start
- * may end in a different fixed point: measured, always one of lower energy than the start from the input. A solve
- * stops after Settings::MaximumOuterIterations on the map's own grid with Report::Converged false and its last
- * iterate (Describe() says how far it got). docs/steady-solver.md gives the reasons and the measurements.
+ * and where lagged weights slow down (the first outer iteration that turns to Newton steps) before they have brought
+ * the residual below a tenth of the first, on a map whose coarser grid has 128 x 128 pixels or more, it starts again
+ * from the solution on a grid of half the pixels per axis (the same view, fixed where any of a 2 x 2 block is, with J
+ * times sqrt 2 and ten times the tolerance; solved the same way, recursively, down to 64 x 128 and at most three grids
+ * deep), interpolated across without blurring its depth jumps: nested iteration, after which the map's own grid takes 7
+ * to 11 outer iterations (the one from the input included) on the thoracic phantom at 256 x 512 to 2048 x 4096. Maps
+ * that lagged weights finish (the run-off phantom, the VMTK aorta) and smaller maps are solved as before, with the same
+ * bits. The energy is not convex, so a different start may end in a different fixed point: measured, always one of
+ * lower energy than the start from the input. A solve stops after Settings::MaximumOuterIterations on the map's own
+ * grid with Report::Converged false and its last iterate (Describe() says how far it got). docs/steady-solver.md gives
+ * the reasons and the measurements.
  *
  * The multigrid is a black-box multigrid (Dendy, "Black box multigrid", J. Comput. Phys. 48, 1982): coarse points
  * on every other row and column, interpolation that follows the weights (a pixel beside a depth jump interpolates
