@@ -2,7 +2,7 @@
 #include "vrVolumeIO.h"
 
 #include "vrAtomicOutput.h"
-#include "vrDicomSeriesProcess.h"
+#include "vrDICOMSeriesProcess.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
@@ -44,10 +44,10 @@ RequireFiniteVoxels(const VolumeImageType & volume, const std::string & where)
 }
 
 VolumeImageType::Pointer
-ReadDicomSeries(const std::string & folder)
+ReadDICOMSeries(const std::string & folder)
 {
   const std::string        where = "volume folder " + folder;
-  VolumeImageType::Pointer volume = detail::ReadDicomSeriesInChildProcess(folder, where);
+  VolumeImageType::Pointer volume = detail::ReadDICOMSeriesInChildProcess(folder, where);
   const auto               size = volume->GetLargestPossibleRegion().GetSize();
   if (size[2] < 2)
   {
@@ -216,7 +216,7 @@ ReadVolume(const std::string & path)
 {
   if (!IsURIName(path) && detail::CheckInputPath(path, "volume", true) == detail::InputKind::Folder)
   {
-    return ReadDicomSeries(path);
+    return ReadDICOMSeries(path);
   }
   return ReadVolumeFile(path);
 }

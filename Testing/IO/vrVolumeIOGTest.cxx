@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Volume reader and writer (issue 3): ITK formats keep geometry and values, a DICOM folder is read as the series
 // with the most files, and bad volumes are input errors that name the file.
-#include "vrDicomSeriesProcess.h"
+#include "vrDICOMSeriesProcess.h"
 #include "vrInputError.h"
 #include "vrTestFiles.h"
 #include "vrVolumeIO.h"
@@ -145,19 +145,19 @@ INSTANTIATE_TEST_SUITE_P(NRRDNIfTIMetaImage,
                            return name;
                          });
 
-using DicomVolumeType = itk::Image<short, 3>;
+using DICOMVolumeType = itk::Image<short, 3>;
 
 /** Writes \a volume as a DICOM series of one file per slice, the way ITK's DICOM series examples do: each slice
  * gets its position, orientation and the shared series UID in its own dictionary. */
 void
-WriteDicomSeries(const DicomVolumeType * volume,
+WriteDICOMSeries(const DICOMVolumeType * volume,
                  const std::string &     folder,
                  const std::string &     prefix,
                  const std::string &     seriesUID)
 {
   using SliceType = itk::Image<short, 2>;
   auto io = itk::GDCMImageIO::New();
-  auto writer = itk::ImageSeriesWriter<DicomVolumeType, SliceType>::New();
+  auto writer = itk::ImageSeriesWriter<DICOMVolumeType, SliceType>::New();
   std::vector<std::unique_ptr<itk::MetaDataDictionary>> owned;
   std::vector<itk::MetaDataDictionary *>                dictionaries;
   std::vector<std::string>                              names;
@@ -193,15 +193,15 @@ WriteDicomSeries(const DicomVolumeType * volume,
   writer->Update();
 }
 
-DicomVolumeType::Pointer
-MakeDicomVolume(unsigned int slices)
+DICOMVolumeType::Pointer
+MakeDICOMVolume(unsigned int slices)
 {
-  auto                        volume = DicomVolumeType::New();
-  DicomVolumeType::RegionType region;
+  auto                        volume = DICOMVolumeType::New();
+  DICOMVolumeType::RegionType region;
   region.SetSize({ { 6, 5, slices } });
   volume->SetRegions(region);
   volume->SetSpacing(itk::detail::MakeVector3(0.75, 0.75, 2.5));
-  DicomVolumeType::PointType origin;
+  DICOMVolumeType::PointType origin;
   origin[0] = -100.0;
   origin[1] = 50.0;
   origin[2] = 12.5;
@@ -223,10 +223,10 @@ MakeDicomVolume(unsigned int slices)
 TEST(VolumeIO, ReadsTheDICOMSeriesWithTheMostFilesFromAFolder)
 {
   vr::test::ScopedTemporaryFolder folder;
-  const auto                      volume = MakeDicomVolume(5);
-  WriteDicomSeries(volume, folder.Path().string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+  const auto                      volume = MakeDICOMVolume(5);
+  WriteDICOMSeries(volume, folder.Path().string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
   // A two-slice series (a scout) in the same folder must not be chosen.
-  WriteDicomSeries(MakeDicomVolume(2), folder.Path().string(), "scout", "1.2.826.0.1.3680043.2.1125.1.2.2");
+  WriteDICOMSeries(MakeDICOMVolume(2), folder.Path().string(), "scout", "1.2.826.0.1.3680043.2.1125.1.2.2");
 
   const VolumeImageType::Pointer read = vr::ReadVolume(folder.Path().string());
   ASSERT_EQ(read->GetLargestPossibleRegion().GetSize(), volume->GetLargestPossibleRegion().GetSize());
@@ -296,7 +296,7 @@ TEST(BadVolumeInput, CorruptDICOMFilesEndTheReaderProcessNotThisOne)
   // Files that make Debian's GDCM assert (abort) (issue 25), and one with 50448 bits allocated that ITK cannot read:
   // the series is read in a child process, so this test's process survives each, and the message names the file.
   vr::test::ScopedTemporaryFolder folder;
-  const auto                      volume = MakeDicomVolume(4);
+  const auto                      volume = MakeDICOMVolume(4);
   for (const char * finding : { "dicom-meta-explicit-assert/IM0018.dcm",
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
@@ -314,7 +314,7 @@ TEST(BadVolumeInput, CorruptDICOMFilesEndTheReaderProcessNotThisOne)
     {
       const std::filesystem::path mixed = folder.Path() / file.parent_path().filename();
       std::filesystem::create_directories(mixed);
-      WriteDicomSeries(volume, mixed.string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+      WriteDICOMSeries(volume, mixed.string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
       std::filesystem::copy_file(file, mixed / file.filename());
       message = InputErrorOf([&] { vr::ReadVolume(mixed.string()); });
       EXPECT_MESSAGE_HAS(message, (mixed / file.filename()).string());
@@ -332,12 +332,12 @@ TEST(BadVolumeInput, CorruptDICOMFilesEndTheReaderProcessNotThisOne)
 TEST(BadVolumeInput, AMissingDICOMReaderProcessIsSaidSo)
 {
   vr::test::ScopedTemporaryFolder folder;
-  WriteDicomSeries(MakeDicomVolume(3), folder.Path().string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+  WriteDICOMSeries(MakeDICOMVolume(3), folder.Path().string(), "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
   ::setenv("VR_DICOM_SERIES_READER", folder.File("no-such-reader").c_str(), 1);
   const std::string message = InputErrorOf([&] { vr::ReadVolume(folder.Path().string()); });
   ::unsetenv("VR_DICOM_SERIES_READER");
   EXPECT_MESSAGE_HAS(message, folder.Path().string());
-  EXPECT_MESSAGE_HAS(message, "vrReadDicomSeries was not found");
+  EXPECT_MESSAGE_HAS(message, "vrReadDICOMSeries was not found");
   EXPECT_EQ(vr::ReadVolume(folder.Path().string())->GetLargestPossibleRegion().GetSize()[2], 3u);
 }
 
@@ -345,15 +345,15 @@ TEST(BadVolumeInput, AHangingDICOMReaderProcessIsStoppedAtTheBound)
 {
   // The bound by hand: 60 s plus a quarter second per file.
   ::unsetenv("VR_DICOM_SERIES_TIMEOUT");
-  EXPECT_DOUBLE_EQ(vr::detail::DicomSeriesTimeoutSeconds(0), 60.0);
-  EXPECT_DOUBLE_EQ(vr::detail::DicomSeriesTimeoutSeconds(500), 185.0);
+  EXPECT_DOUBLE_EQ(vr::detail::DICOMSeriesTimeoutSeconds(0), 60.0);
+  EXPECT_DOUBLE_EQ(vr::detail::DICOMSeriesTimeoutSeconds(500), 185.0);
 
   // A stand-in reader that says which file it opens and then hangs (as GDCM in a loop would): with a bound of 1 s,
   // the read fails after about a second, naming the folder and that file, instead of waiting for ever.
   vr::test::ScopedTemporaryFolder folder;
   const std::string               series = folder.File("series");
   std::filesystem::create_directories(series);
-  WriteDicomSeries(MakeDicomVolume(3), series, "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
+  WriteDICOMSeries(MakeDICOMVolume(3), series, "ct", "1.2.826.0.1.3680043.2.1125.1.2.1");
   const std::string reader = folder.File("hanging-reader.sh");
   vr::test::WriteTextFile(reader, "#!/bin/sh\necho \"file $1/IM-stuck.dcm\" >> \"$3\"\nexec sleep 600\n");
   std::filesystem::permissions(reader, std::filesystem::perms::owner_all);

@@ -244,7 +244,7 @@ TEST_F(BadInputTest, FuzzFindingsInNIfTIHeaders)
 /** Writes a 6 x 5 x \a slices series of short slices with ITK's GDCM IO into \a folder, as ITK's DICOM examples do,
  * slice z at (0, 0, 2z) mm, or at \a position(z) where that is not empty. */
 void
-WriteDicomSeries(const fs::path &                                   folder,
+WriteDICOMSeries(const fs::path &                                   folder,
                  unsigned int                                       slices = 4,
                  const std::function<std::string(unsigned int z)> & position = {})
 {
@@ -285,7 +285,7 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
   // Files of a DICOM series that made Debian's GDCM assert, i.e. abort the process (issue 25). Alone, dropped into a
   // good series, or named like a volume file: refused, naming the file, with no GDCM or ITK line on the terminal.
   const fs::path good = m_Folder / "series";
-  WriteDicomSeries(good);
+  WriteDICOMSeries(good);
   for (const char * finding : { "dicom-meta-explicit-assert/IM0018.dcm",
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
@@ -293,7 +293,7 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
                                 "dicom-bits-allocated-unhandled/IM0030.dcm",
                                 "dicom-acr-nema-assert/IM0027.dcm",
                                 // The mutation campaign's: a position GDCM reads leniently as another number, which
-                                // displaced the volume with no file named (vrDicomSliceGeometry.h).
+                                // displaced the volume with no file named (vrDICOMSliceGeometry.h).
                                 "dicom-position-byte-9f/IM0019.dcm",
                                 "dicom-position-byte-ff/IM0003.dcm",
                                 "dicom-position-dot-became-backslash/IM0024.dcm",
@@ -367,7 +367,7 @@ TEST_F(BadInputTest, DICOMFileOnWhichGDCMsSeriesSortAsserts)
   EXPECT_EQ(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
 
   const fs::path mixed = m_Folder / "series-with-sort-assert";
-  WriteDicomSeries(mixed);
+  WriteDICOMSeries(mixed);
   fs::copy_file(file, mixed / "IM0001.dcm");
   ExpectRejected({ mixed.string(), Centerlines() }, { "the DICOM file " + (mixed / "IM0001.dcm").string() });
 }
@@ -380,7 +380,7 @@ TEST_F(BadInputTest, DICOMSeriesWithAFileOffItsLineOfSlices)
   for (const unsigned int off : { 3u, 0u })
   {
     const fs::path folder = m_Folder / ("off-line-" + std::to_string(off));
-    WriteDicomSeries(
+    WriteDICOMSeries(
       folder, 8, [off](unsigned int z) { return (z == off ? "5\\0\\" : "0\\0\\") + std::to_string(2 * z); });
     const std::string file = (folder / ("slice" + std::to_string(off + 1) + ".dcm")).string();
     const RunResult   run = ExpectRejected(
@@ -390,7 +390,7 @@ TEST_F(BadInputTest, DICOMSeriesWithAFileOffItsLineOfSlices)
   }
   // The same series in line is read (and then fails for want of overlap with the aorta's centerlines, not for DICOM).
   const fs::path good = m_Folder / "in-line";
-  WriteDicomSeries(good, 8);
+  WriteDICOMSeries(good, 8);
   const RunResult run =
     RunProgram({ ReformationExecutable, good.string(), Centerlines(), (m_Folder / "ok.nrrd").string() });
   EXPECT_FALSE(Contains(run.Err, "DICOM")) << run.Err;

@@ -1,19 +1,19 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// vrReadDicomSeries <folder> <output.mha> <progress file>: reads the DICOM series with the most files in <folder>
+// vrReadDICOMSeries <folder> <output.mha> <progress file>: reads the DICOM series with the most files in <folder>
 // (ITK's GDCMSeriesFileNames and ImageSeriesReader, as float) and writes it to <output.mha>. It runs as a child
-// process of the volume reader (vrDicomSeriesProcess.cxx) because Debian's GDCM asserts, i.e. aborts the process, on
+// process of the volume reader (vrDICOMSeriesProcess.cxx) because Debian's GDCM asserts, i.e. aborts the process, on
 // some corrupt files: here an abort ends this process only. Before GDCM opens a file, "file <path>" is appended to
 // the progress file, so the parent can name the file that a crash or a failure happened in. Its last line is "done"
 // on success, or "error <scan|none|read N|message|write>" followed by ITK's description (or the message) on the
 // lines after it. Each file is also sorted into series alone before the folder is, since GDCM asserts in the sort too,
 // and the series' geometry attributes are checked file by file before the volume is handed over
-// (vrDicomSliceGeometry.h).
+// (vrDICOMSliceGeometry.h).
 // Exit status: 0 done, 1 error, 2 wrong arguments.
 #include "itkGDCMImageIO.h"
 #include "itkGDCMSeriesFileNames.h"
 #include "itkImageFileWriter.h"
 #include "vrDICOMIdentity.h"
-#include "vrDicomSliceGeometry.h"
+#include "vrDICOMSliceGeometry.h"
 #include "itkImageSeriesReader.h"
 #include "itkMetaImageIO.h"
 #include "itkObject.h"
@@ -183,7 +183,7 @@ main(int argc, char * argv[])
         const gdcm::ByteValue * bytes = elements.GetDataElement(tag).GetByteValue();
         return Unpadded(bytes ? std::string(bytes->GetPointer(), bytes->GetLength()) : std::string());
       };
-      const std::string message = vr::detail::CheckDicomSliceAttributes(
+      const std::string message = vr::detail::CheckDICOMSliceAttributes(
         { file, text(0x0020, 0x0032), text(0x0020, 0x0037), text(0x0028, 0x0030) });
       if (!message.empty())
       {
@@ -242,7 +242,7 @@ main(int argc, char * argv[])
   const auto * headers = reader->GetMetaDataDictionaryArray();
   if (headers != nullptr && headers->size() == files.size())
   {
-    std::vector<vr::detail::DicomSliceAttributes> slices;
+    std::vector<vr::detail::DICOMSliceAttributes> slices;
     for (std::size_t k = 0; k < files.size(); ++k)
     {
       auto text = [&](const char * key) -> std::optional<std::string>
@@ -256,7 +256,7 @@ main(int argc, char * argv[])
       };
       slices.push_back({ files[k], text("0020|0032"), text("0020|0037"), text("0028|0030") });
     }
-    if (const std::string message = vr::detail::CheckDicomSliceGeometry(slices); !message.empty())
+    if (const std::string message = vr::detail::CheckDICOMSliceGeometry(slices); !message.empty())
     {
       return Fail("message",
                   message + "; the series (" + std::to_string(files.size()) + (files.size() == 1 ? " file" : " files") +

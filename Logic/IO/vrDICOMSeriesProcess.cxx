@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-#include "vrDicomSeriesProcess.h"
+#include "vrDICOMSeriesProcess.h"
 
 #include "itkMetaDataObject.h"
 
@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-constexpr const char * HelperName = "vrReadDicomSeries";
+constexpr const char * HelperName = "vrReadDICOMSeries";
 
 bool
 IsExecutable(const fs::path & path)
@@ -225,7 +225,7 @@ CountFiles(const std::string & folder)
 } // namespace
 
 double
-DicomSeriesTimeoutSeconds(std::size_t fileCount)
+DICOMSeriesTimeoutSeconds(std::size_t fileCount)
 {
   if (const char * configured = std::getenv("VR_DICOM_SERIES_TIMEOUT"))
   {
@@ -242,7 +242,7 @@ DicomSeriesTimeoutSeconds(std::size_t fileCount)
 }
 
 std::string
-DicomSeriesReaderPath()
+DICOMSeriesReaderPath()
 {
   if (const char * configured = std::getenv("VR_DICOM_SERIES_READER"))
   {
@@ -250,7 +250,7 @@ DicomSeriesReaderPath()
   }
   std::vector<fs::path> bases;
   Dl_info               info{};
-  if (::dladdr(reinterpret_cast<void *>(&DicomSeriesReaderPath), &info) != 0 && info.dli_fname != nullptr)
+  if (::dladdr(reinterpret_cast<void *>(&DICOMSeriesReaderPath), &info) != 0 && info.dli_fname != nullptr)
   {
     std::error_code error;
     bases.push_back(fs::canonical(info.dli_fname, error).parent_path());
@@ -284,9 +284,9 @@ DicomSeriesReaderPath()
 }
 
 VolumeImageType::Pointer
-ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & where)
+ReadDICOMSeriesInChildProcess(const std::string & folder, const std::string & where)
 {
-  const std::string helper = DicomSeriesReaderPath();
+  const std::string helper = DICOMSeriesReaderPath();
   if (helper.empty())
   {
     throw InputError(where + ": cannot read DICOM: the reader process " + std::string(HelperName) +
@@ -304,7 +304,7 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
   double            timeout = 0.0;
   try
   {
-    timeout = DicomSeriesTimeoutSeconds(fileCount);
+    timeout = DICOMSeriesTimeoutSeconds(fileCount);
   }
   catch (const InputError & error)
   {

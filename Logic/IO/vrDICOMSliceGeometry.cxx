@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-#include "vrDicomSliceGeometry.h"
+#include "vrDICOMSliceGeometry.h"
 
 #include <algorithm>
 #include <cctype>
@@ -129,16 +129,16 @@ struct Attribute
 {
   const char *               Name;
   std::size_t                Count;
-  std::optional<std::string> DicomSliceAttributes::*Member;
+  std::optional<std::string> DICOMSliceAttributes::*Member;
 };
 
-constexpr Attribute Position{ "Image Position (Patient) (0020,0032)", 3, &DicomSliceAttributes::Position };
-constexpr Attribute Orientation{ "Image Orientation (Patient) (0020,0037)", 6, &DicomSliceAttributes::Orientation };
-constexpr Attribute PixelSpacing{ "Pixel Spacing (0028,0030)", 2, &DicomSliceAttributes::PixelSpacing };
+constexpr Attribute Position{ "Image Position (Patient) (0020,0032)", 3, &DICOMSliceAttributes::Position };
+constexpr Attribute Orientation{ "Image Orientation (Patient) (0020,0037)", 6, &DICOMSliceAttributes::Orientation };
+constexpr Attribute PixelSpacing{ "Pixel Spacing (0028,0030)", 2, &DICOMSliceAttributes::PixelSpacing };
 
 /** \a slice's values of \a attribute (none when it lacks it), or a message naming the file. */
 std::string
-ValueOf(const DicomSliceAttributes & slice, const Attribute & attribute, std::optional<std::vector<double>> & values)
+ValueOf(const DICOMSliceAttributes & slice, const Attribute & attribute, std::optional<std::vector<double>> & values)
 {
   values.reset();
   const auto & text = slice.*attribute.Member;
@@ -157,7 +157,7 @@ ValueOf(const DicomSliceAttributes & slice, const Attribute & attribute, std::op
 
 /** Each file's values of \a attribute, or a message; no rows when no file has it. */
 std::string
-ValuesOf(const std::vector<DicomSliceAttributes> & slices,
+ValuesOf(const std::vector<DICOMSliceAttributes> & slices,
          const Attribute &                         attribute,
          std::vector<std::vector<double>> &        values)
 {
@@ -187,7 +187,7 @@ ValuesOf(const std::vector<DicomSliceAttributes> & slices,
 /** The file whose values of \a attribute differ from the series' (the medians) by more than \a tolerance (times the
  * median's size with \a relative), or a message naming it. */
 std::string
-AllAlike(const std::vector<DicomSliceAttributes> & slices,
+AllAlike(const std::vector<DICOMSliceAttributes> & slices,
          const Attribute &                         attribute,
          const std::vector<std::vector<double>> &  values,
          double                                    tolerance,
@@ -242,7 +242,7 @@ ParseDecimalStrings(const std::string & text, std::size_t count)
 }
 
 std::string
-CheckDicomSliceAttributes(const DicomSliceAttributes & slice)
+CheckDICOMSliceAttributes(const DICOMSliceAttributes & slice)
 {
   std::optional<std::vector<double>> values;
   for (const Attribute * attribute : { &Position, &Orientation, &PixelSpacing })
@@ -256,7 +256,7 @@ CheckDicomSliceAttributes(const DicomSliceAttributes & slice)
 }
 
 std::string
-CheckDicomSliceGeometry(const std::vector<DicomSliceAttributes> & slices)
+CheckDICOMSliceGeometry(const std::vector<DICOMSliceAttributes> & slices)
 {
   if (slices.empty())
   {

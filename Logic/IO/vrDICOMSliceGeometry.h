@@ -3,9 +3,9 @@
 // origin, direction and pixel spacing from the series' first file and its slice spacing from the positions, and GDCM
 // parses a decimal string leniently ("-1.6.445" reads as -1.6): one corrupt file could displace the whole volume
 // without a word, and the error a user then met ("the centerlines lie outside the volume") named no file. Internal
-// (namespace vr::detail): used by the DICOM reader process (vrReadDicomSeriesMain.cxx).
-#ifndef vrDicomSliceGeometry_h
-#define vrDicomSliceGeometry_h
+// (namespace vr::detail): used by the DICOM reader process (vrReadDICOMSeriesMain.cxx).
+#ifndef vrDICOMSliceGeometry_h
+#define vrDICOMSliceGeometry_h
 
 #include <optional>
 #include <string>
@@ -14,7 +14,7 @@
 namespace vr::detail
 {
 /** One file of a series, in the series' order, with its attributes as the text the file holds (none where absent). */
-struct DicomSliceAttributes
+struct DICOMSliceAttributes
 {
   std::string                File;
   std::optional<std::string> Position;     ///< Image Position (Patient) (0020,0032): 3 decimal strings
@@ -32,7 +32,7 @@ ParseDecimalStrings(const std::string & text, std::size_t count);
  * file. The reader process checks each file alone before GDCM sorts the folder: GDCM orders a series by position,
  * and where a position does not read it falls back to instance numbers with a comparison that can crash its sort. */
 std::string
-CheckDicomSliceAttributes(const DicomSliceAttributes & slice);
+CheckDICOMSliceAttributes(const DICOMSliceAttributes & slice);
 
 /** Empty when the series' geometry is sound; else what is wrong, naming the file at fault:
  * - every attribute one file has, every file has (ITK takes the origin and directions from the first file alone),
@@ -44,7 +44,7 @@ CheckDicomSliceAttributes(const DicomSliceAttributes & slice);
  *   coordinate) by more than a quarter of that step and 0.01 mm. A missing slice leaves a double step between two
  *   files that each keep one regular step, and passes. */
 std::string
-CheckDicomSliceGeometry(const std::vector<DicomSliceAttributes> & slices);
+CheckDICOMSliceGeometry(const std::vector<DICOMSliceAttributes> & slices);
 } // namespace vr::detail
 
 #endif
