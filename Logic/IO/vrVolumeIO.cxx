@@ -44,17 +44,17 @@ RequireFiniteVoxels(const VolumeImageType & volume, const std::string & where)
 }
 
 VolumeImageType::Pointer
-ReadDICOMSeries(const std::string & folder)
+ReadDICOMSeries(const std::string & folder, const VolumeReadOptions & options, VolumeReadReport * report)
 {
-  const std::string        where = "volume folder " + folder;
-  VolumeImageType::Pointer volume = detail::ReadDICOMSeriesInChildProcess(folder, where);
-  const auto               size = volume->GetLargestPossibleRegion().GetSize();
-  if (size[2] < 2)
+  const std::string       where = "volume folder " + folder;
+  detail::DICOMSeriesRead read = detail::ReadDICOMSeriesInChildProcess(folder, options.DICOMSeries, where);
+  RequireFiniteVoxels(*read.Volume, where);
+  if (report != nullptr)
   {
-    throw InputError(where + ": the DICOM series is a single 2D slice; a volume must be 3D");
+    report->Warnings.insert(report->Warnings.end(), read.Warnings.begin(), read.Warnings.end());
+    report->Notes.insert(report->Notes.end(), read.Notes.begin(), read.Notes.end());
   }
-  RequireFiniteVoxels(*volume, where);
-  return volume;
+  return read.Volume;
 }
 
 /** "64 x 64 x 32 x 5" */
@@ -212,11 +212,11 @@ ReadVolumeFile(const std::string & path)
 } // namespace
 
 VolumeImageType::Pointer
-ReadVolume(const std::string & path)
+ReadVolume(const std::string & path, const VolumeReadOptions & options, VolumeReadReport * report)
 {
   if (!IsURIName(path) && detail::CheckInputPath(path, "volume", true) == detail::InputKind::Folder)
   {
-    return ReadDICOMSeries(path);
+    return ReadDICOMSeries(path, options, report);
   }
   return ReadVolumeFile(path);
 }

@@ -5,12 +5,23 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <numeric>
 #include <sstream>
 
 namespace vr::detail
 {
 namespace
 {
+using Vector = std::array<double, 3>;
+
+/** Two slices closer than this along the normal lie at one position, mm. */
+constexpr double SamePosition = 0.01;
+/** The absolute floor of the tolerances, mm, and their share of a spacing (docs/dicom-series.md). */
+constexpr double ToleranceFloor = 0.01;
+constexpr double ToleranceShare = 0.05;
+/** The most slices a gap may miss and still be interpolated. */
+constexpr long MaximumMissingSlices = 3;
+
 /** One value of a Decimal String: [+-]? (digits [. digits?] | . digits) ([eE] [+-]? digits)?, padded by spaces. Longer
  * than DICOM's 16 characters is accepted: writers exceed it, and ITK reads such values right. */
 std::optional<double>
@@ -71,146 +82,48 @@ ParseDecimalString(const std::string & text)
   return std::isfinite(number) ? std::optional<double>(number) : std::nullopt;
 }
 
-/** \a text as a user can read it in a message: printable ASCII, at most 64 characters. */
-std::string
-Shown(const std::string & text)
+double
+Dot(const Vector & a, const Vector & b)
 {
-  std::string shown;
-  for (const char c : text.substr(0, 64))
-  {
-    shown += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
-  }
-  return "\"" + shown + (text.size() > 64 ? "...\"" : "\"");
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-std::string
-Listed(const std::vector<double> & values)
+Vector
+Plus(const Vector & a, const Vector & b, double scale = 1.0)
 {
-  std::ostringstream text;
-  text << "(";
-  for (std::size_t k = 0; k < values.size(); ++k)
-  {
-    text << (k ? ", " : "") << values[k];
-  }
-  text << ")";
-  return text.str();
-}
-
-/** The median of each coordinate over \a rows (the lower middle for an even count). */
-std::vector<double>
-Medians(const std::vector<std::vector<double>> & rows)
-{
-  std::vector<double> medians(rows.front().size());
-  for (std::size_t c = 0; c < medians.size(); ++c)
-  {
-    std::vector<double> column;
-    for (const auto & row : rows)
-    {
-      column.push_back(row[c]);
-    }
-    std::nth_element(column.begin(), column.begin() + (column.size() - 1) / 2, column.end());
-    medians[c] = column[(column.size() - 1) / 2];
-  }
-  return medians;
+  return { a[0] + scale * b[0], a[1] + scale * b[1], a[2] + scale * b[2] };
 }
 
 double
-Distance(const std::vector<double> & a, const std::vector<double> & b)
+Length(const Vector & a)
 {
-  double sum = 0.0;
-  for (std::size_t c = 0; c < a.size(); ++c)
-  {
-    sum += (a[c] - b[c]) * (a[c] - b[c]);
-  }
-  return std::sqrt(sum);
+  return std::sqrt(Dot(a, a));
 }
 
-struct Attribute
+/** The median of \a values (the lower middle for an even count); \a values is reordered. */
+double
+Median(std::vector<double> values)
 {
-  const char *               Name;
-  std::size_t                Count;
-  std::optional<std::string> DICOMSliceAttributes::*Member;
-};
-
-constexpr Attribute Position{ "Image Position (Patient) (0020,0032)", 3, &DICOMSliceAttributes::Position };
-constexpr Attribute Orientation{ "Image Orientation (Patient) (0020,0037)", 6, &DICOMSliceAttributes::Orientation };
-constexpr Attribute PixelSpacing{ "Pixel Spacing (0028,0030)", 2, &DICOMSliceAttributes::PixelSpacing };
-
-/** \a slice's values of \a attribute (none when it lacks it), or a message naming the file. */
-std::string
-ValueOf(const DICOMSliceAttributes & slice, const Attribute & attribute, std::optional<std::vector<double>> & values)
-{
-  values.reset();
-  const auto & text = slice.*attribute.Member;
-  if (!text)
-  {
-    return std::string();
-  }
-  values = ParseDecimalStrings(*text, attribute.Count);
-  if (!values)
-  {
-    return "the DICOM file " + slice.File + ": its " + attribute.Name + " is " + Shown(*text) + ", not " +
-           std::to_string(attribute.Count) + " decimal numbers";
-  }
-  return std::string();
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>((values.size() - 1) / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
 }
 
-/** Each file's values of \a attribute, or a message; no rows when no file has it. */
+/** "(x, y, z)" with six significant digits. */
 std::string
-ValuesOf(const std::vector<DICOMSliceAttributes> & slices,
-         const Attribute &                         attribute,
-         std::vector<std::vector<double>> &        values)
+Shown(const Vector & point)
 {
-  values.clear();
-  const auto having =
-    std::find_if(slices.begin(), slices.end(), [&](const auto & slice) { return bool(slice.*attribute.Member); });
-  if (having == slices.end())
-  {
-    return std::string();
-  }
-  for (const auto & slice : slices)
-  {
-    if (!(slice.*attribute.Member))
-    {
-      return "the DICOM file " + slice.File + " lacks the " + attribute.Name + " that the series' other files have";
-    }
-    std::optional<std::vector<double>> parsed;
-    if (std::string message = ValueOf(slice, attribute, parsed); !message.empty())
-    {
-      return message;
-    }
-    values.push_back(*parsed);
-  }
-  return std::string();
+  std::ostringstream text;
+  text << "(" << point[0] << ", " << point[1] << ", " << point[2] << ")";
+  return text.str();
 }
 
-/** The file whose values of \a attribute differ from the series' (the medians) by more than \a tolerance (times the
- * median's size with \a relative), or a message naming it. */
 std::string
-AllAlike(const std::vector<DICOMSliceAttributes> & slices,
-         const Attribute &                         attribute,
-         const std::vector<std::vector<double>> &  values,
-         double                                    tolerance,
-         bool                                      relative)
+Shown(double value)
 {
-  if (values.empty())
-  {
-    return std::string();
-  }
-  const std::vector<double> series = Medians(values);
-  const double bound = relative ? tolerance * Distance(series, std::vector<double>(series.size())) : tolerance;
-  for (std::size_t k = 0; k < values.size(); ++k)
-  {
-    for (std::size_t c = 0; c < series.size(); ++c)
-    {
-      if (std::abs(values[k][c] - series[c]) > bound)
-      {
-        return "the DICOM file " + slices[k].File + ": its " + attribute.Name + " " + Listed(values[k]) +
-               " differs from the series' " + Listed(series);
-      }
-    }
-  }
-  return std::string();
+  std::ostringstream text;
+  text << value;
+  return text.str();
 }
 } // namespace
 
@@ -242,77 +155,233 @@ ParseDecimalStrings(const std::string & text, std::size_t count)
 }
 
 std::string
-CheckDICOMSliceAttributes(const DICOMSliceAttributes & slice)
+PlanDICOMSliceGrid(const std::vector<DICOMSlicePosition> &               files,
+                   const std::array<double, 6> &                         orientation,
+                   double                                                smallestPixelSpacing,
+                   const std::function<bool(std::size_t, std::size_t)> & samePixels,
+                   const std::optional<std::string> &                    gantryTilt,
+                   DICOMSliceGrid &                                      grid)
 {
-  std::optional<std::vector<double>> values;
-  for (const Attribute * attribute : { &Position, &Orientation, &PixelSpacing })
+  grid = DICOMSliceGrid();
+  if (files.empty())
   {
-    if (std::string message = ValueOf(slice, *attribute, values); !message.empty())
-    {
-      return message;
-    }
+    return std::string();
   }
-  return std::string();
-}
+  const Vector row{ orientation[0], orientation[1], orientation[2] };
+  const Vector column{ orientation[3], orientation[4], orientation[5] };
+  Vector       normal{ row[1] * column[2] - row[2] * column[1],
+                 row[2] * column[0] - row[0] * column[2],
+                 row[0] * column[1] - row[1] * column[0] };
+  const double normalLength = Length(normal);
+  for (double & component : normal)
+  {
+    component /= normalLength;
+  }
+  grid.Normal = normal;
 
-std::string
-CheckDICOMSliceGeometry(const std::vector<DICOMSliceAttributes> & slices)
-{
-  if (slices.empty())
+  // Along the normal, in order; files at one position are one slice when they hold the same pixels.
+  std::vector<std::size_t> order(files.size());
+  std::iota(order.begin(), order.end(), std::size_t{ 0 });
+  auto along = [&](std::size_t k) { return Dot(files[k].Position, normal); };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return along(a) < along(b); });
+  const double             planeTolerance = std::max(ToleranceFloor, ToleranceShare * smallestPixelSpacing);
+  std::vector<std::size_t> kept;
+  for (const std::size_t k : order)
   {
-    return std::string();
-  }
-  std::vector<std::vector<double>> positions, orientations, spacings;
-  for (std::string message : { ValuesOf(slices, Position, positions),
-                               ValuesOf(slices, Orientation, orientations),
-                               ValuesOf(slices, PixelSpacing, spacings) })
-  {
-    if (!message.empty())
+    if (!kept.empty() && along(k) - along(kept.back()) <= SamePosition)
     {
-      return message;
+      const std::size_t first = kept.back();
+      const double      apart = Length(Plus(files[k].Position, files[first].Position, -1.0));
+      if (apart <= planeTolerance && samePixels(first, k))
+      {
+        grid.Duplicates.push_back(k);
+        grid.Warnings.push_back("the DICOM file " + files[k].File + " lies at the same position as " +
+                                files[first].File + " and holds the same pixels: a duplicate, left out");
+        continue;
+      }
+      return "the DICOM files " + files[first].File + " and " + files[k].File + " both lie in the slice plane at " +
+             Shown(along(k)) + " mm along the slice normal (at " + Shown(files[first].Position) + " and " +
+             Shown(files[k].Position) + " mm) but hold different images: one of them does not belong to the " +
+             "series; remove it";
+    }
+    kept.push_back(k);
+  }
+  std::sort(grid.Duplicates.begin(), grid.Duplicates.end());
+
+  // In the slice plane: every file at the series' place (its median), or the series stepping aside steadily (a
+  // gantry tilt), or one file off the line.
+  std::vector<Vector> offsets;
+  for (const std::size_t k : kept)
+  {
+    offsets.push_back(Plus(files[k].Position, normal, -along(k)));
+  }
+  Vector median{};
+  for (std::size_t c = 0; c < 3; ++c)
+  {
+    std::vector<double> values;
+    for (const Vector & offset : offsets)
+    {
+      values.push_back(offset[c]);
+    }
+    median[c] = Median(values);
+  }
+  std::size_t worst = 0;
+  double      worstDistance = 0.0;
+  for (std::size_t j = 0; j < offsets.size(); ++j)
+  {
+    const double distance = Length(Plus(offsets[j], median, -1.0));
+    if (distance > worstDistance)
+    {
+      worst = j;
+      worstDistance = distance;
     }
   }
-  if (std::string message = AllAlike(slices, Orientation, orientations, 1e-4, false); !message.empty())
+  if (worstDistance > planeTolerance)
   {
-    return message;
+    if (kept.size() >= 3)
+    {
+      // A straight line of positions that is not the normal: offsets grow linearly with the distance along it.
+      double meanAlong = 0.0;
+      Vector meanOffset{};
+      for (std::size_t j = 0; j < kept.size(); ++j)
+      {
+        meanAlong += along(kept[j]) / static_cast<double>(kept.size());
+        meanOffset = Plus(meanOffset, offsets[j], 1.0 / static_cast<double>(kept.size()));
+      }
+      double sumSquares = 0.0;
+      Vector slope{};
+      for (std::size_t j = 0; j < kept.size(); ++j)
+      {
+        const double t = along(kept[j]) - meanAlong;
+        sumSquares += t * t;
+        slope = Plus(slope, Plus(offsets[j], meanOffset, -1.0), t);
+      }
+      for (double & component : slope)
+      {
+        component /= sumSquares;
+      }
+      double largestResidual = 0.0;
+      for (std::size_t j = 0; j < kept.size(); ++j)
+      {
+        const Vector fitted = Plus(meanOffset, slope, along(kept[j]) - meanAlong);
+        largestResidual = std::max(largestResidual, Length(Plus(offsets[j], fitted, -1.0)));
+      }
+      if (largestResidual <= planeTolerance)
+      {
+        const double       degrees = std::atan(Length(slope)) * 180.0 / 3.14159265358979323846;
+        const double       shear = Length(slope) * (along(kept.back()) - along(kept.front()));
+        std::ostringstream text;
+        text.precision(3);
+        text << "the DICOM series is tilted (a gantry tilt): its slices, from " << files[kept.front()].File << " to "
+             << files[kept.back()].File << ", are stacked along a line at " << degrees << " degrees to their normal";
+        if (gantryTilt)
+        {
+          text << " (Gantry/Detector Tilt (0018,1120): \"" << *gantryTilt << "\")";
+        }
+        text << "; a volume's axes are at right angles, and reading it so would shear the anatomy by up to " << shear
+             << " mm (resample it without the tilt first, e.g. with dcm2niix)";
+        return text.str();
+      }
+    }
+    std::ostringstream text;
+    text << "the DICOM file " << files[kept[worst]].File << " lies off the series' line of slices: its Image Position "
+         << "(Patient) " << Shown(files[kept[worst]].Position) << " mm is " << worstDistance
+         << " mm aside, in the slice plane, from where the series' other files lie";
+    return text.str();
   }
-  if (std::string message = AllAlike(slices, PixelSpacing, spacings, 1e-4, true); !message.empty())
+
+  // Along the normal: a regular grid of the steps' spacing; a step of n spacings (n >= 2) misses n - 1 slices.
+  if (kept.size() == 1)
   {
-    return message;
-  }
-  if (positions.size() < 4)
-  {
+    grid.Origin = files[kept.front()].Position;
+    grid.Slices.push_back({ kept.front(), kept.front(), 0.0 });
     return std::string();
   }
-  std::vector<std::vector<double>> steps;
-  for (std::size_t k = 0; k + 1 < positions.size(); ++k)
+  std::vector<double> steps;
+  for (std::size_t j = 0; j + 1 < kept.size(); ++j)
   {
-    steps.push_back({ positions[k + 1][0] - positions[k][0],
-                      positions[k + 1][1] - positions[k][1],
-                      positions[k + 1][2] - positions[k][2] });
+    steps.push_back(along(kept[j + 1]) - along(kept[j]));
   }
-  const std::vector<double> step = Medians(steps);
-  const double              tolerance = std::max(0.25 * Distance(step, { 0.0, 0.0, 0.0 }), 0.01);
-  // A step is regular when it is a whole number of the series' steps (more than one where slices are missing).
-  auto regular = [&](const std::vector<double> & s)
+  const double      typical = Median(steps);
+  std::vector<long> index(kept.size(), 0);
+  std::vector<long> counts;
+  for (std::size_t j = 0; j < steps.size(); ++j)
   {
-    const double length = Distance(step, { 0.0, 0.0, 0.0 });
-    const double along = length > 0.0 ? (s[0] * step[0] + s[1] * step[1] + s[2] * step[2]) / (length * length) : 1.0;
-    const double whole = std::max(1.0, std::round(along));
-    return Distance(s, { whole * step[0], whole * step[1], whole * step[2] }) <= tolerance;
+    counts.push_back(std::max(1L, std::lround(steps[j] / typical)));
+    index[j + 1] = index[j] + counts.back();
+  }
+  std::vector<double> perSlice;
+  for (std::size_t j = 0; j < steps.size(); ++j)
+  {
+    perSlice.push_back(steps[j] / static_cast<double>(counts[j]));
+  }
+  const double spacing = Median(perSlice);
+  const double normalTolerance = std::max(ToleranceFloor, ToleranceShare * spacing);
+  auto         irregular = [&](std::size_t s)
+  {
+    std::ostringstream text;
+    text << "the DICOM files " << files[kept[s]].File << " and " << files[kept[s + 1]].File << " lie " << steps[s]
+         << " mm apart along the slice normal, where the series steps by " << spacing
+         << " mm: the slices are not evenly spaced (no whole number of steps), so they cannot be placed on a volume's "
+            "grid";
+    return text.str();
   };
-  for (std::size_t k = 0; k < positions.size(); ++k)
+  // Each step a whole number of spacings: a file out of place is named with its neighbour.
+  for (std::size_t j = 0; j < steps.size(); ++j)
   {
-    const bool before = k == 0 || !regular(steps[k - 1]);
-    const bool after = k + 1 == positions.size() || !regular(steps[k]);
-    if (before && after)
+    if (std::abs(steps[j] - spacing * static_cast<double>(counts[j])) > normalTolerance)
+    {
+      return irregular(j);
+    }
+  }
+  // And every file at its place on the grid: steps each a little off one way would add up.
+  std::vector<double> starts;
+  for (std::size_t j = 0; j < kept.size(); ++j)
+  {
+    starts.push_back(along(kept[j]) - spacing * static_cast<double>(index[j]));
+  }
+  const double start = Median(starts);
+  for (std::size_t j = 0; j < kept.size(); ++j)
+  {
+    if (std::abs(starts[j] - start) > normalTolerance)
+    {
+      return irregular(j == 0 ? 0 : j - 1);
+    }
+  }
+  for (std::size_t j = 0; j < steps.size(); ++j)
+  {
+    if (counts[j] - 1 > MaximumMissingSlices)
     {
       std::ostringstream text;
-      text << "the DICOM file " << slices[k].File << " lies off the series' line of slices: its " << Position.Name
-           << " is " << Listed(positions[k]) << " mm, where the series steps by " << Listed(step)
-           << " mm from slice to slice";
+      text << "the DICOM files " << files[kept[j]].File << " and " << files[kept[j + 1]].File << " lie " << steps[j]
+           << " mm apart along the slice normal, where the series steps by " << spacing << " mm: " << counts[j] - 1
+           << " slices are missing between them, more than the " << MaximumMissingSlices
+           << " a gap may miss to be interpolated";
       return text.str();
     }
+  }
+
+  grid.SliceSpacing = spacing;
+  grid.Origin = Plus(median, normal, start);
+  for (std::size_t j = 0; j < kept.size(); ++j)
+  {
+    grid.Slices.push_back({ kept[j], kept[j], 0.0 });
+    if (j + 1 == kept.size() || counts[j] == 1)
+    {
+      continue;
+    }
+    std::ostringstream text;
+    text << "the DICOM series has a gap of " << steps[j] << " mm between the files " << files[kept[j]].File << " and "
+         << files[kept[j + 1]].File << ", where it steps by " << spacing << " mm: "
+         << (counts[j] == 2 ? "the missing slice at " : std::to_string(counts[j] - 1) + " missing slices, at ");
+    for (long m = 1; m < counts[j]; ++m)
+    {
+      const double weight = static_cast<double>(m) / static_cast<double>(counts[j]);
+      grid.Slices.push_back({ kept[j], kept[j + 1], weight });
+      text << (m == 1 ? "" : ", ") << Shown(Plus(grid.Origin, normal, spacing * static_cast<double>(index[j] + m)));
+    }
+    text << " mm" << (counts[j] == 2 ? " is" : ", are") << " interpolated linearly from those two files";
+    grid.Warnings.push_back(text.str());
   }
   return std::string();
 }

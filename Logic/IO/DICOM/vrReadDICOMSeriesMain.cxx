@@ -1,44 +1,44 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// vrReadDICOMSeries <folder> <output.mha> <progress file>: reads the DICOM series with the most files in <folder>
-// (ITK's GDCMSeriesFileNames and ImageSeriesReader, as float) and writes it to <output.mha>. It runs as a child
-// process of the volume reader (vrDICOMSeriesProcess.cxx) because Debian's GDCM asserts, i.e. aborts the process, on
-// some corrupt files: here an abort ends this process only. Before GDCM opens a file, "file <path>" is appended to
-// the progress file, so the parent can name the file that a crash or a failure happened in. Its last line is "done"
-// on success, or "error <scan|none|read N|message|write>" followed by ITK's description (or the message) on the
-// lines after it. Each file is also sorted into series alone before the folder is, since GDCM asserts in the sort too,
-// and the series' geometry attributes are checked file by file before the volume is handed over
-// (vrDICOMSliceGeometry.h).
-// Exit status: 0 done, 1 error, 2 wrong arguments.
-#include "itkGDCMImageIO.h"
-#include "itkGDCMSeriesFileNames.h"
-#include "itkImageFileWriter.h"
-#include "vrDICOMIdentity.h"
+// vrReadDICOMSeries <folder> <output.mha> <report file> [<series>]: reads one DICOM series of <folder> into
+// <output.mha> (float, rescaled per file), as docs/dicom-series.md says: the folder's files examined one by one with
+// GDCM, sorted into series; one series read (the only one, or <series>: its number in the list or its Series Instance
+// UID), or the series listed and none read; every file of it checked against the others; its geometry from the files'
+// positions. It runs as a child process of the volume reader (vrDICOMSeriesProcess.cxx) because Debian's GDCM asserts,
+// i.e. aborts the process, on some corrupt files: here an abort ends this process only. What it says goes to the
+// report file, one line each (vrDICOMReaderReport.h); a "file <path>" line is written before GDCM opens each file, so
+// that the caller can name the file a crash happened in.
+// Exit status: 0 done, 1 error (said in the report), 2 wrong arguments.
+#include "vrDICOMFolderExamination.h"
+#include "vrDICOMPixelData.h"
+#include "vrDICOMReaderReport.h"
+#include "vrDICOMSeriesGroups.h"
 #include "vrDICOMSliceGeometry.h"
-#include "itkImageSeriesReader.h"
+
+#include "itkImage.h"
+#include "itkImageFileWriter.h"
 #include "itkMetaImageIO.h"
 #include "itkObject.h"
 
-#include <gdcmImageReader.h>
-#include <gdcmSerieHelper.h>
 #include <gdcmTrace.h>
 
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include <algorithm>
+#include <cmath>
 #include <cstdint>
-#include <filesystem>
-#include <optional>
-#include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace
 {
-int ProgressFile = -1;
+using namespace vr::detail;
+using Volume = itk::Image<float, 3>;
 
-/** Appends \a line to the progress file at once (no buffer a crash could lose). */
+int ReportFile = -1;
+
+/** Appends \a line to the report at once (no buffer a crash could lose). */
 void
 Report(const std::string & line)
 {
@@ -46,7 +46,7 @@ Report(const std::string & line)
   std::size_t       written = 0;
   while (written < text.size())
   {
-    const ssize_t count = ::write(ProgressFile, text.data() + written, text.size() - written);
+    const ssize_t count = ::write(ReportFile, text.data() + written, text.size() - written);
     if (count <= 0)
     {
       return;
@@ -55,230 +55,321 @@ Report(const std::string & line)
   }
 }
 
-/** GDCM's ImageIO, saying which file it is about to read before each header and each slice it reads. */
-class TracingGDCMImageIO : public itk::GDCMImageIO
-{
-public:
-  ITK_DISALLOW_COPY_AND_MOVE(TracingGDCMImageIO);
-  using Self = TracingGDCMImageIO;
-  using Superclass = itk::GDCMImageIO;
-  using Pointer = itk::SmartPointer<Self>;
-  itkNewMacro(Self);
-  itkTypeMacro(TracingGDCMImageIO, GDCMImageIO);
-
-  void
-  ReadImageInformation() override
-  {
-    Report("file " + std::string(this->GetFileName()));
-    Superclass::ReadImageInformation();
-  }
-  void
-  Read(void * buffer) override
-  {
-    Report("file " + std::string(this->GetFileName()));
-    Superclass::Read(buffer);
-  }
-
-protected:
-  TracingGDCMImageIO() = default;
-  ~TracingGDCMImageIO() override = default;
-};
-
-/** gdcm::SerieHelper given one file: SetDirectory adds a folder's files one by one with this protected call. */
-class OneFileSerieHelper : public gdcm::SerieHelper
-{
-public:
-  using gdcm::SerieHelper::AddFileName;
-};
-
-/** Runs GDCM's series sort (gdcm::SerieHelper, called as itk::GDCMSeriesFileNames calls it below) on \a file alone.
- * The sort reads attributes of its own (position, orientation, series details), and GDCM asserts on some of them
- * (a value whose VR differs from the one the attribute expects): a file that kills the sort dies here, named. */
-void
-SortAlone(const std::string & file)
-{
-  OneFileSerieHelper helper;
-  helper.SetUseSeriesDetails(true);
-  helper.SetLoadMode(gdcm::LD_NOSEQ | gdcm::LD_NOSHADOW);
-  helper.AddFileName(file);
-  for (gdcm::FileList * files = helper.GetFirstSingleSerieUIDFileSet(); files != nullptr;
-       files = helper.GetNextSingleSerieUIDFileSet())
-  {
-    if (!files->empty())
-    {
-      helper.CreateUniqueSeriesIdentifier(files->front().GetPointer());
-      helper.OrderFileList(files);
-    }
-  }
-}
-
-/** \a text without the NUL bytes a writer may pad an odd-length value with. */
-std::string
-Unpadded(std::string text)
-{
-  text.erase(text.find_last_not_of('\0') + 1);
-  return text;
-}
-
-/** Ends with "error <what failed>" and ITK's description (or our message) on the lines after it. */
+/** Ends with "error <kind>" and the reason on the line after it. */
 int
-Fail(const std::string & what, const std::string & description)
+Fail(const std::string & kind, const std::string & reason)
 {
-  Report("error " + what);
-  Report(description);
+  Report("error " + kind);
+  Report(ReportText(reason));
   return 1;
+}
+
+/** The most voxels a volume may have (vr::MaximumVolumeVoxels, 2^32). */
+constexpr std::uint64_t MaximumVoxels = std::uint64_t{ 1 } << 32;
+
+/** The chosen series and what reading it needs. */
+struct Series
+{
+  const std::vector<vr::detail::DICOMFileAttributes> & Files;
+  const DICOMImageSet &                                Set;
+  DICOMImageLayout                                     Layout;
+
+  const std::string &
+  File(std::size_t j) const
+  {
+    return Files[Set.Files[j]].File;
+  }
+  /** Reads the pixels of the set's file \a j, rescaled. */
+  std::string
+  Pixels(std::size_t j, std::vector<float> & slice) const
+  {
+    Report("file " + File(j));
+    return ReadDICOMPixels(File(j), Layout, Layout.Slopes[j], Layout.Intercepts[j], slice);
+  }
+};
+
+/** Whether the set's files \a a and \a b hold the same rescaled pixels; \a failure receives why one cannot be read. */
+bool
+SamePixels(const Series & series, std::size_t a, std::size_t b, std::string & failure)
+{
+  std::vector<float> first;
+  std::vector<float> second;
+  failure = series.Pixels(a, first);
+  if (failure.empty())
+  {
+    failure = series.Pixels(b, second);
+  }
+  return failure.empty() && first == second;
+}
+
+/** Leaves out the later of two files with one SOP Instance UID (one instance, copied twice) when they hold the same
+ * position and pixels. \return the files kept (set indices), or empty with \a refusal set. */
+std::vector<std::size_t>
+WithoutRepeatedInstances(const Series & series, std::vector<std::string> & warnings, std::string & refusal)
+{
+  std::map<std::string, std::size_t> first;
+  std::vector<std::size_t>           kept;
+  for (std::size_t j = 0; j < series.Set.Files.size(); ++j)
+  {
+    const auto uid = series.Files[series.Set.Files[j]].Get(DICOMTag::SOPInstanceUID);
+    if (!uid || uid->empty() || first.count(*uid) == 0)
+    {
+      if (uid && !uid->empty())
+      {
+        first[*uid] = j;
+      }
+      kept.push_back(j);
+      continue;
+    }
+    const std::size_t i = first[*uid];
+    const auto &      p = series.Layout.Positions;
+    const double      apart =
+      std::sqrt((p[i][0] - p[j][0]) * (p[i][0] - p[j][0]) + (p[i][1] - p[j][1]) * (p[i][1] - p[j][1]) +
+                (p[i][2] - p[j][2]) * (p[i][2] - p[j][2]));
+    std::string failure;
+    if (apart <= 0.01 && SamePixels(series, i, j, failure))
+    {
+      warnings.push_back("the DICOM file " + series.File(j) + " is a copy of " + series.File(i) +
+                         " (the same SOP Instance UID " + *uid + ", position and pixels): a duplicate, left out");
+      continue;
+    }
+    refusal = !failure.empty()
+                ? failure
+                : "the DICOM files " + series.File(i) + " and " + series.File(j) + " share the SOP Instance UID " +
+                    *uid + " but hold " + (apart > 0.01 ? "different positions" : "different pixels") +
+                    ": one instance cannot be two images; remove the one that does not belong";
+    return {};
+  }
+  return kept;
+}
+
+/** The warning for the files of the chosen set's Series Instance UID that belong to other sets. */
+std::string
+OtherSetsOfTheUID(const std::vector<DICOMFileAttributes> & files,
+                  const std::vector<DICOMImageSet> &       sets,
+                  std::size_t                              chosen)
+{
+  const auto  uid = files[sets[chosen].Files.front()].Get(DICOMTag::SeriesInstanceUID).value_or("");
+  std::string text;
+  std::size_t count = 0;
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    if (s == chosen || files[sets[s].Files.front()].Get(DICOMTag::SeriesInstanceUID).value_or("") != uid)
+    {
+      continue;
+    }
+    count += sets[s].Files.size();
+    text += (text.empty() ? "" : "; ") + files[sets[s].Files.front()].File +
+            (sets[s].Files.size() > 1 ? " and " + std::to_string(sets[s].Files.size() - 1) + " more" : "") + " (" +
+            (sets[s].Difference.empty() ? std::string("another set") : sets[s].Difference) + ")";
+  }
+  if (count == 0)
+  {
+    return std::string();
+  }
+  return std::to_string(count) + (count == 1 ? " other file" : " other files") + " of the Series Instance UID " + uid +
+         " differ from the series chosen and " + (count == 1 ? "was" : "were") + " not read: " + text;
 }
 } // namespace
 
 int
 main(int argc, char * argv[])
 {
-  if (argc != 4)
+  if (argc != 4 && argc != 5)
   {
     return 2;
   }
   const std::string folder = argv[1];
   const std::string output = argv[2];
-  ProgressFile = ::open(argv[3], O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0600);
-  if (ProgressFile < 0)
+  const std::string choice = argc == 5 ? argv[4] : "";
+  ReportFile = ::open(argv[3], O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0600);
+  if (ReportFile < 0)
   {
     return 2;
   }
-  // A corrupt file is reported by the parent; a core dump of this process would only fill the user's disk.
+  // A corrupt file is reported by the caller; a core dump of this process would only fill the user's disk.
   const rlimit noCore{ 0, 0 };
   ::setrlimit(RLIMIT_CORE, &noCore);
-  // GDCM's and ITK's own messages would reach the terminal (two per slice): the parent reports in its words.
+  // GDCM's and ITK's own messages would reach the terminal: the caller reports in its words.
   gdcm::Trace::SetDebug(false);
   gdcm::Trace::SetWarning(false);
   gdcm::Trace::SetError(false);
   itk::Object::GlobalWarningDisplayOff();
 
-  // Every file of the folder parsed and sorted once, alone: a file that makes GDCM abort while the series are
-  // sorted out below is named here first.
-  std::vector<std::string> entries;
-  std::error_code          error;
-  for (const auto & entry : std::filesystem::directory_iterator(folder, error))
+  // One series: the folder's images sorted into sets that can each be one volume.
+  Report("step examine");
+  const DICOMFolderExamination examination =
+    ExamineDICOMFolder(folder, [](const std::string & file) { Report("file " + file); });
+  Report("step choose");
+  if (!examination.Refusal.empty())
   {
-    if (entry.is_regular_file(error))
-    {
-      entries.push_back(entry.path().string());
-    }
+    return Fail("message", examination.Refusal + "; the series is not read");
   }
-  std::sort(entries.begin(), entries.end());
-  for (const std::string & file : entries)
+  const std::string note = SkippedEntriesNote(examination);
+  if (!note.empty())
   {
-    Report("file " + file);
-    gdcm::ImageReader reader; // as the series scan reads it: the header, then the image description
-    reader.SetFileName(file.c_str());
-    if (reader.Read()) // a file that is not DICOM is simply not read, here and in the scan
+    Report("note " + ReportText(note));
+  }
+  if (examination.Images.empty())
+  {
+    return Fail("none", "holds no DICOM image" + (note.empty() ? std::string() : " (" + note + ")"));
+  }
+  const auto &                     files = examination.Images;
+  const std::vector<DICOMImageSet> sets = GroupDICOMImages(files);
+  std::size_t                      chosen = 0;
+  if (sets.size() > 1 || !choice.empty())
+  {
+    const std::string problem = choice.empty() ? "several" : ChooseDICOMImageSet(files, sets, choice, chosen);
+    if (!problem.empty())
     {
-      const gdcm::DataSet & elements = reader.GetFile().GetDataSet();
-      auto                  text = [&](std::uint16_t group, std::uint16_t element) -> std::optional<std::string>
+      for (const vr::DICOMSeriesSummary & series : SummarizeDICOMImageSets(files, sets))
       {
-        const gdcm::Tag tag(group, element);
-        if (!elements.FindDataElement(tag))
-        {
-          return std::nullopt;
-        }
-        const gdcm::ByteValue * bytes = elements.GetDataElement(tag).GetByteValue();
-        return Unpadded(bytes ? std::string(bytes->GetPointer(), bytes->GetLength()) : std::string());
-      };
-      const std::string message = vr::detail::CheckDICOMSliceAttributes(
-        { file, text(0x0020, 0x0032), text(0x0020, 0x0037), text(0x0028, 0x0030) });
-      if (!message.empty())
-      {
-        return Fail("message", message + "; the series is not read: remove or replace that file");
+        Report("series " + SeriesReportLine(series));
       }
-    }
-    SortAlone(file);
-  }
-  Report("scan");
-
-  std::vector<std::string> files;
-  try
-  {
-    auto names = itk::GDCMSeriesFileNames::New();
-    names->SetUseSeriesDetails(true);
-    names->SetDirectory(folder);
-    // Several series in one folder: the one with the most files (the volume, not a scout).
-    for (const std::string & uid : names->GetSeriesUIDs())
-    {
-      const std::vector<std::string> & seriesFiles = names->GetFileNames(uid);
-      if (seriesFiles.size() > files.size())
-      {
-        files = seriesFiles;
-      }
+      return choice.empty() ? Fail("choose", std::to_string(sets.size())) : Fail("choice", problem);
     }
   }
-  catch (const itk::ExceptionObject & exception)
+  std::vector<std::string> warnings;
+  if (const std::string others = OtherSetsOfTheUID(files, sets, chosen); !others.empty())
   {
-    return Fail("scan", exception.GetDescription());
-  }
-  if (files.empty())
-  {
-    return Fail("none", "holds no DICOM series");
+    warnings.push_back(others);
   }
 
-  using VolumeType = itk::Image<float, 3>;
-  auto dicom = TracingGDCMImageIO::New();
-  auto reader = itk::ImageSeriesReader<VolumeType>::New();
-  reader->SetImageIO(dicom);
-  reader->SetFileNames(files);
-  try
+  // Every file agrees; one instance once; the geometry from the positions.
+  Series series{ files, sets[chosen], {} };
+  if (const std::string problem = CheckDICOMImageSet(files, series.Set, series.Layout); !problem.empty())
   {
-    reader->Update();
+    return Fail("message", problem + "; the series is not read");
   }
-  catch (const itk::ExceptionObject & exception)
+  if (!series.Layout.PixelSpacingSource.empty())
   {
-    return Fail("read " + std::to_string(files.size()), exception.GetDescription());
+    Report("note " + ReportText("the files have no Pixel Spacing (0028,0030): the pixels' spacing is their " +
+                                series.Layout.PixelSpacingSource + ", as ITK and 3D Slicer read it"));
   }
-  if (dicom->GetNumberOfComponents() != 1)
+  Report("step decode");
+  std::string                    refusal;
+  const std::vector<std::size_t> instances = WithoutRepeatedInstances(series, warnings, refusal);
+  if (!refusal.empty())
+  {
+    return Fail("message", refusal + "; the series is not read");
+  }
+  std::vector<DICOMSlicePosition> positions;
+  for (const std::size_t j : instances)
+  {
+    const auto & p = series.Layout.Positions[j];
+    positions.push_back({ series.File(j), { p[0], p[1], p[2] } });
+  }
+  DICOMSliceGrid    grid;
+  std::string       pixelFailure;
+  const std::string geometry = PlanDICOMSliceGrid(
+    positions,
+    series.Layout.Orientation,
+    std::min(series.Layout.PixelSpacing[0], series.Layout.PixelSpacing[1]),
+    [&](std::size_t a, std::size_t b)
+    { return pixelFailure.empty() && SamePixels(series, instances[a], instances[b], pixelFailure); },
+    files[series.Set.Files.front()].Get(DICOMTag::GantryDetectorTilt),
+    grid);
+  if (!pixelFailure.empty())
+  {
+    return Fail("message", pixelFailure + "; the series is not read");
+  }
+  if (!geometry.empty())
+  {
+    return Fail("message", geometry + "; the series is not read");
+  }
+  if (grid.Slices.size() < 2)
   {
     return Fail("message",
-                "the DICOM series has " + std::to_string(dicom->GetNumberOfComponents()) +
-                  " components per pixel (colour?); a volume must be scalar");
+                "the DICOM series is one 2D slice, the DICOM file " +
+                  series.File(instances[grid.Slices.front().First]) + ": a volume must be 3D");
   }
-  // The geometry ITK took from the files: a corrupt position in one file would displace the whole volume unnamed.
-  const auto * headers = reader->GetMetaDataDictionaryArray();
-  if (headers != nullptr && headers->size() == files.size())
+  warnings.insert(warnings.end(), grid.Warnings.begin(), grid.Warnings.end());
+
+  // The volume: each grid slice its file's pixels, or two files' interpolated.
+  const std::uint64_t sliceVoxels = std::uint64_t{ series.Layout.Columns } * series.Layout.Rows;
+  if (sliceVoxels * grid.Slices.size() > MaximumVoxels)
   {
-    std::vector<vr::detail::DICOMSliceAttributes> slices;
-    for (std::size_t k = 0; k < files.size(); ++k)
-    {
-      auto text = [&](const char * key) -> std::optional<std::string>
-      {
-        std::string value;
-        if ((*headers)[k] == nullptr || !itk::ExposeMetaData<std::string>(*(*headers)[k], key, value))
-        {
-          return std::nullopt;
-        }
-        return Unpadded(value);
-      };
-      slices.push_back({ files[k], text("0020|0032"), text("0020|0037"), text("0028|0030") });
-    }
-    if (const std::string message = vr::detail::CheckDICOMSliceGeometry(slices); !message.empty())
-    {
-      return Fail("message",
-                  message + "; the series (" + std::to_string(files.size()) + (files.size() == 1 ? " file" : " files") +
-                    ") is not read: remove or replace that file");
-    }
+    return Fail("message",
+                "the DICOM series would be a volume of " + std::to_string(series.Layout.Columns) + " x " +
+                  std::to_string(series.Layout.Rows) + " x " + std::to_string(grid.Slices.size()) +
+                  " voxels, more than 2^32 (is a file's Rows or Columns corrupt?)");
   }
-  Report("write");
-  // The patient and study of the first file, for the node the caller makes (vr::DICOMAttribute): one
-  // "key<TAB>value" line each beside the volume.
-  if (headers != nullptr && !headers->empty() && headers->front() != nullptr)
+  std::vector<float> first;
+  if (std::string problem = series.Pixels(instances[grid.Slices.front().First], first); !problem.empty())
   {
-    std::ofstream identity(output + ".identity");
-    for (auto [key, value] : vr::DICOMAttributesOf(*headers->front()))
+    return Fail("message", problem + "; the series is not read");
+  }
+  auto               volume = Volume::New();
+  Volume::RegionType region;
+  region.SetSize({ { series.Layout.Columns, series.Layout.Rows, grid.Slices.size() } });
+  volume->SetRegions(region);
+  volume->Allocate();
+  Volume::SpacingType spacing;
+  spacing[0] = series.Layout.PixelSpacing[1];
+  spacing[1] = series.Layout.PixelSpacing[0];
+  spacing[2] = grid.SliceSpacing;
+  volume->SetSpacing(spacing);
+  Volume::PointType     origin;
+  Volume::DirectionType direction;
+  for (unsigned int c = 0; c < 3; ++c)
+  {
+    origin[c] = grid.Origin[c];
+    direction(c, 0) = series.Layout.Orientation[c];
+    direction(c, 1) = series.Layout.Orientation[3 + c];
+    direction(c, 2) = grid.Normal[c];
+  }
+  volume->SetOrigin(origin);
+  volume->SetDirection(direction);
+  float *                            voxels = volume->GetBufferPointer();
+  std::map<std::size_t, std::size_t> slicesOfFiles;
+  for (std::size_t k = 0; k < grid.Slices.size(); ++k)
+  {
+    const DICOMSliceGrid::Slice & slice = grid.Slices[k];
+    if (slice.Weight != 0.0)
     {
-      std::replace_if(
-        value.begin(), value.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
-      identity << key << '\t' << value << '\n';
+      continue;
+    }
+    slicesOfFiles[slice.First] = k;
+    std::vector<float> pixels;
+    if (k == 0)
+    {
+      pixels.swap(first);
+    }
+    else if (std::string problem = series.Pixels(instances[slice.First], pixels); !problem.empty())
+    {
+      return Fail("message", problem + "; the series is not read");
+    }
+    std::copy(pixels.begin(), pixels.end(), voxels + k * sliceVoxels);
+  }
+  for (std::size_t k = 0; k < grid.Slices.size(); ++k)
+  {
+    const DICOMSliceGrid::Slice & slice = grid.Slices[k];
+    if (slice.Weight == 0.0)
+    {
+      continue;
+    }
+    const float * a = voxels + slicesOfFiles.at(slice.First) * sliceVoxels;
+    const float * b = voxels + slicesOfFiles.at(slice.Second) * sliceVoxels;
+    float *       out = voxels + k * sliceVoxels;
+    for (std::uint64_t v = 0; v < sliceVoxels; ++v)
+    {
+      out[v] = static_cast<float>((1.0 - slice.Weight) * a[v] + slice.Weight * b[v]);
     }
   }
-  auto writer = itk::ImageFileWriter<VolumeType>::New();
+
+  // What the caller shows, then the volume handed over.
+  for (const std::string & warning : warnings)
+  {
+    Report("warning " + ReportText(warning));
+  }
+  for (const auto & [key, value] : files[series.Set.Files.front()].Identity)
+  {
+    Report("identity " + ReportText(key) + "\t" + ReportText(value));
+  }
+  Report("step write");
+  auto writer = itk::ImageFileWriter<Volume>::New();
   writer->SetImageIO(itk::MetaImageIO::New());
-  writer->SetInput(reader->GetOutput());
+  writer->SetInput(volume);
   writer->SetFileName(output);
   try
   {
@@ -288,6 +379,6 @@ main(int argc, char * argv[])
   {
     return Fail("write", exception.GetDescription());
   }
-  Report("done " + std::to_string(files.size()));
+  Report("done " + std::to_string(grid.Slices.size()));
   return 0;
 }
