@@ -4,6 +4,7 @@
 // It only collects parameters and files; vr::VesselPathLogic computes.
 
 #include "vrCLIModuleRunner.h"
+#include "vrCLIVolumeInput.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrInputError.h"
@@ -42,6 +43,7 @@ const vr::CLIParameterMap ParameterFlags = {
   { vr::ParameterName::ReferencePoints, "referencePoints" },
   { vr::ParameterName::ReferenceMethod, "referenceMethod" },
   { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
+  { vr::ParameterName::DICOMSeries, "series" },
 };
 
 /** This module's output parameters and the outputs they name. */
@@ -165,8 +167,8 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
                          " (the second argument) or a vessel segmentation with " + arguments.Spelling("segmentation"));
   }
   progress.Update(0.0, "reading");
-  const std::string                  volumePath = arguments.String("inputVolume");
-  const vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
+  std::vector<std::string>           inputWarnings;
+  const vr::VolumeImageType::Pointer volume = vr::ReadModuleVolume(arguments, "inputVolume", progress, inputWarnings);
 
   vr::Segmentation segmentation;
   std::string      segmentationName;
@@ -178,6 +180,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
     {
       progress.Print(std::cerr, "warning: " + warning);
     }
+    inputWarnings.insert(inputWarnings.end(), warnings.begin(), warnings.end());
     segmentationName = "segmentation " + arguments.String("segmentation");
   }
 
@@ -245,6 +248,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   progress.SetReturnValue("pathLength", Number(results.Path.GetLength()));
   progress.SetReturnValue("sectionsOutsideSegmentation", std::to_string(results.Lumen.SectionsOutsideSegmentation));
   progress.SetReturnValue("foldedPixels", std::to_string(results.FoldedPixels));
+  progress.SetReturnValue("inputWarnings", vr::JoinedWarnings(inputWarnings));
 
   std::ostringstream summary;
   const auto &       chain = results.Path.GetBranchChain();

@@ -5,6 +5,7 @@
 
 #include "vrCLIModuleRunner.h"
 #include "vrCLIRelaxParameters.h"
+#include "vrCLIVolumeInput.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrFilterSettingsText.h"
@@ -50,6 +51,7 @@ const vr::CLIParameterMap ParameterFlags = {
   { vr::ParameterName::Window, "window" },
   { vr::ParameterName::Level, "level" },
   { vr::ParameterName::CenterlineSpace, "centerlineSpace" },
+  { vr::ParameterName::DICOMSeries, "series" },
 };
 
 /** This module's output parameters and the outputs they name. */
@@ -165,7 +167,8 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   }
 
   const std::string            volumePath = arguments.String("inputVolume");
-  vr::VolumeImageType::Pointer volume = vr::ReadVolume(volumePath);
+  std::vector<std::string>     inputWarnings;
+  vr::VolumeImageType::Pointer volume = vr::ReadModuleVolume(arguments, "inputVolume", progress, inputWarnings);
   vr::VesselReformationLogic   logic;
   logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, FileName(volumePath)));
   volume = nullptr; // the node holds the voxels now
@@ -179,6 +182,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     {
       progress.Print(std::cerr, "warning: " + warning);
     }
+    inputWarnings.insert(inputWarnings.end(), warnings.begin(), warnings.end());
     logic.SetSegmentationNode(vr::MakeSegmentationNode(segmentation));
     for (const auto & description : segmentation.Descriptions)
     {
@@ -255,6 +259,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   progress.SetReturnValue("relaxTime", Milliseconds(times.Relax));
   progress.SetReturnValue("resampleTime", Milliseconds(times.Resample));
   progress.SetReturnValue("surfaceTime", Milliseconds(times.Surface));
+  progress.SetReturnValue("inputWarnings", vr::JoinedWarnings(inputWarnings));
 
   std::ostringstream summary;
   summary << "VesselReformation: " << branches << " branches (" << source << "), view " << size[0] << " x " << size[1]
