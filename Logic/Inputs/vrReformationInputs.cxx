@@ -81,10 +81,17 @@ MakePhantomInputs(const std::string & name, double spacing)
 }
 
 vtkSmartPointer<VolumeNode>
-ReadVolumeNode(const std::string & path)
+ReadVolumeNode(const std::string & path, const VolumeReadOptions & options, VolumeReadReport * report)
 {
-  const VolumeImageType::Pointer image = ReadVolume(path);
+  const VolumeImageType::Pointer image = ReadVolume(path, options, report);
   return ConvertItkImageToVolumeNode(image, path);
+}
+
+void
+AddVolumeReport(ReformationInputs & inputs, const VolumeReadReport & report)
+{
+  inputs.Warnings.insert(inputs.Warnings.begin(), report.Warnings.begin(), report.Warnings.end());
+  inputs.Notes.insert(inputs.Notes.end(), report.Notes.begin(), report.Notes.end());
 }
 
 vtkSmartPointer<CenterlineNode>
