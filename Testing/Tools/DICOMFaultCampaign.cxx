@@ -8,7 +8,9 @@
 // one with --seed S --first C --copies 1 --keep DIR).
 //
 //   DICOMFaultCampaign [--copies N=1000] [--seed S]... [--first C=1] [--phantom thorax|runoff] [--spacing MM=2]
-//                      [--work DIR] [--keep DIR]
+//                      [--work DIR] [--keep DIR] [--module PATH]
+// --module runs another VesselReformation than the build's (a copy, so that a rebuild during a long campaign cannot
+// fail runs; VR_DICOM_SERIES_READER then names the reader process this tool's own reads use).
 #include "itkCTAPhantom.h"
 #include "vrCenterlineIO.h"
 #include "vrDICOMCampaign.h"
@@ -32,7 +34,7 @@ int
 Usage()
 {
   std::cerr << "usage: DICOMFaultCampaign [--copies N] [--seed S]... [--first C] [--phantom thorax|runoff] "
-               "[--spacing MM] [--work DIR] [--keep DIR]\n";
+               "[--spacing MM] [--work DIR] [--keep DIR] [--module PATH]\n";
   return 2;
 }
 } // namespace
@@ -47,6 +49,7 @@ main(int argc, char * argv[])
   double                     spacing = 2.0;
   std::string                work = (fs::temp_directory_path() / "vr-dicom-fault-campaign").string();
   std::string                keep;
+  std::string                module = VR_REFORMATION_EXE;
   for (int k = 1; k < argc; ++k)
   {
     const std::string flag = argv[k];
@@ -83,6 +86,10 @@ main(int argc, char * argv[])
     {
       keep = value;
     }
+    else if (flag == "--module")
+    {
+      module = value;
+    }
     else
     {
       return Usage();
@@ -100,7 +107,7 @@ main(int argc, char * argv[])
   made.Source->Update();
   fs::create_directories(work);
   DICOMCampaignSetup setup;
-  setup.Module = VR_REFORMATION_EXE;
+  setup.Module = module;
   setup.WorkFolder = (fs::path(work) / "run").string();
   setup.Volume = QuantizedCT(made.Source->GetOutput());
   setup.Centerlines = (fs::path(work) / "centerlines.vtp").string();
