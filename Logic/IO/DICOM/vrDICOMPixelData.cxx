@@ -4,11 +4,11 @@
 #include <gdcmImageReader.h>
 #include <gdcmReader.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 
 namespace vr::detail
@@ -21,13 +21,15 @@ constexpr double LargestRescaledValue = 1e9;
 
 /** Whether plain pixel data of \a length bytes lie whole in \a file: GDCM's parser accepts a file cut short inside
  * them (its reading stops at the file's end, the rest of the value left as it was), so the element is looked for in
- * the file's bytes, from the end (it is nearly always last): its tag, then an explicit VR OB/OW header or an implicit
- * one with that length. */
+ * the file's bytes: its tag, then an explicit VR OB/OW header or an implicit one with that length. */
 bool
 PixelDataWhole(const std::string & file, std::uint64_t length, bool bigEndian)
 {
-  std::ifstream     stream(file, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  std::ifstream stream(file, std::ios::binary | std::ios::ate);
+  std::string   bytes(static_cast<std::size_t>(std::max<std::streamoff>(stream.tellg(), 0)), '\0');
+  stream.seekg(0);
+  stream.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(stream.gcount(), 0)));
   const std::string tag = bigEndian ? std::string("\x7F\xE0\x00\x10", 4) : std::string("\xE0\x7F\x10\x00", 4);
   auto              number = [&](std::size_t at)
   {
@@ -39,8 +41,8 @@ PixelDataWhole(const std::string & file, std::uint64_t length, bool bigEndian)
     }
     return value;
   };
-  for (std::size_t at = bytes.rfind(tag); at != std::string::npos;
-       at = at == 0 ? std::string::npos : bytes.rfind(tag, at - 1))
+  // From the front: the element's header comes before its value (the value's bytes are never searched through).
+  for (std::size_t at = bytes.find(tag); at != std::string::npos; at = bytes.find(tag, at + 1))
   {
     const bool explicitVR = at + 12 <= bytes.size() &&
                             (bytes.compare(at + 4, 2, "OW") == 0 || bytes.compare(at + 4, 2, "OB") == 0) &&
@@ -108,12 +110,7 @@ PixelDataProblem(const std::string & file, const gdcm::DataSet & elements, const
 
 template<typename TStored>
 std::string
-Rescale(const std::string &  file,
-        const char *         buffer,
-        std::size_t          count,
-        double               slope,
-        double               intercept,
-        std::vector<float> & slice)
+Rescale(const std::string & file, const char * buffer, std::size_t count, double slope, double intercept, float * slice)
 {
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -139,7 +136,7 @@ ReadDICOMPixels(const std::string &      file,
                 const DICOMImageLayout & layout,
                 double                   slope,
                 double                   intercept,
-                std::vector<float> &     slice)
+                float *                  slice)
 {
   gdcm::ImageReader reader;
   reader.SetFileName(file.c_str());
@@ -185,7 +182,6 @@ ReadDICOMPixels(const std::string &      file,
     return "the DICOM file " + file + ": GDCM cannot decode its pixel data (transfer syntax " +
            layout.TransferSyntaxFamily + ")";
   }
-  slice.assign(count, 0.0f);
   switch (format.GetScalarType())
   {
     case gdcm::PixelFormat::UINT8:

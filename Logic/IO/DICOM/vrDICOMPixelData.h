@@ -8,12 +8,11 @@
 #include "vrDICOMSeriesGroups.h"
 
 #include <string>
-#include <vector>
 
 namespace vr::detail
 {
 /** Reads the pixels of \a file, one of the set \a layout describes, as \a slope * stored + \a intercept.
- * \param slice receives Columns x Rows values, row by row (the file's order).
+ * \param slice receives Columns x Rows values, row by row (the file's order): room for them.
  * \return empty, or why the file cannot be read, naming it: it cannot be parsed; it has no Pixel Data; its pixel data
  * are plain where its transfer syntax says compressed (or the other way round), or hold another number of bytes than
  * Rows x Columns x Bits Allocated ask for; GDCM cannot decode them, or decodes another size or format than the
@@ -23,7 +22,7 @@ ReadDICOMPixels(const std::string &      file,
                 const DICOMImageLayout & layout,
                 double                   slope,
                 double                   intercept,
-                std::vector<float> &     slice);
+                float *                  slice);
 } // namespace vr::detail
 
 #endif

@@ -79,12 +79,18 @@ struct Series
   {
     return Files[Set.Files[j]].File;
   }
-  /** Reads the pixels of the set's file \a j, rescaled. */
+  /** Reads the pixels of the set's file \a j, rescaled, into \a slice (Columns x Rows values). */
   std::string
-  Pixels(std::size_t j, std::vector<float> & slice) const
+  Pixels(std::size_t j, float * slice) const
   {
     Report("file " + File(j));
     return ReadDICOMPixels(File(j), Layout, Layout.Slopes[j], Layout.Intercepts[j], slice);
+  }
+  std::string
+  Pixels(std::size_t j, std::vector<float> & slice) const
+  {
+    slice.resize(std::size_t{ Layout.Columns } * Layout.Rows);
+    return Pixels(j, slice.data());
   }
 };
 
@@ -330,16 +336,14 @@ main(int argc, char * argv[])
       continue;
     }
     slicesOfFiles[slice.First] = k;
-    std::vector<float> pixels;
     if (k == 0)
     {
-      pixels.swap(first);
+      std::copy(first.begin(), first.end(), voxels);
     }
-    else if (std::string problem = series.Pixels(instances[slice.First], pixels); !problem.empty())
+    else if (std::string problem = series.Pixels(instances[slice.First], voxels + k * sliceVoxels); !problem.empty())
     {
       return Fail("message", problem + "; the series is not read");
     }
-    std::copy(pixels.begin(), pixels.end(), voxels + k * sliceVoxels);
   }
   for (std::size_t k = 0; k < grid.Slices.size(); ++k)
   {
