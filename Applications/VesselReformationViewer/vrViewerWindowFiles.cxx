@@ -6,7 +6,9 @@
 #include "vrInputError.h"
 #include "vrReformationInputs.h"
 
+#include <QAbstractItemView>
 #include <QAction>
+#include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -15,6 +17,8 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QStatusBar>
+
+#include <algorithm>
 
 namespace vr
 {
@@ -146,6 +150,19 @@ ViewerWindow::AskForDICOMSeries(const QString &                              pat
                          .arg(series.size()));
   dialog->setComboBoxItems(items);
   dialog->setComboBoxEditable(false);
+  // The series with the most files first in view (the volume, most often; a scout has a few); the list shows each
+  // line whole, the closed box a part of it.
+  const auto largest =
+    std::max_element(series.begin(),
+                     series.end(),
+                     [](const DICOMSeriesSummary & a, const DICOMSeriesSummary & b) { return a.Files < b.Files; });
+  dialog->setTextValue(items[static_cast<int>(largest - series.begin())]);
+  if (auto * box = dialog->findChild<QComboBox *>())
+  {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(72);
+    box->view()->setMinimumWidth(box->view()->sizeHintForColumn(0));
+  }
   dialog->setOkButtonText(tr("Read"));
   connect(dialog,
           &QInputDialog::textValueSelected,

@@ -86,9 +86,10 @@ TEST_F(WidgetsTest, AFolderOfTwoSeriesAsksWhichAndReadsTheOneChosen)
                                     .arg(size[1])))
     << items[1].toStdString();
   EXPECT_TRUE(dialog->labelText().contains(QStringLiteral("holds 2 series"))) << dialog->labelText().toStdString();
+  EXPECT_EQ(dialog->textValue(), items[1]) << "the series of the most files offered first";
   EXPECT_EQ(Controller().GetInputs(), inputsBefore) << "nothing is replaced while the question is open";
   std::filesystem::create_directories(VR_WIDGETS_PICTURES_DIR);
-  EXPECT_TRUE(Window().grab().save(QString::fromStdString(
+  EXPECT_TRUE(dialog->grab().save(QString::fromStdString(
     (std::filesystem::path(VR_WIDGETS_PICTURES_DIR) / "viewer-dicom-series-choice.png").string())));
   dialog->reject();
   ASSERT_TRUE(WaitUntilSettled(Window()));
