@@ -15,9 +15,9 @@ seed=${4:-1}
 here=$(cd "$(dirname "$0")/.." && pwd)
 data=${VR_SHARED_DATA_DIR:-$here/../Testing/Data}/vmtk-aorta-mra
 module=$build/cli-modules/VesselReformation
-writer=$build/bin/WriteDicomSeries
+writer=$build/bin/WriteDICOMSeries
 for tool in "$module" "$writer"; do
-  [[ -x $tool ]] || { echo "missing $tool: cmake --build $build --target VesselReformation WriteDicomSeries" >&2; exit 2; }
+  [[ -x $tool ]] || { echo "missing $tool: cmake --build $build --target VesselReformation WriteDICOMSeries" >&2; exit 2; }
 done
 rm -rf "$work"
 mkdir -p "$work/kept"
@@ -26,7 +26,7 @@ mkdir -p "$work/kept"
 frozen=$work/programs
 mkdir -p "$frozen/cli-modules" "$frozen/libexec/VesselReformation"
 cp "$module" "$build"/cli-modules/libVesselReformationLib.so "$frozen/cli-modules/"
-cp "$build/libexec/VesselReformation/vrReadDicomSeries" "$frozen/libexec/VesselReformation/"
+cp "$build/libexec/VesselReformation/vrReadDICOMSeries" "$frozen/libexec/VesselReformation/"
 module=$frozen/cli-modules/VesselReformation
 export LD_LIBRARY_PATH=$frozen/cli-modules${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 "$writer" "$data/aorta.mha" "$work/series"

@@ -67,15 +67,15 @@ if [ ! -f "$build/build.ninja" ]; then
     -DVR_BUILD_FUZZERS=ON -DVR_SANITIZERS=address,undefined -DVR_BUILD_BENCHMARKS=OFF -DCMAKE_C_FLAGS=-g1 \
     -DCMAKE_CXX_FLAGS=-g1 "${launcher[@]}"
 fi
-# vrReadDicomSeries: the child process the dicom harness reads through.
-cmake --build "$build" --target "${selected[@]/#/vrFuzz_}" vrReadDicomSeries
+# vrReadDICOMSeries: the child process the dicom harness reads through.
+cmake --build "$build" --target "${selected[@]/#/vrFuzz_}" vrReadDICOMSeries
 jobs=${VR_FUZZ_JOBS:-$(($(nproc) / 2))}
 ((jobs >= 1)) || jobs=1
 cap=${VR_FUZZ_MERGE_CAP:-20}
 
 # The flags one harness runs with. Each input is written to a file and read back by the real reader: 64 KiB covers
 # every seed. An input that takes more than 10 s or 2 GiB is a finding (a hang, or an allocation a header asked
-# for); a DICOM input starts a process, which the reader stops after 10 s itself (vrFuzzDicomSeries.cxx), so there
+# for); a DICOM input starts a process, which the reader stops after 10 s itself (vrFuzzDICOMSeries.cxx), so there
 # libFuzzer's bound is 60 s.
 flags_of() {
   local reader="$1" timeout=10

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Makes the DICOM fuzz harness's seeds (Testing/Fuzz/corpus/dicom/aorta-crop-*): a 12 x 12 x 3 crop of VMTK's aorta
-# around its brightest voxel of slice 17, written as a series by WriteDicomSeries (ITK's GDCM IO, implicit VR) and
-# converted to explicit VR little endian by gdcmconv, packed as vrFuzzDicomSeries.cxx reads its input (each file a
+# around its brightest voxel of slice 17, written as a series by WriteDICOMSeries (ITK's GDCM IO, implicit VR) and
+# converted to explicit VR little endian by gdcmconv, packed as vrFuzzDICOMSeries.cxx reads its input (each file a
 # 4-byte little-endian length and its bytes). Small on purpose: a few KiB, so that libFuzzer mutates the header.
 #
 #   scripts/make-dicom-fuzz-seeds.sh [build folder=build]
@@ -29,7 +29,7 @@ header = (f"NRRD0004\ntype: float\ndimension: 3\nspace: left-posterior-superior\
           f"encoding: raw\nendian: little\n\n")
 open(sys.argv[2], 'wb').write(header.encode() + crop.tobytes())
 PY
-"$build/bin/WriteDicomSeries" "$work/crop.nrrd" "$work/implicit"
+"$build/bin/WriteDICOMSeries" "$work/crop.nrrd" "$work/implicit"
 mkdir "$work/explicit"
 for file in "$work"/implicit/*.dcm; do
   gdcmconv --explicit "$file" "$work/explicit/$(basename "$file")"

@@ -123,7 +123,8 @@ RunViewer(int argc, char ** argv)
                          &window,
                          [&]
                          {
-                           const QString problem = window.WriteScreenshot(QString::fromStdString(options.ScreenshotPath));
+                           const QString problem =
+                             window.WriteScreenshot(QString::fromStdString(options.ScreenshotPath));
                            if (!problem.isEmpty())
                            {
                              std::cerr << Program << ": error: " << problem.toStdString() << std::endl;
@@ -180,11 +181,14 @@ RunViewer(int argc, char ** argv)
     {
       segmentation << QString::fromStdString(path);
     }
-    window.OpenFilesWithSegmentation(QString::fromStdString(options.VolumePath), segmentation);
+    window.OpenFilesWithSegmentation(
+      QString::fromStdString(options.VolumePath), segmentation, QString::fromStdString(options.DICOMSeries));
   }
   else
   {
-    window.OpenFiles(QString::fromStdString(options.VolumePath), QString::fromStdString(options.CenterlinePath));
+    window.OpenFiles(QString::fromStdString(options.VolumePath),
+                     QString::fromStdString(options.CenterlinePath),
+                     QString::fromStdString(options.DICOMSeries));
   }
   if (!options.Preset.empty() || options.HasWindowLevel)
   {

@@ -81,6 +81,10 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
                 "volume (NRRD, NIfTI, MetaImage, DICOM folder) and centerlines (.vtp, .vtk, "
                 ".mrk.json, .tre, .csv)")
     ->expected(0, 2);
+  app.add_option("--series",
+                 options.DICOMSeries,
+                 "which series of a DICOM folder that holds several: its number in the list the viewer gives, or "
+                 "its Series Instance UID (without it, the viewer asks)");
   app.add_option("--segmentation",
                  segmentation,
                  "vessel segmentation FILE[,FILE...] (label map, mask, VMTK level set; several are combined) whose "

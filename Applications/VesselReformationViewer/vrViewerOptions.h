@@ -19,6 +19,8 @@ struct ViewerOptions
   /** Files to open; both empty: the phantom. */
   std::string VolumePath;
   std::string CenterlinePath;
+  /** Which series of a DICOM folder that holds several (vr::VolumeReadOptions::DICOMSeries); empty: ask. */
+  std::string DICOMSeries;
   /** Vessel segmentation files (combined) whose centerlines the logic extracts, instead of CenterlinePath. */
   std::vector<std::string> SegmentationPaths;
   /** The built-in phantom and its voxel spacing (mm) when no files are given. */

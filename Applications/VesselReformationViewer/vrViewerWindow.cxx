@@ -370,7 +370,14 @@ ViewerWindow::ConnectParts()
                                      : tr("Loaded %1 and %2")
                                          .arg(QFileInfo(QString::fromStdString(inputs->VolumeSource)).fileName(),
                                               QFileInfo(QString::fromStdString(inputs->CenterlineSource)).fileName());
-            statusBar()->showMessage(loaded, 5000);
+            QStringList   notes;
+            for (const auto & note : inputs->Notes)
+            {
+              notes << QString::fromStdString(note);
+            }
+            // What was skipped changes nothing in the image: the status bar, not the warning banner.
+            statusBar()->showMessage(notes.isEmpty() ? loaded : loaded + QStringLiteral("; ") + notes.join("; "),
+                                     notes.isEmpty() ? 5000 : 15000);
             ClearWarnings();
             for (const auto & warning : inputs->Warnings)
             {

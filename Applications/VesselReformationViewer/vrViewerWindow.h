@@ -3,6 +3,7 @@
 #define vrViewerWindow_h
 
 #include "vrCPRView.h"
+#include "vrDICOMSeriesChoice.h"
 #include "vrModulePanel.h"
 #include "vrReformationController.h"
 #include "vrRotationSeries.h"
@@ -55,12 +56,14 @@ public:
   /** Loads a built-in phantom (on the worker thread) and reforms it. */
   void
   LoadPhantom(const QString & name, double spacing = 1.5);
-  /** Opens a volume and centerlines together. */
+  /** Opens a volume and centerlines together. A DICOM folder that holds several series is read with \a series (its
+   * number in the reader's list or its Series Instance UID); without one, a dialog asks which (objectName
+   * "dicomSeriesChoice", one item a series, vr::DescribeDICOMSeries) and the open is made again with the answer. */
   void
-  OpenFiles(const QString & volume, const QString & centerlines);
-  /** Opens a volume, keeping the centerlines. */
+  OpenFiles(const QString & volume, const QString & centerlines, const QString & series = QString());
+  /** Opens a volume, keeping the centerlines; \a series as for OpenFiles(). */
   void
-  OpenVolume(const QString & path);
+  OpenVolume(const QString & path, const QString & series = QString());
   /** Opens centerlines, keeping the volume. */
   void
   OpenCenterlines(const QString & path);
@@ -69,9 +72,11 @@ public:
    * and the overlays and tubes show them. A file the logic refuses leaves the data on screen as it was. */
   void
   OpenSegmentation(const QStringList & paths);
-  /** Opens a volume and a segmentation together. */
+  /** Opens a volume and a segmentation together; \a series as for OpenFiles(). */
   void
-  OpenFilesWithSegmentation(const QString & volume, const QStringList & segmentation);
+  OpenFilesWithSegmentation(const QString &     volume,
+                            const QStringList & segmentation,
+                            const QString &     series = QString());
 
   /** Remembers and restores what ViewerSettings keeps (window geometry, panel split, overlays, the latest folder,
    * File > Open recent) in \a settings; without it (the default, and in scripted runs) nothing is remembered. Call
@@ -221,6 +226,21 @@ private:
   /** Adds an opened pair to the settings' recent list once it has loaded. */
   void
   RememberWhenLoaded(const ViewerSettings::RecentEntry & entry);
+  /** Reads the volume of a load, on the controller's worker. A DICOM folder of several series without \a series
+   * puts the question to the GUI thread (AskForDICOMSeries, which calls \a again with the answer) and ends this load
+   * quietly, with vr::Cancelled: nothing is replaced and no error is shown. */
+  vtkSmartPointer<VolumeNode>
+  ReadVolumeOrAsk(const std::string &                          path,
+                  const QString &                              series,
+                  VolumeReadReport &                           report,
+                  const std::function<void(const QString &)> & again) const;
+  /** Asks which of \a series of the folder \a path is the volume (a dialog that does not block) and calls \a again
+   * with its number; nothing when the user cancels. */
+  void
+  AskForDICOMSeries(const QString &                              path,
+                    const std::vector<DICOMSeriesSummary> &      series,
+                    const QString &                              reason,
+                    const std::function<void(const QString &)> & again);
   /** The folder file dialogs start in. */
   QString
   StartFolder() const;

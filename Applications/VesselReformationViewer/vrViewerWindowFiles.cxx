@@ -4,15 +4,21 @@
 
 #include "itkCTAPhantom.h"
 #include "vrInputError.h"
+#include "vrReformationInputs.h"
 
+#include <QAbstractItemView>
 #include <QAction>
+#include <QComboBox>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QMetaObject>
 #include <QMenu>
 #include <QMessageBox>
 #include <QStatusBar>
+
+#include <algorithm>
 
 namespace vr
 {
@@ -41,18 +47,29 @@ ViewerWindow::LoadPhantom(const QString & name, double spacing)
 }
 
 void
-ViewerWindow::OpenFiles(const QString & volume, const QString & centerlines)
+ViewerWindow::OpenFiles(const QString & volume, const QString & centerlines, const QString & series)
 {
   const std::string volumePath = volume.toStdString();
   const std::string centerlinePath = centerlines.toStdString();
   RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), { QFileInfo(centerlines).absoluteFilePath() }, false });
-  m_Controller->LoadInputs([volumePath, centerlinePath]
-                           { return MakeInputs(ReadVolumeNode(volumePath), ReadCenterlineNode(centerlinePath)); },
-                           tr("%1 and %2").arg(QFileInfo(volume).fileName(), QFileInfo(centerlines).fileName()));
+  m_Controller->LoadInputs(
+    [this, volumePath, centerlinePath, volume, centerlines, series]
+    {
+      VolumeReadReport  report;
+      const auto        node = ReadVolumeOrAsk(volumePath,
+                                        series,
+                                        report,
+                                        [this, volume, centerlines](const QString & chosen)
+                                        { OpenFiles(volume, centerlines, chosen); });
+      ReformationInputs inputs = MakeInputs(node, ReadCenterlineNode(centerlinePath));
+      AddVolumeReport(inputs, report);
+      return inputs;
+    },
+    tr("%1 and %2").arg(QFileInfo(volume).fileName(), QFileInfo(centerlines).fileName()));
 }
 
 void
-ViewerWindow::OpenVolume(const QString & path)
+ViewerWindow::OpenVolume(const QString & path, const QString & series)
 {
   auto current = m_Controller->GetInputs();
   if (!current)
@@ -62,21 +79,105 @@ ViewerWindow::OpenVolume(const QString & path)
   }
   const std::string volumePath = path.toStdString();
   m_Controller->LoadInputs(
-    [volumePath, current]
+    [this, volumePath, current, path, series]
     {
+      VolumeReadReport report;
+      const auto       node =
+        ReadVolumeOrAsk(volumePath, series, report, [this, path](const QString & chosen) { OpenVolume(path, chosen); });
+      ReformationInputs inputs;
       if (current->Segmentation)
       {
         // The segmentation stays: the logic extracts its centerlines again against the new volume.
-        ReformationInputs inputs = MakeSegmentationInputs(ReadVolumeNode(volumePath), current->Segmentation);
-        inputs.CenterlineSource = current->CenterlineSource;
-        return inputs;
+        inputs = MakeSegmentationInputs(node, current->Segmentation);
       }
-      ReformationInputs inputs = MakeInputs(ReadVolumeNode(volumePath), current->Centerlines);
+      else
+      {
+        inputs = MakeInputs(node, current->Centerlines);
+      }
       inputs.CenterlineSource = current->CenterlineSource;
+      AddVolumeReport(inputs, report);
       return inputs;
     },
     QFileInfo(path).fileName(),
     PanelParameters());
+}
+
+vtkSmartPointer<VolumeNode>
+ViewerWindow::ReadVolumeOrAsk(const std::string &                          path,
+                              const QString &                              series,
+                              VolumeReadReport &                           report,
+                              const std::function<void(const QString &)> & again) const
+{
+  VolumeReadOptions options;
+  options.DICOMSeries = series.toStdString();
+  try
+  {
+    return ReadVolumeNode(path, options, &report);
+  }
+  catch (const DICOMSeriesChoiceRequired & choice)
+  {
+    auto *        window = const_cast<ViewerWindow *>(this);
+    const auto    listed = choice.GetSeries();
+    const QString folder = QString::fromStdString(path);
+    // The reason is said only where a choice was given and named none (the folder changed since).
+    const QString reason = series.isEmpty() ? QString() : QString::fromStdString(choice.what());
+    QMetaObject::invokeMethod(
+      window,
+      [window, folder, listed, reason, again] { window->AskForDICOMSeries(folder, listed, reason, again); },
+      Qt::QueuedConnection);
+    throw Cancelled("waiting for the choice of a DICOM series");
+  }
+}
+
+void
+ViewerWindow::AskForDICOMSeries(const QString &                              path,
+                                const std::vector<DICOMSeriesSummary> &      series,
+                                const QString &                              reason,
+                                const std::function<void(const QString &)> & again)
+{
+  QStringList items;
+  for (const DICOMSeriesSummary & summary : series)
+  {
+    items << QString::fromStdString(DescribeDICOMSeries(summary));
+  }
+  auto * dialog = new QInputDialog(this);
+  dialog->setObjectName(QStringLiteral("dicomSeriesChoice"));
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  dialog->setWindowTitle(tr("Which DICOM series?"));
+  dialog->setLabelText((reason.isEmpty() ? QString() : reason + QStringLiteral("\n\n")) +
+                       tr("The folder %1 holds %2 series. Which one is the volume to read?")
+                         .arg(QDir::toNativeSeparators(path))
+                         .arg(series.size()));
+  dialog->setComboBoxItems(items);
+  dialog->setComboBoxEditable(false);
+  // The series with the most files first in view (the volume, most often; a scout has a few); the list shows each
+  // line whole, the closed box a part of it.
+  const auto largest =
+    std::max_element(series.begin(),
+                     series.end(),
+                     [](const DICOMSeriesSummary & a, const DICOMSeriesSummary & b) { return a.Files < b.Files; });
+  dialog->setTextValue(items[static_cast<int>(largest - series.begin())]);
+  if (auto * box = dialog->findChild<QComboBox *>())
+  {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(72);
+    box->view()->setMinimumWidth(box->view()->sizeHintForColumn(0));
+  }
+  dialog->setOkButtonText(tr("Read"));
+  connect(dialog,
+          &QInputDialog::textValueSelected,
+          this,
+          [items, series, again](const QString & text)
+          {
+            const int index = items.indexOf(text);
+            if (index >= 0)
+            {
+              again(QString::number(series[static_cast<std::size_t>(index)].Number));
+            }
+          });
+  dialog->open();
+  statusBar()->showMessage(
+    tr("%1 holds %2 DICOM series: choose one").arg(QFileInfo(path).fileName()).arg(series.size()), 10000);
 }
 
 void
@@ -148,7 +249,9 @@ ViewerWindow::OpenSegmentation(const QStringList & paths)
 }
 
 void
-ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringList & segmentation)
+ViewerWindow::OpenFilesWithSegmentation(const QString &     volume,
+                                        const QStringList & segmentation,
+                                        const QString &     series)
 {
   const std::string        volumePath = volume.toStdString();
   std::vector<std::string> files;
@@ -165,14 +268,20 @@ ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringLis
   }
   RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), absolute, true });
   m_Controller->LoadInputs(
-    [volumePath, files]
+    [this, volumePath, files, volume, segmentation, series]
     {
       std::vector<std::string> warnings;
       std::vector<std::string> descriptions;
-      auto                     volumeNode = ReadVolumeNode(volumePath);
+      VolumeReadReport         report;
+      auto                     volumeNode = ReadVolumeOrAsk(volumePath,
+                                        series,
+                                        report,
+                                        [this, volume, segmentation](const QString & chosen)
+                                        { OpenFilesWithSegmentation(volume, segmentation, chosen); });
       ReformationInputs        inputs =
         MakeSegmentationInputs(volumeNode, ReadSegmentationNode(files, warnings, descriptions));
       inputs.Warnings = warnings;
+      AddVolumeReport(inputs, report);
       return inputs;
     },
     tr("%1 and %2").arg(QFileInfo(volume).fileName(), names.join(QStringLiteral(", "))),

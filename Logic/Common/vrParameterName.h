@@ -27,6 +27,8 @@ constexpr const char * SlabThickness = "slab thickness";
 constexpr const char * SlabMode = "slab mode";
 constexpr const char * Window = "window";
 constexpr const char * Level = "level";
+/** Which series of a DICOM folder that holds several is read as the volume (vr::VolumeReadOptions). */
+constexpr const char * DICOMSeries = "DICOM series";
 /** The coordinate system (RAS or LPS) the centerlines were read in. */
 constexpr const char * CenterlineSpace = "centerline coordinate system";
 /** Centerline extraction from a segmentation (vr::CenterlineExtractionParameters). */

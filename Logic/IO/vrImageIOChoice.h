@@ -11,7 +11,7 @@ namespace vr::detail
 {
 /** ITK's choice of reader for \a path (itk::ImageIOFactory::CreateImageIO: the first registered ImageIO whose
  * CanReadFile says yes), except that GDCM is never asked: its CanReadFile parses the whole file, and Debian's GDCM
- * aborts the process on some corrupt files. DICOM is read from a folder, in a child process (vrDicomSeriesProcess.h).
+ * aborts the process on some corrupt files. DICOM is read from a folder, in a child process (vrDICOMSeriesProcess.h).
  * Null when no other ImageIO takes the file. */
 itk::ImageIOBase::Pointer
 CreateImageIOWithoutDICOM(const std::string & path);

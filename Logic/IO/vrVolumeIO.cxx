@@ -3,7 +3,7 @@
 
 #include "vrAtomicOutput.h"
 #include "vrAvailableMemory.h"
-#include "vrDicomSeriesProcess.h"
+#include "vrDICOMSeriesProcess.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
@@ -53,18 +53,18 @@ RequireFiniteVoxels(const TImage & volume, const std::string & where)
 }
 
 StoredVolume
-ReadDicomSeries(const std::string & folder)
+ReadDICOMSeries(const std::string & folder, const VolumeReadOptions & options, VolumeReadReport * report)
 {
-  const std::string        where = "volume folder " + folder;
-  VolumeImageType::Pointer volume = detail::ReadDicomSeriesInChildProcess(folder, where);
-  const auto               size = volume->GetLargestPossibleRegion().GetSize();
-  if (size[2] < 2)
+  const std::string       where = "volume folder " + folder;
+  detail::DICOMSeriesRead read = detail::ReadDICOMSeriesInChildProcess(folder, options.DICOMSeries, where);
+  RequireFiniteVoxels(*read.Volume, where);
+  if (report != nullptr)
   {
-    throw InputError(where + ": the DICOM series is a single 2D slice; a volume must be 3D");
+    report->Warnings.insert(report->Warnings.end(), read.Warnings.begin(), read.Warnings.end());
+    report->Notes.insert(report->Notes.end(), read.Notes.begin(), read.Notes.end());
   }
-  RequireFiniteVoxels(*volume, where);
   // The reader process hands over float intensities (each file's rescale applied).
-  return StoredVolume{ volume.GetPointer(), itk::CPRIntensityRescale() };
+  return StoredVolume{ read.Volume.GetPointer(), itk::CPRIntensityRescale() };
 }
 
 /** "64 x 64 x 32 x 5" */
@@ -335,19 +335,19 @@ ReadVolumeFile(const std::string & path)
 } // namespace
 
 StoredVolume
-ReadStoredVolume(const std::string & path)
+ReadStoredVolume(const std::string & path, const VolumeReadOptions & options, VolumeReadReport * report)
 {
   if (!IsURIName(path) && detail::CheckInputPath(path, "volume", true) == detail::InputKind::Folder)
   {
-    return ReadDicomSeries(path);
+    return ReadDICOMSeries(path, options, report);
   }
   return ReadVolumeFile(path);
 }
 
 VolumeImageType::Pointer
-ReadVolume(const std::string & path)
+ReadVolume(const std::string & path, const VolumeReadOptions & options, VolumeReadReport * report)
 {
-  return ConvertStoredVolumeToFloat(ReadStoredVolume(path));
+  return ConvertStoredVolumeToFloat(ReadStoredVolume(path, options, report));
 }
 
 void

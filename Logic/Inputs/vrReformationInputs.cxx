@@ -81,10 +81,17 @@ MakePhantomInputs(const std::string & name, double spacing)
 }
 
 vtkSmartPointer<VolumeNode>
-ReadVolumeNode(const std::string & path)
+ReadVolumeNode(const std::string & path, const VolumeReadOptions & options, VolumeReadReport * report)
 {
   // In the file's pixel type, the node sharing the voxels the reader put in memory.
-  return ConvertStoredVolumeToVolumeNode(ReadStoredVolume(path), path);
+  return ConvertStoredVolumeToVolumeNode(ReadStoredVolume(path, options, report), path);
+}
+
+void
+AddVolumeReport(ReformationInputs & inputs, const VolumeReadReport & report)
+{
+  inputs.Warnings.insert(inputs.Warnings.begin(), report.Warnings.begin(), report.Warnings.end());
+  inputs.Notes.insert(inputs.Notes.end(), report.Notes.begin(), report.Notes.end());
 }
 
 vtkSmartPointer<CenterlineNode>

@@ -5,6 +5,7 @@
 #include "itkCenterlineTree.h"
 #include "vrCenterlineNode.h"
 #include "vrIntensityWindow.h"
+#include "vrVolumeIO.h"
 #include "vrVolumeNode.h"
 
 #include <vtkSmartPointer.h>
@@ -35,9 +36,11 @@ struct ReformationInputs
   /** A vessel segmentation (mask, label map or level set, several files combined; vr::ReadSegmentation) whose
    * centerlines the logic extracts (VesselReformationLogic::SetSegmentationNode); null with a centerline node. */
   vtkSmartPointer<VolumeNode> Segmentation;
-  /** What reading the inputs warned about (a segmentation on another grid, resampled; most centerline points outside
-   * the volume), each in full. */
+  /** What reading the inputs warned about (a DICOM series' gap filled by interpolation, a duplicate file left out; a
+   * segmentation on another grid, resampled; most centerline points outside the volume), each in full. */
   std::vector<std::string> Warnings;
+  /** What reading them skipped and changes nothing (the entries of a DICOM folder that are no DICOM images). */
+  std::vector<std::string> Notes;
   /** The centerline node as the logic converts it (vr::ConvertCenterlineNodeToTree), LPS mm: the ids are the
    * owner labels' values, and each branch carries its name when the source gave one (the one source of names). */
   itk::CenterlineTree Tree;
@@ -75,9 +78,18 @@ MakePhantomInputs(const std::string & name, double spacing);
 /** Reads a volume (NRRD, NIfTI, MetaImage, or a DICOM series folder) into a volume node, in the pixel type of its
  * file (vr::ReadStoredVolume): the node holds the one copy of the voxels that the logic then samples.
  * \param path the file or folder.
- * \return the node. Throws vr::InputError naming the file (vr::ReadStoredVolume's messages). */
+ * \param options which DICOM series of a folder that holds several (vr::VolumeReadOptions).
+ * \param report receives the reader's warnings and notes, when given (vr::VolumeReadReport; see AddVolumeReport).
+ * \return the node. Throws vr::InputError naming the file (vr::ReadStoredVolume's messages), and
+ * vr::DICOMSeriesChoiceRequired, listing the series, for a folder of several without a choice. */
 vtkSmartPointer<VolumeNode>
-ReadVolumeNode(const std::string & path);
+ReadVolumeNode(const std::string &       path,
+               const VolumeReadOptions & options = VolumeReadOptions(),
+               VolumeReadReport *        report = nullptr);
+
+/** Puts what reading the volume reported into \a inputs: its warnings before theirs, its notes. */
+void
+AddVolumeReport(ReformationInputs & inputs, const VolumeReadReport & report);
 
 /** Reads centerlines in any format the logic reads (.vtp, .vtk, .mrk.json, .tre, .csv) into a centerline node.
  * \param path the file.

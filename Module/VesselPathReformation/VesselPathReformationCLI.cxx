@@ -4,6 +4,7 @@
 // It only collects parameters and files; vr::VesselPathLogic computes.
 
 #include "vrCLIModuleRunner.h"
+#include "vrCLIVolumeInput.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrInputError.h"
@@ -148,8 +149,8 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   }
   progress.Update(0.0, "reading");
   // The volume in its file's pixel type, read once and sampled where it lies.
-  const std::string      volumePath = arguments.String("inputVolume");
-  const vr::StoredVolume volume = vr::ReadStoredVolume(volumePath);
+  std::vector<std::string> inputWarnings;
+  const vr::StoredVolume   volume = vr::ReadModuleVolume(arguments, "inputVolume", progress, inputWarnings);
 
   vr::Segmentation segmentation;
   std::string      segmentationName;
@@ -161,6 +162,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
     {
       progress.Print(std::cerr, "warning: " + warning);
     }
+    inputWarnings.insert(inputWarnings.end(), warnings.begin(), warnings.end());
     segmentationName = "segmentation " + arguments.String("segmentation");
   }
 
@@ -228,6 +230,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   progress.SetReturnValue("pathLength", Number(results.Path.GetLength()));
   progress.SetReturnValue("sectionsOutsideSegmentation", std::to_string(results.Lumen.SectionsOutsideSegmentation));
   progress.SetReturnValue("foldedPixels", std::to_string(results.FoldedPixels));
+  progress.SetReturnValue("inputWarnings", vr::JoinedWarnings(inputWarnings));
 
   std::ostringstream summary;
   const auto &       chain = results.Path.GetBranchChain();

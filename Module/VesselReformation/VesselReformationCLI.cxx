@@ -5,6 +5,7 @@
 
 #include "vrCLIModuleRunner.h"
 #include "vrCLIRelaxParameters.h"
+#include "vrCLIVolumeInput.h"
 #include "vrCenterlineExtraction.h"
 #include "vrCenterlineIO.h"
 #include "vrFilterSettingsText.h"
@@ -143,8 +144,10 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
 
   // The volume in its file's pixel type, read once: the node, the logic's image and the resampler share its voxels.
   const std::string          volumePath = arguments.String("inputVolume");
+  std::vector<std::string>   inputWarnings;
   vr::VesselReformationLogic logic;
-  logic.SetVolumeNode(vr::ConvertStoredVolumeToVolumeNode(vr::ReadStoredVolume(volumePath), FileName(volumePath)));
+  logic.SetVolumeNode(vr::ConvertStoredVolumeToVolumeNode(
+    vr::ReadModuleVolume(arguments, "inputVolume", progress, inputWarnings), FileName(volumePath)));
   std::string source;
   if (fromSegmentation)
   {
@@ -155,6 +158,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     {
       progress.Print(std::cerr, "warning: " + warning);
     }
+    inputWarnings.insert(inputWarnings.end(), warnings.begin(), warnings.end());
     logic.SetSegmentationNode(vr::MakeSegmentationNode(segmentation));
     for (const auto & description : segmentation.Descriptions)
     {
@@ -231,6 +235,7 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   progress.SetReturnValue("relaxTime", Milliseconds(times.Relax));
   progress.SetReturnValue("resampleTime", Milliseconds(times.Resample));
   progress.SetReturnValue("surfaceTime", Milliseconds(times.Surface));
+  progress.SetReturnValue("inputWarnings", vr::JoinedWarnings(inputWarnings));
 
   std::ostringstream summary;
   summary << "VesselReformation: " << branches << " branches (" << source << "), view " << size[0] << " x " << size[1]

@@ -3,7 +3,9 @@
 // vrCLITestSupport.h).
 #include "vrCLITestSupport.h"
 
+#include <cctype>
 #include <functional>
+#include <sstream>
 
 namespace
 {
@@ -241,10 +243,35 @@ TEST_F(BadInputTest, FuzzFindingsInNIfTIHeaders)
   }
 }
 
+/** Checks that \a err holds the module's error alone: its line, and the lines of a list of series after it. */
+void
+ExpectOnlyTheModulesMessage(const std::string & err)
+{
+  std::istringstream lines(err);
+  std::string        line;
+  ASSERT_TRUE(std::getline(lines, line));
+  EXPECT_EQ(line.rfind("VesselReformation: error: ", 0), 0u) << err;
+  while (std::getline(lines, line))
+  {
+    EXPECT_TRUE(line.size() > 3 && line.rfind("  ", 0) == 0 && std::isdigit(static_cast<unsigned char>(line[2])))
+      << "only the module's message (and its list of series):\n"
+      << err;
+  }
+}
+
+/** Checks that a DICOM folder was read: no error of the reader's (a later error, the centerlines', may follow). */
+void
+ExpectTheSeriesRead(const std::string & err)
+{
+  EXPECT_FALSE(Contains(err, "DICOM file")) << err;
+  EXPECT_FALSE(Contains(err, "DICOM series")) << err;
+  EXPECT_FALSE(Contains(err, "error: volume folder")) << err;
+}
+
 /** Writes a 6 x 5 x \a slices series of short slices with ITK's GDCM IO into \a folder, as ITK's DICOM examples do,
  * slice z at (0, 0, 2z) mm, or at \a position(z) where that is not empty. */
 void
-WriteDicomSeries(const fs::path &                                   folder,
+WriteDICOMSeries(const fs::path &                                   folder,
                  unsigned int                                       slices = 4,
                  const std::function<std::string(unsigned int z)> & position = {})
 {
@@ -285,7 +312,7 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
   // Files of a DICOM series that made Debian's GDCM assert, i.e. abort the process (issue 25). Alone, dropped into a
   // good series, or named like a volume file: refused, naming the file, with no GDCM or ITK line on the terminal.
   const fs::path good = m_Folder / "series";
-  WriteDicomSeries(good);
+  WriteDICOMSeries(good);
   for (const char * finding : { "dicom-meta-explicit-assert/IM0018.dcm",
                                 "dicom-meta-implicit-assert/IM0009.dcm",
                                 "dicom-samples-per-pixel-assert/IM0017.dcm",
@@ -293,7 +320,7 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
                                 "dicom-bits-allocated-unhandled/IM0030.dcm",
                                 "dicom-acr-nema-assert/IM0027.dcm",
                                 // The mutation campaign's: a position GDCM reads leniently as another number, which
-                                // displaced the volume with no file named (vrDicomSliceGeometry.h).
+                                // displaced the volume with no file named (vrDICOMSliceGeometry.h).
                                 "dicom-position-byte-9f/IM0019.dcm",
                                 "dicom-position-byte-ff/IM0003.dcm",
                                 "dicom-position-dot-became-backslash/IM0024.dcm",
@@ -308,8 +335,8 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
       EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
     }
 
-    // In a good series: refused, naming it, where GDCM dies on it (the file of 50448 bits fails in ITK's read, and
-    // it belongs to another series than the good one, which is read without it).
+    // In a good series: nothing read, and the file named (refused, or GDCM died on it, or, as it belongs to another
+    // series than the good one's, listed as a second series of one file).
     if (std::string(finding).find("assert") != std::string::npos)
     {
       const fs::path mixed = m_Folder / ("mixed-" + name);
@@ -319,9 +346,9 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
         fs::copy_file(entry.path(), mixed / entry.path().filename());
       }
       fs::copy_file(file, mixed / name);
-      const RunResult run =
-        ExpectRejected({ mixed.string(), Centerlines() }, { (mixed / name).string(), "is not read" });
-      EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
+      const RunResult run = ExpectRejected({ mixed.string(), Centerlines() }, { (mixed / name).string() });
+      EXPECT_TRUE(Contains(run.Err, "is not read") || Contains(run.Err, "(nothing was read)")) << run.Err;
+      ExpectOnlyTheModulesMessage(run.Err);
     }
 
     const fs::path named = m_Folder / ("scan-" + name + ".nrrd");
@@ -335,14 +362,15 @@ TEST_F(BadInputTest, FuzzFindingsInDICOMSeries)
   const RunResult run =
     RunProgram({ ReformationExecutable, good.string(), Centerlines(), (m_Folder / "ok.nrrd").string() });
   EXPECT_FALSE(run.Crashed);
-  EXPECT_FALSE(Contains(run.Err, "DICOM")) << run.Err;
+  ExpectTheSeriesRead(run.Err);
   EXPECT_FALSE(Contains(run.Err, "GDCM")) << run.Err;
 }
 
 // Issue 25, sixth fuzzing round: a one-file folder (the dicom harness's input: each file a 4-byte little-endian length
-// and its bytes) on which GDCM asserts (gdcmAttribute.h:445) while it sorts the folder's files into series. The
-// message named the folder only; the reader process now sorts each file alone first, so the file is named. Alone and
-// in a good series, by the program and in the host's process.
+// and its bytes) on which GDCM asserted (gdcmAttribute.h:445) while it sorted the folder's files into series, and the
+// message named the folder only. Since issue 37 the reader process reads the attributes itself and GDCM sorts nothing:
+// the file is refused by its own fault (a Rescale Intercept without a Rescale Slope), named. Alone and in a good
+// series, by the program and in the host's process.
 TEST_F(BadInputTest, DICOMFileOnWhichGDCMsSeriesSortAsserts)
 {
   const std::string packed = ReadText(fs::path(VR_FUZZ_CORPUS_DIR) / "dicom" / "crash-gdcm-sort-attribute-assert");
@@ -356,8 +384,7 @@ TEST_F(BadInputTest, DICOMFileOnWhichGDCMsSeriesSortAsserts)
   const std::string file = (alone / "IM0001.dcm").string();
   Write("sort-assert/IM0001.dcm", packed.substr(4));
   {
-    const RunResult run = ExpectRejected({ alone.string(), Centerlines() },
-                                         { "the DICOM file " + file + " is corrupt", "gdcmAttribute.h", "not read" });
+    const RunResult run = ExpectRejected({ alone.string(), Centerlines() }, { "the DICOM file " + file, "not read" });
     EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
   }
   const RunResult library = RunInProcess(
@@ -367,9 +394,9 @@ TEST_F(BadInputTest, DICOMFileOnWhichGDCMsSeriesSortAsserts)
   EXPECT_EQ(ReadText(m_Folder / "cpr.nrrd"), "an earlier result that must survive");
 
   const fs::path mixed = m_Folder / "series-with-sort-assert";
-  WriteDicomSeries(mixed);
+  WriteDICOMSeries(mixed);
   fs::copy_file(file, mixed / "IM0001.dcm");
-  ExpectRejected({ mixed.string(), Centerlines() }, { "the DICOM file " + (mixed / "IM0001.dcm").string() });
+  ExpectRejected({ mixed.string(), Centerlines() }, { (mixed / "IM0001.dcm").string() });
 }
 
 // Issue 25, the DICOM mutation campaign: a file whose position GDCM read as another number moved the whole volume,
@@ -380,20 +407,20 @@ TEST_F(BadInputTest, DICOMSeriesWithAFileOffItsLineOfSlices)
   for (const unsigned int off : { 3u, 0u })
   {
     const fs::path folder = m_Folder / ("off-line-" + std::to_string(off));
-    WriteDicomSeries(
+    WriteDICOMSeries(
       folder, 8, [off](unsigned int z) { return (z == off ? "5\\0\\" : "0\\0\\") + std::to_string(2 * z); });
     const std::string file = (folder / ("slice" + std::to_string(off + 1) + ".dcm")).string();
-    const RunResult   run = ExpectRejected(
-      { folder.string(), Centerlines() },
-      { "the DICOM file " + file + " lies off the series' line of slices", "the series (8 files) is not read" });
+    const RunResult   run =
+      ExpectRejected({ folder.string(), Centerlines() },
+                     { "the DICOM file " + file + " lies off the series' line of slices", "the series is not read" });
     EXPECT_EQ(std::count(run.Err.begin(), run.Err.end(), '\n'), 1) << "only the module's message:\n" << run.Err;
   }
   // The same series in line is read (and then fails for want of overlap with the aorta's centerlines, not for DICOM).
   const fs::path good = m_Folder / "in-line";
-  WriteDicomSeries(good, 8);
+  WriteDICOMSeries(good, 8);
   const RunResult run =
     RunProgram({ ReformationExecutable, good.string(), Centerlines(), (m_Folder / "ok.nrrd").string() });
-  EXPECT_FALSE(Contains(run.Err, "DICOM")) << run.Err;
+  ExpectTheSeriesRead(run.Err);
 }
 
 TEST_F(BadInputTest, APNGNamedLikeAVolume)

@@ -1,6 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Fuzz harness: a DICOM folder read through vr::ReadVolume, as the modules read one: the series is scanned and read
-// in the child process vrReadDicomSeries (vrDicomSeriesProcess), which GDCM may abort or crash without taking the
+// in the child process vrReadDICOMSeries (vrDICOMSeriesProcess), which GDCM may abort or crash without taking the
 // caller with it. The input is a folder of up to four files, each as a 4-byte little-endian length and its bytes
 // (written as IM0001.dcm, ...). Its custom mutator works on DICOM elements: it walks one file's little-endian
 // elements (after the preamble; explicit VR where a VR is there, implicit else) and changes one: a value (numbers and

@@ -1,8 +1,10 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-#include "vrDicomSeriesProcess.h"
+#include "vrDICOMSeriesProcess.h"
 
 #include "itkMetaDataObject.h"
 
+#include "vrDICOMReaderReport.h"
+#include "vrDICOMSeriesChoice.h"
 #include "vrITKMessages.h"
 #include "vrInputError.h"
 
@@ -24,6 +26,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <vector>
@@ -36,7 +39,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-constexpr const char * HelperName = "vrReadDicomSeries";
+constexpr const char * HelperName = "vrReadDICOMSeries";
 
 bool
 IsExecutable(const fs::path & path)
@@ -222,10 +225,31 @@ CountFiles(const std::string & folder)
   }
   return count;
 }
+
+/** The volume the reader process handed over (today a MetaImage file in the scratch folder). */
+VolumeImageType::Pointer
+ReceiveVolume(const fs::path & output, const std::string & where)
+{
+  auto reader = itk::ImageFileReader<VolumeImageType>::New();
+  reader->SetImageIO(itk::MetaImageIO::New());
+  reader->SetFileName(output.string());
+  try
+  {
+    const ScopedConsoleCapture console;
+    reader->Update();
+  }
+  catch (const itk::ExceptionObject & exception)
+  {
+    throw InputError(where + ": the DICOM reader process handed over no volume: " + CondenseITKMessage(exception));
+  }
+  VolumeImageType::Pointer volume = reader->GetOutput();
+  volume->DisconnectPipeline();
+  return volume;
+}
 } // namespace
 
 double
-DicomSeriesTimeoutSeconds(std::size_t fileCount)
+DICOMSeriesTimeoutSeconds(std::size_t fileCount)
 {
   if (const char * configured = std::getenv("VR_DICOM_SERIES_TIMEOUT"))
   {
@@ -242,7 +266,7 @@ DicomSeriesTimeoutSeconds(std::size_t fileCount)
 }
 
 std::string
-DicomSeriesReaderPath()
+DICOMSeriesReaderPath()
 {
   if (const char * configured = std::getenv("VR_DICOM_SERIES_READER"))
   {
@@ -250,7 +274,7 @@ DicomSeriesReaderPath()
   }
   std::vector<fs::path> bases;
   Dl_info               info{};
-  if (::dladdr(reinterpret_cast<void *>(&DicomSeriesReaderPath), &info) != 0 && info.dli_fname != nullptr)
+  if (::dladdr(reinterpret_cast<void *>(&DICOMSeriesReaderPath), &info) != 0 && info.dli_fname != nullptr)
   {
     std::error_code error;
     bases.push_back(fs::canonical(info.dli_fname, error).parent_path());
@@ -283,10 +307,10 @@ DicomSeriesReaderPath()
   return std::string();
 }
 
-VolumeImageType::Pointer
-ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & where)
+DICOMSeriesRead
+ReadDICOMSeriesInChildProcess(const std::string & folder, const std::string & series, const std::string & where)
 {
-  const std::string helper = DicomSeriesReaderPath();
+  const std::string helper = DICOMSeriesReaderPath();
   if (helper.empty())
   {
     throw InputError(where + ": cannot read DICOM: the reader process " + std::string(HelperName) +
@@ -298,48 +322,89 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
     throw InputError(where + ": cannot read DICOM: no temporary folder could be made for the reader process");
   }
   const fs::path    output = scratch.Path() / "series.mha";
-  const fs::path    progress = scratch.Path() / "progress.txt";
+  const fs::path    report = scratch.Path() / "report.txt";
   const fs::path    messages = scratch.Path() / "messages.txt";
   const std::size_t fileCount = CountFiles(folder);
   double            timeout = 0.0;
   try
   {
-    timeout = DicomSeriesTimeoutSeconds(fileCount);
+    timeout = DICOMSeriesTimeoutSeconds(fileCount);
   }
   catch (const InputError & error)
   {
     throw InputError(where + ": " + error.what());
   }
+  std::vector<std::string> arguments{ folder, output.string(), report.string() };
+  if (!series.empty())
+  {
+    arguments.push_back(series);
+  }
   int       spawnError = 0;
   bool      timedOut = false;
-  const int status =
-    RunHelper(helper, { folder, output.string(), progress.string() }, messages, timeout, spawnError, timedOut);
+  const int status = RunHelper(helper, arguments, messages, timeout, spawnError, timedOut);
   if (status < 0)
   {
     throw InputError(where + ": cannot start the DICOM reader process " + helper + ": " + std::strerror(spawnError));
   }
-  const std::vector<std::string> lines = Lines(progress);
-  std::string                    lastFile;
-  std::size_t                    errorLine = lines.size();
-  std::string                    step = "starting"; // what the child was doing when it stopped, if not a file
+
+  // The report, line by line (vrDICOMReaderReport.h).
+  const std::vector<std::string>                   lines = Lines(report);
+  DICOMSeriesRead                                  read;
+  std::vector<DICOMSeriesSummary>                  listed;
+  std::vector<std::pair<std::string, std::string>> identity;
+  std::string                                      lastFile;
+  std::string step = "starting"; // what the child was doing when it stopped, if not a file
+  std::string errorKind;
+  std::string errorText;
+  auto        after = [](const std::string & line, const char * word) -> std::optional<std::string>
+  {
+    const std::string prefix = std::string(word) + " ";
+    return line.rfind(prefix, 0) == 0 ? std::optional<std::string>(line.substr(prefix.size())) : std::nullopt;
+  };
   for (std::size_t k = 0; k < lines.size(); ++k)
   {
-    if (lines[k].rfind("file ", 0) == 0)
+    if (const auto file = after(lines[k], "file"))
     {
-      lastFile = lines[k].substr(5);
+      lastFile = *file;
       step.clear();
     }
-    else if (lines[k] == "scan")
+    else if (const auto next = after(lines[k], "step"))
     {
-      step = "sorting the folder's files into series";
+      step = *next == "choose"   ? "sorting the folder's files into series"
+             : *next == "write"  ? "handing the series it read over"
+             : *next == "decode" ? "placing the series' slices"
+                                 : "examining the folder";
     }
-    else if (lines[k] == "write")
+    else if (const auto warning = after(lines[k], "warning"))
     {
-      step = "handing the series it read over";
+      read.Warnings.push_back(where + ": " + *warning);
     }
-    else if (lines[k].rfind("error ", 0) == 0)
+    else if (const auto note = after(lines[k], "note"))
     {
-      errorLine = k;
+      read.Notes.push_back(where + ": " + *note);
+    }
+    else if (const auto line = after(lines[k], "series"))
+    {
+      if (const auto summary = ParseSeriesReportLine(*line))
+      {
+        listed.push_back(*summary);
+      }
+    }
+    else if (const auto pair = after(lines[k], "identity"))
+    {
+      const auto tab = pair->find('\t');
+      if (tab != std::string::npos)
+      {
+        identity.emplace_back(pair->substr(0, tab), pair->substr(tab + 1));
+      }
+    }
+    else if (const auto kind = after(lines[k], "error"))
+    {
+      errorKind = *kind;
+      for (std::size_t m = k + 1; m < lines.size(); ++m)
+      {
+        errorText += (m == k + 1 ? "" : " ") + lines[m];
+      }
       break;
     }
   }
@@ -353,30 +418,26 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
                      "; VR_DICOM_SERIES_TIMEOUT may set another bound) and was stopped while " + doing +
                      "; the series is not read");
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 1 && errorLine < lines.size())
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 1 && !errorKind.empty())
   {
-    std::string description;
-    for (std::size_t k = errorLine + 1; k < lines.size(); ++k)
+    if (errorKind == "choose" || errorKind == "choice")
     {
-      description += (k == errorLine + 1 ? "" : "\n") + lines[k];
+      std::string list;
+      for (const DICOMSeriesSummary & summary : listed)
+      {
+        list += "\n  " + DescribeDICOMSeries(summary);
+      }
+      const std::string why = errorKind == "choose" ? "holds " + std::to_string(listed.size()) +
+                                                        " DICOM series; choose one, by its number or its Series "
+                                                        "Instance UID (nothing was read)"
+                                                    : errorText;
+      throw DICOMSeriesChoiceRequired(where + ": " + why + ":" + list, listed);
     }
-    const std::string what = lines[errorLine].substr(6);
-    const std::string text = CondenseITKMessage(itk::ExceptionObject(__FILE__, __LINE__, description.c_str()));
-    if (what == "scan")
+    if (errorKind == "write")
     {
-      throw InputError(where + ": cannot scan for DICOM files: " + text);
+      throw InputError(where + ": the DICOM series was read but could not be handed over: " + errorText);
     }
-    if (what.rfind("read ", 0) == 0)
-    {
-      const std::string files = what.substr(5);
-      throw InputError(where + ": the DICOM file " + lastFile + " cannot be read: " + text + "; the series (" + files +
-                       (files == "1" ? " file" : " files") + ") is not read: remove or replace that file");
-    }
-    if (what == "write")
-    {
-      throw InputError(where + ": the DICOM series was read but could not be handed over: " + text);
-    }
-    throw InputError(where + ": " + text);
+    throw InputError(where + ": " + errorText);
   }
   if (!(WIFEXITED(status) && WEXITSTATUS(status) == 0))
   {
@@ -391,30 +452,14 @@ ReadDicomSeriesInChildProcess(const std::string & folder, const std::string & wh
     }
     throw InputError(where + ": GDCM's reader died " + step + detail + "; the series is not read");
   }
-  auto reader = itk::ImageFileReader<VolumeImageType>::New();
-  reader->SetImageIO(itk::MetaImageIO::New());
-  reader->SetFileName(output.string());
-  try
+  read.Volume = ReceiveVolume(output, where);
+  for (const auto & [key, value] : identity)
   {
-    const ScopedConsoleCapture console;
-    reader->Update();
-  }
-  catch (const itk::ExceptionObject & exception)
-  {
-    throw InputError(where + ": the DICOM reader process handed over no volume: " + CondenseITKMessage(exception));
-  }
-  VolumeImageType::Pointer volume = reader->GetOutput();
-  volume->DisconnectPipeline();
-  // The first file's patient and study (vr::DICOMAttribute keys), which the node conversion turns into attributes.
-  std::ifstream identity(output.string() + ".identity");
-  for (std::string line; std::getline(identity, line);)
-  {
-    const auto tab = line.find('\t');
-    if (tab != std::string::npos && line.rfind("DICOM.", 0) == 0)
+    if (key.rfind("DICOM.", 0) == 0)
     {
-      itk::EncapsulateMetaData<std::string>(volume->GetMetaDataDictionary(), line.substr(0, tab), line.substr(tab + 1));
+      itk::EncapsulateMetaData<std::string>(read.Volume->GetMetaDataDictionary(), key, value);
     }
   }
-  return volume;
+  return read;
 }
 } // namespace vr::detail

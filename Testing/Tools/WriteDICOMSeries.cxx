@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// WriteDicomSeries <volume> <folder> [slices] [--time-read]: writes a volume (any format vr::ReadVolume reads) as a
+// WriteDICOMSeries <volume> <folder> [slices] [--time-read]: writes a volume (any format vr::ReadVolume reads) as a
 // CT DICOM series of 16-bit slices with ITK's GDCM IO, one file per slice, as ITK's DICOM examples do; with
 // [slices], resampled (linearly) to that many slices along its third axis first. Used by
 // scripts/dicom-mutation-campaign.sh (the series it mutates) and to measure the DICOM reader on a long series:
@@ -126,7 +126,7 @@ main(int argc, char * argv[])
 {
   if (argc < 3)
   {
-    std::cerr << "usage: WriteDicomSeries <volume> <folder> [slices] [--time-read]\n";
+    std::cerr << "usage: WriteDICOMSeries <volume> <folder> [slices] [--time-read]\n";
     return 2;
   }
   gdcm::Trace::SetWarning(false);
@@ -157,7 +157,7 @@ main(int argc, char * argv[])
   }
   catch (const std::exception & error)
   {
-    std::cerr << "WriteDicomSeries: " << error.what() << "\n";
+    std::cerr << "WriteDICOMSeries: " << error.what() << "\n";
     return 1;
   }
   return 0;
