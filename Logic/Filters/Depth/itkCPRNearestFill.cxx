@@ -12,6 +12,8 @@ namespace itk::detail
 namespace
 {
 constexpr int32_t None = -1;
+/** Columns per task of the column pass: its rows are read and written as contiguous runs of this many pixels. */
+constexpr SizeValueType ColumnsPerTask = 64;
 
 /** Candidate order: distance, then depth (nearer the viewer), then owner. */
 bool
@@ -48,72 +50,102 @@ FillFromNearestSeeds(SizeValueType             width,
                              << " image (no vessel footprint reaches it); check the view centre, size and "
                                 "spacing");
   }
-  workspace.ColumnWinner.assign(count, None);
-  workspace.ColumnDistance.assign(count, std::numeric_limits<double>::infinity());
-  int32_t * const columnWinner = workspace.ColumnWinner.data();
-  double * const  columnDistance = workspace.ColumnDistance.data();
+  workspace.ColumnWinner.resize(count);
+  int32_t * const winner = workspace.ColumnWinner.data();
   const double    sx = spacing[0];
   const double    sy = spacing[1];
 
-  // Pass 1, per column: the nearest seed of the column (its row) and the squared vertical distance in mm^2.
+  // Pass 1, per column (in runs of ColumnsPerTask, row by row): the nearest seed of the column, by the order of
+  // Precedes with the vertical distance. Adding one horizontal term to every candidate of a column keeps this order,
+  // so the 2D nearest seed is the best of the column winners.
+  const SizeValueType tasks = (width + ColumnsPerTask - 1) / ColumnsPerTask;
   threader->ParallelizeArray(
     0,
-    width,
-    [&](SizeValueType column)
+    tasks,
+    [&](SizeValueType task)
     {
-      auto    at = [&](long row) { return static_cast<std::size_t>(row) * width + column; };
-      int32_t upper = None;
-      for (long row = 0; row < rows; ++row)
+      const long first = static_cast<long>(task * ColumnsPerTask);
+      const long last = std::min(columns, first + static_cast<long>(ColumnsPerTask));
+      int32_t    lower[ColumnsPerTask];
+      for (long column = first; column < last; ++column)
       {
-        upper = owner[at(row)] != 0 ? static_cast<int32_t>(row) : upper;
-        columnWinner[at(row)] = upper;
+        const std::size_t k = static_cast<std::size_t>(column);
+        winner[k] = owner[k] != 0 ? 0 : None;
       }
-      int32_t lower = None;
+      for (long row = 1; row < rows; ++row)
+      {
+        const std::size_t line = static_cast<std::size_t>(row) * width;
+        for (long column = first; column < last; ++column)
+        {
+          const std::size_t k = line + column;
+          winner[k] = owner[k] != 0 ? static_cast<int32_t>(row) : winner[k - width];
+        }
+      }
+      std::fill_n(lower, last - first, None);
       for (long row = rows - 1; row >= 0; --row)
       {
-        lower = owner[at(row)] != 0 ? static_cast<int32_t>(row) : lower;
-        int32_t chosen = columnWinner[at(row)];
-        if (chosen == None || (lower != None && Precedes((lower - row) * sy,
-                                                         depth[at(lower)],
-                                                         owner[at(lower)],
-                                                         (row - chosen) * sy,
-                                                         depth[at(chosen)],
-                                                         owner[at(chosen)])))
+        const std::size_t line = static_cast<std::size_t>(row) * width;
+        for (long column = first; column < last; ++column)
         {
-          chosen = lower;
-        }
-        columnWinner[at(row)] = chosen;
-        if (chosen != None)
-        {
-          const double dy = (row - chosen) * sy;
-          columnDistance[at(row)] = dy * dy;
+          const std::size_t k = line + column;
+          int32_t &         below = lower[column - first];
+          below = owner[k] != 0 ? static_cast<int32_t>(row) : below;
+          const int32_t above = winner[k];
+          if (below == None || below == above)
+          {
+            continue;
+          }
+          // Whole rows apart on one spacing: the distances compare as integers; only a tie reads the seeds.
+          const long toBelow = below - row;
+          const long toAbove = row - above;
+          if (above == None || toBelow < toAbove)
+          {
+            winner[k] = below;
+          }
+          else if (toBelow == toAbove)
+          {
+            const std::size_t a = static_cast<std::size_t>(above) * width + column;
+            const std::size_t b = static_cast<std::size_t>(below) * width + column;
+            if (Precedes(0.0, depth[b], owner[b], 0.0, depth[a], owner[a]))
+            {
+              winner[k] = below;
+            }
+          }
         }
       }
     },
     nullptr);
 
-  // Pass 2, per row: the lower envelope of g_q(x) = ((x - q) sx)^2 + f(q) over the columns q with a winner.
+  // Pass 2, per row: the lower envelope of g_q(x) = sx^2 (x - q)^2 + f(q) over the columns q with a winner, f(q) the
+  // squared vertical distance to it; intersections from h(q) = f(q) + sx^2 q^2.
+  const double sx2 = sx * sx;
   threader->ParallelizeArray(
     0,
     height,
-    [&](SizeValueType row)
+    [&](SizeValueType rowIndex)
     {
-      const std::size_t   first = row * width;
-      std::vector<long>   envelope(width);
-      std::vector<double> boundary(width + 1);
-      const auto          f = [&](long q) { return columnDistance[first + q]; };
-      const auto          intersection = [&](long p, long q)
-      { return ((f(q) + sx * sx * q * q) - (f(p) + sx * sx * p * p)) / (2.0 * sx * sx * (q - p)); };
-      long parabolas = 0;
+      thread_local std::vector<long>   envelope;
+      thread_local std::vector<double> heights;
+      thread_local std::vector<double> boundary;
+      envelope.resize(width);
+      heights.resize(width);
+      boundary.resize(width + 1);
+      const long        row = static_cast<long>(rowIndex);
+      const std::size_t first = rowIndex * width;
+      long              parabolas = 0;
       for (long q = 0; q < columns; ++q)
       {
-        if (columnWinner[first + q] == None)
+        const int32_t seedRow = winner[first + q];
+        if (seedRow == None)
         {
           continue;
         }
+        const double dy = (row - seedRow) * sy;
+        const double hq = dy * dy + sx2 * q * q;
         if (parabolas == 0)
         {
           envelope[0] = q;
+          heights[0] = hq;
           boundary[0] = -std::numeric_limits<double>::infinity();
           boundary[1] = std::numeric_limits<double>::infinity();
           parabolas = 1;
@@ -121,24 +153,26 @@ FillFromNearestSeeds(SizeValueType             width,
         }
         // A parabola that only ties the envelope at one point stays (strictly below pops), so that a tie at a
         // pixel finds every candidate among the envelope's neighbours there.
-        double s = intersection(envelope[parabolas - 1], q);
+        double s = (hq - heights[parabolas - 1]) / (2.0 * sx2 * (q - envelope[parabolas - 1]));
         while (parabolas > 1 && s < boundary[parabolas - 1] - 1e-9 * (1.0 + std::abs(s)))
         {
           --parabolas;
-          s = intersection(envelope[parabolas - 1], q);
+          s = (hq - heights[parabolas - 1]) / (2.0 * sx2 * (q - envelope[parabolas - 1]));
         }
         envelope[parabolas] = q;
+        heights[parabolas] = hq;
         boundary[parabolas] = s;
         boundary[parabolas + 1] = std::numeric_limits<double>::infinity();
         ++parabolas;
       }
 
       const auto source = [&](long q)
-      { return static_cast<std::size_t>(columnWinner[first + q]) * width + static_cast<std::size_t>(q); };
-      const auto distance = [&](long x, long q)
+      { return static_cast<std::size_t>(winner[first + q]) * width + static_cast<std::size_t>(q); };
+      const auto distance = [&](long x, long k)
       {
-        const double dx = (x - q) * sx;
-        return dx * dx + f(q);
+        const double dx = (x - envelope[k]) * sx;
+        const double dy = (row - winner[first + envelope[k]]) * sy;
+        return dx * dx + dy * dy;
       };
       long k = 0;
       for (long x = 0; x < columns; ++x)
@@ -152,25 +186,34 @@ FillFromNearestSeeds(SizeValueType             width,
         {
           continue;
         }
-        // The envelope's neighbours may tie with its choice at x: the order of candidates decides.
-        long   best = envelope[k];
-        double bestDistance = distance(x, best);
-        for (long neighbour = std::max(0L, k - 2); neighbour <= std::min(parabolas - 1, k + 2); ++neighbour)
+        long best = k;
+        // Within a pixel of the ends of the envelope's interval, its neighbours may tie with its choice: Precedes
+        // decides, as Nearest mode orders candidates.
+        if (x - boundary[k] < 1.0 || boundary[k + 1] - x < 1.0)
         {
-          if (neighbour == k)
+          double bestDistance = distance(x, k);
+          for (long neighbour = std::max(0L, k - 2); neighbour <= std::min(parabolas - 1, k + 2); ++neighbour)
           {
-            continue;
-          }
-          const long   q = envelope[neighbour];
-          const double d = distance(x, q);
-          if (Precedes(d, depth[source(q)], owner[source(q)], bestDistance, depth[source(best)], owner[source(best)]))
-          {
-            best = q;
-            bestDistance = d;
+            if (neighbour == k)
+            {
+              continue;
+            }
+            const double d = distance(x, neighbour);
+            if (d < bestDistance || (d == bestDistance && Precedes(d,
+                                                                   depth[source(envelope[neighbour])],
+                                                                   owner[source(envelope[neighbour])],
+                                                                   bestDistance,
+                                                                   depth[source(envelope[best])],
+                                                                   owner[source(envelope[best])])))
+            {
+              best = neighbour;
+              bestDistance = d;
+            }
           }
         }
-        depth[pixel] = depth[source(best)];
-        owner[pixel] = owner[source(best)];
+        const std::size_t from = source(envelope[best]);
+        depth[pixel] = depth[from];
+        owner[pixel] = owner[from];
       }
     },
     nullptr);

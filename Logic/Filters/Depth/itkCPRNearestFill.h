@@ -14,8 +14,8 @@ namespace itk::detail
 /** The buffers of FillFromNearestSeeds, kept between updates. */
 struct CPRNearestFillWorkspace
 {
+  /** Per pixel, the row of the nearest seed in its column (-1: none). */
   std::vector<int32_t> ColumnWinner;
-  std::vector<double>  ColumnDistance;
 };
 
 /** Gives every pixel whose \a owner is 0 the depth and owner of the nearest pixel whose owner is not 0 (a seed),

@@ -15,21 +15,34 @@ namespace
 constexpr float Infinity = std::numeric_limits<float>::infinity();
 
 /** Collects the footprint samples of every segment into the workspace: the visible lumen per pixel, the nearest back,
- * and the list the hidden-label pass reads again. */
+ * and the nearest lumen wholly behind the visible one. */
 class FootprintCollector
 {
 public:
+  /** Collects into the rows [\a firstRow, \a endRow) of the workspace. */
   FootprintCollector(CPRVisibilityWorkspace &      workspace,
                      const CPRCenterlinePixels &   pixels,
                      const Vector<double, 2> &     spacing,
-                     const std::vector<uint32_t> & ids)
+                     const std::vector<uint32_t> & ids,
+                     long                          firstRow,
+                     long                          endRow)
     : m_Workspace(workspace)
     , m_Pixels(pixels)
     , m_Width(static_cast<long>(pixels.Width))
-    , m_Height(static_cast<long>(pixels.Height))
     , m_Spacing(spacing)
     , m_Ids(ids)
+    , m_FirstRow(firstRow)
+    , m_EndRow(endRow)
   {
+  }
+
+  /** Whether the segment from \a a to \a b, with its lumen reach \a reach (mm), can touch the band's rows. */
+  bool
+  Reaches(const CPRProjectedPoint & a, const CPRProjectedPoint & b, double reach) const
+  {
+    const double rows = reach / m_Spacing[1] + 1.0;
+    return std::max(a.Row, b.Row) + rows >= static_cast<double>(m_FirstRow) &&
+           std::min(a.Row, b.Row) - rows <= static_cast<double>(m_EndRow - 1);
   }
 
   /** The footprint of the segment from \a a to \a b of branch \a branch: lumen (radii \a ra, \a rb in mm, 0 without)
@@ -45,6 +58,10 @@ public:
     AddLumen(a, b, ra, rb, branch, tolerance);
     const auto cell = [&](long column, long row, double t)
     {
+      if (row < m_FirstRow || row >= m_EndRow)
+      {
+        return;
+      }
       const double depth = a.Depth + t * (b.Depth - a.Depth);
       const double radius = ra + t * (rb - ra);
       const auto   k = static_cast<std::size_t>(row * m_Width + column);
@@ -62,7 +79,7 @@ public:
       {
         const long column = CellOf(end->Column);
         const long row = CellOf(end->Row);
-        if (column >= 0 && row >= 0 && column < m_Width && row < m_Height)
+        if (column >= 0 && row >= m_FirstRow && column < m_Width && row < m_EndRow)
         {
           // The ends' own values, as the rasteriser deposits them.
           const auto   k = static_cast<std::size_t>(row * m_Width + column);
@@ -77,7 +94,11 @@ public:
       }
       return;
     }
-    TraverseSegmentCells(a, b, m_Pixels.Width, m_Pixels.Height, cell);
+    if (std::max(a.Row, b.Row) + 1.0 >= static_cast<double>(m_FirstRow) &&
+        std::min(a.Row, b.Row) - 1.0 <= static_cast<double>(m_EndRow - 1))
+    {
+      TraverseSegmentCells(a, b, m_Pixels.Width, m_Pixels.Height, cell);
+    }
   }
 
 private:
@@ -103,10 +124,11 @@ private:
     const double dx = (b.Column - a.Column) * sx;
     const double dy = (b.Row - a.Row) * sy;
     const double lengthSquared = dx * dx + dy * dy;
-    const double lastRow = static_cast<double>(m_Height - 1);
+    const double firstRow = static_cast<double>(m_FirstRow);
+    const double lastRow = static_cast<double>(m_EndRow - 1);
     const double lastColumn = static_cast<double>(m_Width - 1);
-    const double rowLow = std::clamp(std::ceil((std::min(ay, ay + dy) - reach) / sy), 0.0, lastRow + 1.0);
-    const double rowHigh = std::clamp(std::floor((std::max(ay, ay + dy) + reach) / sy), -1.0, lastRow);
+    const double rowLow = std::clamp(std::ceil((std::min(ay, ay + dy) - reach) / sy), firstRow, lastRow + 1.0);
+    const double rowHigh = std::clamp(std::floor((std::max(ay, ay + dy) + reach) / sy), firstRow - 1.0, lastRow);
     for (long row = static_cast<long>(rowLow); row <= static_cast<long>(rowHigh); ++row)
     {
       const double y = row * sy;
@@ -167,30 +189,75 @@ private:
   {
     CPRVisibilityWorkspace & w = m_Workspace;
     const auto               back = static_cast<float>(depth + radius);
-    w.Back[k] = std::min(w.Back[k], back);
-    const auto keyValue = static_cast<float>(key);
-    const auto depthValue = static_cast<float>(depth);
-    // Where the ray meets the lumen first; then the nearer centerline; then the smaller id (as the rasteriser).
-    const uint32_t current = w.Branch[k];
-    if (current == 0 || keyValue < w.Key[k] ||
-        (keyValue == w.Key[k] &&
-         (depthValue < w.Depth[k] || (depthValue == w.Depth[k] && m_Ids[branch] < m_Ids[current - 1]))))
+    const auto               keyValue = static_cast<float>(key);
+    const auto               depthValue = static_cast<float>(depth);
+    const auto               frontValue = static_cast<float>(front);
+    const uint32_t           current = w.Branch[k];
+    if (current == 0)
     {
+      w.Back[k] = back;
       w.Key[k] = keyValue;
       w.Depth[k] = depthValue;
       w.Radius[k] = static_cast<float>(radius);
+      w.Front[k] = frontValue;
       w.Branch[k] = branch + 1;
+      w.HiddenBranch[k] = 0;
+      return;
     }
-    w.Samples.push_back({ static_cast<uint32_t>(k), branch, keyValue, depthValue, static_cast<float>(front) });
+    w.Back[k] = std::min(w.Back[k], back);
+    // Where the ray meets the lumen first; then the nearer centerline; then the smaller id (as the rasteriser).
+    if (keyValue < w.Key[k] ||
+        (keyValue == w.Key[k] &&
+         (depthValue < w.Depth[k] || (depthValue == w.Depth[k] && m_Ids[branch] < m_Ids[current - 1]))))
+    {
+      // The new visible lumen: the one it replaces is the nearest behind it if it lies wholly behind it (it had the
+      // best key so far); else the lumen behind stays if it is still wholly behind.
+      if (IsBehind(w.Front[k], back))
+      {
+        w.HiddenKey[k] = w.Key[k];
+        w.HiddenDepth[k] = w.Depth[k];
+        w.HiddenFront[k] = w.Front[k];
+        w.HiddenBranch[k] = current;
+      }
+      else if (w.HiddenBranch[k] != 0 && !IsBehind(w.HiddenFront[k], back))
+      {
+        w.HiddenBranch[k] = 0;
+      }
+      w.Key[k] = keyValue;
+      w.Depth[k] = depthValue;
+      w.Radius[k] = static_cast<float>(radius);
+      w.Front[k] = frontValue;
+      w.Branch[k] = branch + 1;
+      return;
+    }
+    if (!IsBehind(frontValue, w.Depth[k] + w.Radius[k]))
+    {
+      return;
+    }
+    const uint32_t hidden = w.HiddenBranch[k];
+    if (hidden == 0 || keyValue < w.HiddenKey[k] ||
+        (keyValue == w.HiddenKey[k] &&
+         (depthValue < w.HiddenDepth[k] || (depthValue == w.HiddenDepth[k] && m_Ids[branch] < m_Ids[hidden - 1]))))
+    {
+      w.HiddenKey[k] = keyValue;
+      w.HiddenDepth[k] = depthValue;
+      w.HiddenFront[k] = frontValue;
+      w.HiddenBranch[k] = branch + 1;
+    }
   }
 
   CPRVisibilityWorkspace &      m_Workspace;
   const CPRCenterlinePixels &   m_Pixels;
   long                          m_Width;
-  long                          m_Height;
   Vector<double, 2>             m_Spacing;
   const std::vector<uint32_t> & m_Ids;
+  long                          m_FirstRow;
+  long                          m_EndRow;
 };
+
+/** Rows per band of the footprint pass: each band's pixels are written by one task, in the tree's order of
+ * segments, so the result does not depend on the number of threads. */
+constexpr long RowsPerBand = 32;
 
 double
 Distance3D(const CenterlineBranch::PointType & a, const CenterlineBranch::PointType & b)
@@ -215,16 +282,15 @@ AssignVisibility(const CenterlineTree &            tree,
   const Vector<double, 2>  spacing = view.GetSpacing();
   const double             pixelSize = std::max(spacing[0], spacing[1]);
   CPRVisibilityWorkspace & w = workspace;
-  w.Key.assign(count, Infinity);
-  w.Depth.assign(count, 0.0f);
-  w.Radius.assign(count, 0.0f);
+  // Written before they are read (Offer() starts a pixel when its Branch is 0; CellFront is set on every centerline
+  // pixel): only Branch is cleared.
+  for (std::vector<float> * values :
+       { &w.Key, &w.Depth, &w.Radius, &w.Front, &w.Back, &w.CellFront, &w.HiddenKey, &w.HiddenDepth, &w.HiddenFront })
+  {
+    values->resize(count);
+  }
   w.Branch.assign(count, 0);
-  w.Back.assign(count, Infinity);
-  w.CellFront.assign(count, -Infinity);
-  w.HiddenKey.assign(count, Infinity);
-  w.HiddenDepth.assign(count, Infinity);
   w.HiddenBranch.assign(count, 0);
-  w.Samples.clear();
 
   std::vector<uint32_t>      ids;
   std::vector<unsigned char> hasRadii;
@@ -233,10 +299,17 @@ AssignVisibility(const CenterlineTree &            tree,
     ids.push_back(static_cast<uint32_t>(branch.Id));
     hasRadii.push_back(branch.HasRadii() ? 1 : 0);
   }
-
-  // Every segment's footprint, branch by branch.
-  FootprintCollector collector(w, pixels, spacing, ids);
-  const auto         radiusOf = [&](std::size_t branch, const CPRProjectedPoint & p)
+  // Every branch projected once, one after another.
+  w.Projected.clear();
+  w.FirstPoint.assign(1, 0);
+  std::vector<CPRProjectedPoint> projected;
+  for (const auto & branch : tree.GetBranches())
+  {
+    ProjectBranch(branch, view, projected);
+    w.Projected.insert(w.Projected.end(), projected.begin(), projected.end());
+    w.FirstPoint.push_back(w.Projected.size());
+  }
+  const auto radiusOf = [&](std::size_t branch, const CPRProjectedPoint & p)
   { return hasRadii[branch] ? p.Radius : 0.0; };
   const auto tolerance = [&](std::size_t branch, const CPRProjectedPoint & a, const CPRProjectedPoint & b)
   {
@@ -245,55 +318,51 @@ AssignVisibility(const CenterlineTree &            tree,
     return SelfOcclusionTolerance(
       b.Depth - a.Depth, std::sqrt(dx * dx + dy * dy), pixelSize + std::max(radiusOf(branch, a), radiusOf(branch, b)));
   };
-  for (std::size_t b = 0; b < tree.GetNumberOfBranches(); ++b)
-  {
-    ProjectBranch(tree.GetBranches()[b], view, w.Projected);
-    const auto & p = w.Projected;
-    const auto   branch = static_cast<uint32_t>(b);
-    if (p.size() == 1)
-    {
-      collector.AddSegment(p[0], p[0], radiusOf(b, p[0]), radiusOf(b, p[0]), branch, 0.0);
-    }
-    for (std::size_t i = 0; i + 1 < p.size(); ++i)
-    {
-      collector.AddSegment(
-        p[i], p[i + 1], radiusOf(b, p[i]), radiusOf(b, p[i + 1]), branch, tolerance(b, p[i], p[i + 1]));
-    }
-  }
 
-  // The nearest lumen wholly behind the visible one, per pixel.
-  for (const CPRFootprintSample & sample : w.Samples)
-  {
-    const uint32_t k = sample.Pixel;
-    if (!IsBehind(sample.Front, w.Depth[k] + w.Radius[k]))
-    {
-      continue;
-    }
-    const uint32_t current = w.HiddenBranch[k];
-    if (current == 0 || sample.Key < w.HiddenKey[k] ||
-        (sample.Key == w.HiddenKey[k] && (sample.Depth < w.HiddenDepth[k] ||
-                                          (sample.Depth == w.HiddenDepth[k] && ids[sample.Branch] < ids[current - 1]))))
-    {
-      w.HiddenKey[k] = sample.Key;
-      w.HiddenDepth[k] = sample.Depth;
-      w.HiddenBranch[k] = sample.Branch + 1;
-    }
-  }
-
-  // The footprint pixels' depth, owner, fixed flag and hidden label; the others wait for the fill.
-  result.Depth.assign(count, 0.0f);
-  result.Fixed.assign(count, 0);
-  result.Owner.assign(count, 0);
-  result.Hidden.assign(count, 0);
+  // Every segment's footprint, band by band of rows (in parallel), branch by branch within a band; then the band's
+  // outputs.
+  const long bands = (static_cast<long>(height) + RowsPerBand - 1) / RowsPerBand;
+  result.Depth.resize(count);
+  result.Fixed.resize(count);
+  result.Owner.resize(count);
+  result.Hidden.resize(count);
   threader->ParallelizeArray(
     0,
-    height,
-    [&](SizeValueType row)
+    static_cast<SizeValueType>(bands),
+    [&](SizeValueType band)
     {
-      for (std::size_t k = row * width; k < (row + 1) * width; ++k)
+      const long         firstRow = static_cast<long>(band) * RowsPerBand;
+      const long         endRow = std::min(static_cast<long>(height), firstRow + RowsPerBand);
+      FootprintCollector collector(w, pixels, spacing, ids, firstRow, endRow);
+      for (std::size_t b = 0; b < ids.size(); ++b)
+      {
+        const CPRProjectedPoint * p = w.Projected.data() + w.FirstPoint[b];
+        const std::size_t         n = w.FirstPoint[b + 1] - w.FirstPoint[b];
+        const auto                branch = static_cast<uint32_t>(b);
+        if (n == 1 && collector.Reaches(p[0], p[0], radiusOf(b, p[0])))
+        {
+          collector.AddSegment(p[0], p[0], radiusOf(b, p[0]), radiusOf(b, p[0]), branch, 0.0);
+        }
+        for (std::size_t i = 0; i + 1 < n; ++i)
+        {
+          const double ra = radiusOf(b, p[i]);
+          const double rb = radiusOf(b, p[i + 1]);
+          if (collector.Reaches(p[i], p[i + 1], std::max(ra, rb)))
+          {
+            collector.AddSegment(p[i], p[i + 1], ra, rb, branch, tolerance(b, p[i], p[i + 1]));
+          }
+        }
+      }
+      // The band's depth, owner, fixed flag and hidden label while its rows are in the cache; the pixels outside every
+      // footprint are free and wait for the fill.
+      for (std::size_t k = static_cast<std::size_t>(firstRow) * width; k < static_cast<std::size_t>(endRow) * width;
+           ++k)
       {
         if (w.Branch[k] == 0)
         {
+          result.Owner[k] = 0;
+          result.Fixed[k] = 0;
+          result.Hidden[k] = 0;
           continue;
         }
         const uint32_t branch = w.Branch[k] - 1;
@@ -308,18 +377,19 @@ AssignVisibility(const CenterlineTree &            tree,
       }
     },
     nullptr);
+
   FillFromNearestSeeds(width, height, spacing, result.Depth, result.Owner, threader, w.Fill);
 
   // How much of each branch lies behind another lumen: its centerline sampled every half pixel of projected length.
   occlusion.clear();
   for (std::size_t b = 0; b < tree.GetNumberOfBranches(); ++b)
   {
-    const CenterlineBranch & branch = tree.GetBranches()[b];
-    ProjectBranch(branch, view, w.Projected);
-    const auto &       p = w.Projected;
-    CPRBranchOcclusion entry;
+    const CenterlineBranch &  branch = tree.GetBranches()[b];
+    const CPRProjectedPoint * p = w.Projected.data() + w.FirstPoint[b];
+    const std::size_t         points = w.FirstPoint[b + 1] - w.FirstPoint[b];
+    CPRBranchOcclusion        entry;
     entry.BranchId = branch.Id;
-    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+    for (std::size_t i = 0; i + 1 < points; ++i)
     {
       const double length = Distance3D(branch.Points[i], branch.Points[i + 1]);
       entry.Length += length;
@@ -340,9 +410,10 @@ AssignVisibility(const CenterlineTree &            tree,
         {
           continue;
         }
-        const double depth = p[i].Depth + t * (p[i + 1].Depth - p[i].Depth);
-        const double front = depth - (ra + t * (rb - ra)) - eps;
-        if (!IsBehind(front, w.Back[static_cast<std::size_t>(row) * width + column]))
+        const double      depth = p[i].Depth + t * (p[i + 1].Depth - p[i].Depth);
+        const double      front = depth - (ra + t * (rb - ra)) - eps;
+        const std::size_t k = static_cast<std::size_t>(row) * width + column;
+        if (w.Branch[k] == 0 || !IsBehind(front, w.Back[k]))
         {
           continue;
         }

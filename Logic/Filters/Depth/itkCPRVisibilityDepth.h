@@ -9,37 +9,29 @@
 
 namespace itk::detail
 {
-/** One pixel of one segment's lumen footprint (or centerline cell), as the hidden-label pass reads it back. */
-struct CPRFootprintSample
-{
-  uint32_t Pixel;
-  /** The branch's index in the tree (not its id). */
-  uint32_t Branch;
-  /** Where the ray meets this lumen (depth - half chord, mm), and the centerline depth there. */
-  float Key;
-  float Depth;
-  /** The lumen's front along v (depth - radius - the segment's self-occlusion tolerance), mm. */
-  float Front;
-};
-
 /** The buffers of AssignVisibility, kept between updates (a view that rotates allocates nothing new). Per pixel:
- * the visible lumen (where the ray meets it, its centerline depth and radius, its branch index + 1; 0 outside every
- * footprint), the nearest lumen back (min depth + radius), the front of the centerline cell the rasterizer kept, and
- * the nearest lumen wholly behind the visible one. */
+ * the visible lumen (where the ray meets it, its centerline depth, radius and front, its branch index + 1; 0 outside
+ * every footprint), the nearest lumen back (min depth + radius), the front of the centerline cell the rasteriser kept,
+ * and the nearest lumen wholly behind the visible one (where the ray meets it, its depth and front, its branch index +
+ * 1). Only
+ * Branch is cleared for an update; the others are written before they are read. The branches' projected points lie
+ * one after another. */
 struct CPRVisibilityWorkspace
 {
-  std::vector<float>              Key;
-  std::vector<float>              Depth;
-  std::vector<float>              Radius;
-  std::vector<uint32_t>           Branch;
-  std::vector<float>              Back;
-  std::vector<float>              CellFront;
-  std::vector<float>              HiddenKey;
-  std::vector<float>              HiddenDepth;
-  std::vector<uint32_t>           HiddenBranch;
-  std::vector<CPRFootprintSample> Samples;
-  std::vector<CPRProjectedPoint>  Projected;
-  CPRNearestFillWorkspace         Fill;
+  std::vector<float>             Key;
+  std::vector<float>             Depth;
+  std::vector<float>             Radius;
+  std::vector<float>             Front;
+  std::vector<uint32_t>          Branch;
+  std::vector<float>             Back;
+  std::vector<float>             CellFront;
+  std::vector<float>             HiddenKey;
+  std::vector<float>             HiddenDepth;
+  std::vector<float>             HiddenFront;
+  std::vector<uint32_t>          HiddenBranch;
+  std::vector<CPRProjectedPoint> Projected;
+  std::vector<std::size_t>       FirstPoint;
+  CPRNearestFillWorkspace        Fill;
 };
 
 /** Visibility mode (docs/design.md "Depth"): every segment of every branch has a lumen footprint, the pixels whose
@@ -50,8 +42,9 @@ struct CPRVisibilityWorkspace
  * as in the other modes. Fixed: the visible centerline pixels and, with \a fixLumen, every footprint pixel of a
  * branch with radii. Pixels outside every footprint take the nearest footprint pixel in 2D (FillFromNearestSeeds) and
  * are free. \a result gets Depth, Fixed, Owner and Hidden (the nearest lumen wholly behind the visible one,
- * itkCPROcclusionRule.h; 0 where none); \a occlusion one entry per branch, in the tree's order. Throws when no
- * footprint lies in the image. */
+ * itkCPROcclusionRule.h, as the segments arrive in the tree's order: a lumen that lay in one with the visible one
+ * before a nearer one came is not looked at again; 0 where none); \a occlusion one entry per branch, in the tree's
+ * order. Throws when no footprint lies in the image. */
 void
 AssignVisibility(const CenterlineTree &            tree,
                  const CPRViewGeometry &           view,
