@@ -3,6 +3,7 @@
 #define vrMemoryBudget_h
 
 #include "itkBilateralDepthRelaxFilter.h"
+#include "itkCPRDepthMode.h"
 #include "itkImage.h"
 #include "itkSize.h"
 
@@ -19,13 +20,17 @@ namespace vr
  * \param relaxWorkspaceBytes the workspace the relax filter allocates for a depth map of that size and keeps through
  * the later stages (BilateralDepthRelaxFilter::GetWorkspaceBytes).
  * \param surface whether the update builds the cut surface.
+ * \param mode the depth mode: Visibility mode's footprint buffers and hidden labels add to the peak.
  * \return the bytes the reformation of that view allocates at its peak: the stages' images and nodes (depth, mask,
  * labels, relaxed depth, both CPRs, the output nodes; measured per view pixel), the relaxation's workspace as its
  * filter reports it, and the surface. A test counts what updates allocate: with the workspace of the path a solve
  * takes, within 10 % (measured: 0.2 %); CheckViewFitsInMemory() counts the most a steady solve allocates (its
  * coarser grids), 14 to 21 % above an update whose solve needs none (docs/design.md 3.7). */
 double
-EstimateReformationBytes(const itk::Size<2> & size, std::size_t relaxWorkspaceBytes, bool surface = true);
+EstimateReformationBytes(const itk::Size<2> & size,
+                         std::size_t          relaxWorkspaceBytes,
+                         bool                 surface = true,
+                         itk::CPRDepthMode    mode = itk::CPRDepthMode::Scanline);
 
 /** \return the memory this process may still allocate, in bytes (MemAvailable of /proc/meminfo, else the free
  * physical pages). */
@@ -33,13 +38,15 @@ double
 AvailableMemoryInBytes();
 
 /** Refuses, before anything is allocated, a view of more than INT_MAX pixels a side or one whose reformation would
- * need more than AvailableMemoryInBytes() (EstimateReformationBytes() with \a relax's workspace and \a surface):
+ * need more than AvailableMemoryInBytes() (EstimateReformationBytes() with \a relax's workspace, \a surface and
+ * \a mode):
  * vr::InputError naming the view size (\a sizeGiven) or else the pixel spacing it follows from. */
 void
 CheckViewFitsInMemory(const itk::CPRViewGeometry &                           view,
                       bool                                                   sizeGiven,
                       itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & relax,
-                      bool                                                   surface);
+                      bool                                                   surface,
+                      itk::CPRDepthMode                                      mode = itk::CPRDepthMode::Scanline);
 } // namespace vr
 
 #endif

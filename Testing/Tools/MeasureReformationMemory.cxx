@@ -4,7 +4,8 @@
 // phantom, after a small update has converted the inputs and warmed every filter (so the volume, the tree and the
 // code are not counted). The growth of the peak resident memory is printed beside it.
 //
-//   MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom runoff|thorax|aorta] [--tolerance F]
+//   MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom runoff|thorax|aorta]
+//                            [--mode scanline|nearest|visibility] [--tolerance F]
 //
 // With --phantom aorta, the VMTK aorta MRA of VR_SHARED_DATA_DIR (real data). Prints the allocated and predicted
 // bytes per view pixel, and for a steady update whether the solve started from the coarser grids (the thoracic
@@ -62,7 +63,8 @@ main(int argc, char ** argv)
 {
   if (argc < 4)
   {
-    std::cerr << "usage: MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--tolerance F]\n";
+    std::cerr << "usage: MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom P] [--mode M] "
+                 "[--tolerance F]\n";
     return 2;
   }
   const unsigned int width = static_cast<unsigned int>(std::atoi(argv[1]));
@@ -71,12 +73,17 @@ main(int argc, char ** argv)
   bool               surface = true;
   double             tolerance = -1.0;
   std::string        phantomName = "runoff";
+  itk::CPRDepthMode  mode = itk::CPRDepthMode::Scanline;
   for (int k = 4; k < argc; ++k)
   {
     const std::string argument = argv[k];
     if (argument == "nosurface")
     {
       surface = false;
+    }
+    else if (argument == "--mode" && k + 1 < argc)
+    {
+      mode = vr::ParseDepthMode(argv[++k], "--mode");
     }
     else if (argument == "--phantom" && k + 1 < argc)
     {
@@ -113,6 +120,7 @@ main(int argc, char ** argv)
     parameters.Backend = vr::RelaxBackend::CPU;
     parameters.Solver =
       solver == "steady" ? itk::BilateralDepthRelaxSolver::Steady : itk::BilateralDepthRelaxSolver::Jacobi;
+    parameters.Mode = mode;
     parameters.ImageSize[0] = 16;
     parameters.ImageSize[1] = 32;
     logic.SetParameters(parameters);
@@ -134,10 +142,10 @@ main(int argc, char ** argv)
     // What the logic's check predicted before the update, from the relax filter it used (configured the same way).
     auto &       relax = *logic.GetRelaxFilter();
     const bool   coarserGrids = relax.GetSteadyReport().Grids > 1;
-    const double predicted = vr::EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface);
+    const double predicted = vr::EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface, mode);
     const double pixels = static_cast<double>(width) * height;
     auto         percent = [measured](double bytes) { return 100.0 * (bytes - measured) / measured; };
-    std::cout << phantomName << ", " << width << " x " << height << " " << solver
+    std::cout << phantomName << " (" << vr::ToString(mode) << "), " << width << " x " << height << " " << solver
               << (surface ? " with surface" : " without surface") << ", "
               << itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads() << " threads: allocated at the peak "
               << measured / pixels << " B/pixel (peak resident growth " << resident / pixels << "); predicted "
