@@ -97,7 +97,7 @@ ParseViewerOptions(int argc, char ** argv, ViewerOptions & options, std::string 
   app.add_option("--up", up, "rotation axis: S, I, A, P, L, R, auto, or an LPS vector x,y,z (default S)");
   app.add_option("--size", size, "CPR image size W,H in pixels (default: fit the tree)");
   app.add_option("--spacing", spacing, "pixel spacing s or sx,sy in mm (default: the volume's smallest)");
-  app.add_option("--mode", mode, "depth mode: scanline or nearest (default scanline)");
+  app.add_option("--mode", mode, "depth mode: scanline, nearest or visibility (default scanline)");
   app.add_option("--interpolation", interpolation, "linear, nearest or cubic (default linear)");
   app.add_option("--relaxation", relaxation, "relaxation w in [0, 1] (default 1)");
   app.add_option("--jumpThreshold",
