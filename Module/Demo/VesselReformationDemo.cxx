@@ -21,6 +21,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 namespace
 {
@@ -132,8 +133,12 @@ RunDemo(int argc, char * argv[])
     const bool visibility = parameters.Mode == itk::CPRDepthMode::Visibility;
     parameters.Validate();
     std::filesystem::create_directories(output);
-    std::cout << "VesselReformation demo: " << phantom.Description << ", view " << angle << " degrees about superior, "
-              << size[0] << " x " << size[1] << " pixels" << std::endl;
+    const bool         chooseAngle = visibility && angleOption->count() == 0;
+    std::ostringstream shownAngle;
+    shownAngle << angle << " degrees";
+    std::cout << "VesselReformation demo: " << phantom.Description << ", view "
+              << (chooseAngle ? std::string("at the angle that hides the most (below)") : shownAngle.str())
+              << " about superior, " << size[0] << " x " << size[1] << " pixels" << std::endl;
 
     auto start = Clock::now();
     phantom.Source->Update();
@@ -160,7 +165,7 @@ RunDemo(int argc, char * argv[])
       std::cout << "  occlusion profile: " << std::lround(profile->HiddenLength[worst]) << " of "
                 << std::lround(profile->TreeLength) << " mm hidden at " << worst << " degrees (the most), "
                 << std::lround(profile->HiddenLength[best]) << " mm at " << best << " degrees (the least)" << std::endl;
-      if (angleOption->count() == 0)
+      if (chooseAngle)
       {
         angle = worst;
         parameters.AngleInDegrees = angle;
