@@ -6,6 +6,8 @@
 
 #include "PlainTubeRayCaster.h"
 #include "itkCPRDepthImageFilter.h"
+#include "itkCPROcclusionProfile.h"
+#include "itkCPRVectorHelpers.h"
 #include "vrTestImages.h"
 
 #include <gtest/gtest.h>
@@ -441,4 +443,32 @@ TEST(PlainTubeRayCaster, MeetsAStraightTubeWhereTheCircleSays)
   EXPECT_NEAR(crossings[0].Entry, -std::sqrt(7.0), 1e-9);
   EXPECT_TRUE(vr::test::IsCenterlinePointHidden(tree, view, P(0, 20, 0), 1.0));
   EXPECT_FALSE(vr::test::IsCenterlinePointHidden(tree, view, P(0, 6, 0), 1.0)) << "inside the tube's lumen";
+}
+
+TEST(CPROcclusionProfile, TwoParallelTubesHideEachOtherExactlyWhereTheirFootprintsOverlap)
+{
+  // Two tubes along z (50 mm, radius 10), 40 mm apart along x. Turning about z, the one behind lies in the other's
+  // footprint while their projected separation 40 |cos(theta)| is at most 10 mm, theta from 75.5 to 104.5 degrees,
+  // and there it is wholly behind (depth separation 40 sin(theta) >= 38.7 mm > 20): all 50 mm of it hidden; elsewhere
+  // nothing. Pixels of 0.05 mm, far finer than the radius: the tubes reach over many buckets of heights.
+  itk::CenterlineTree tree;
+  tree.AddBranch(Straight(1, P(0, 0, 0), P(0, 0, 50), 10.0));
+  tree.AddBranch(Straight(2, P(40, 0, 0), P(40, 0, 50), 10.0));
+  itk::Vector<double, 3> up;
+  up[0] = 0.0;
+  up[1] = 0.0;
+  up[2] = 1.0;
+  itk::Size<2>                   size{ { 100, 100 } };
+  const itk::CPRViewGeometry     view(up, 0.0, P(20, 0, 25), size, itk::detail::MakeVector2(0.05, 0.05));
+  const itk::CPROcclusionProfile profile = itk::ComputeCPROcclusionProfile(tree, view);
+  ASSERT_EQ(profile.HiddenLength.size(), 180u);
+  EXPECT_NEAR(profile.TreeLength, 100.0, 1e-9);
+  for (unsigned int angle = 0; angle < 180; ++angle)
+  {
+    const double expected = angle >= 76 && angle <= 104 ? 50.0 : 0.0;
+    EXPECT_NEAR(profile.HiddenLength[angle], expected, 1e-6) << angle << " degrees";
+  }
+  EXPECT_EQ(profile.LeastOccludedAngle(), 0u);
+  EXPECT_EQ(profile.MostOccludedAngle(), 76u);
+  EXPECT_NEAR(profile.HiddenFraction(90), 0.5, 1e-9);
 }

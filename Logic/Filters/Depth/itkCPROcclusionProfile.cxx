@@ -297,7 +297,8 @@ ComputeCPROcclusionProfile(const CenterlineTree & tree, const CPRViewGeometry & 
   const double bucketHeight = std::max({ 4.0 * pixelSize, reach, (high - low) / 4096.0 });
   const auto   bucketOf = [&](double y)
   { return static_cast<std::size_t>(std::clamp(std::floor((y - low) / bucketHeight), 0.0, 4095.0)); };
-  std::vector<std::vector<std::size_t>> buckets(bucketOf(high) + 1);
+  // Every index a segment reaches, up to its reach above the highest point (bucketOf clamps, so this bounds them).
+  std::vector<std::vector<std::size_t>> buckets(bucketOf(high + reach) + 1);
   for (std::size_t i = 0; i < segments.size(); ++i)
   {
     const Segment & s = segments[i];
