@@ -283,13 +283,13 @@ AssignVisibility(const CenterlineTree &            tree,
   const double             pixelSize = std::max(spacing[0], spacing[1]);
   CPRVisibilityWorkspace & w = workspace;
   // Written before they are read (Offer() starts a pixel when its Branch is 0; CellFront is set on every centerline
-  // pixel): only Branch is cleared.
+  // pixel): only Branch is cleared, by each band for its rows.
   for (std::vector<float> * values :
        { &w.Key, &w.Depth, &w.Radius, &w.Front, &w.Back, &w.CellFront, &w.HiddenKey, &w.HiddenDepth, &w.HiddenFront })
   {
     values->resize(count);
   }
-  w.Branch.assign(count, 0);
+  w.Branch.resize(count); // cleared band by band, in parallel
   w.HiddenBranch.assign(count, 0);
 
   std::vector<uint32_t>      ids;
@@ -331,8 +331,11 @@ AssignVisibility(const CenterlineTree &            tree,
     static_cast<SizeValueType>(bands),
     [&](SizeValueType band)
     {
-      const long         firstRow = static_cast<long>(band) * RowsPerBand;
-      const long         endRow = std::min(static_cast<long>(height), firstRow + RowsPerBand);
+      const long firstRow = static_cast<long>(band) * RowsPerBand;
+      const long endRow = std::min(static_cast<long>(height), firstRow + RowsPerBand);
+      std::fill(w.Branch.begin() + firstRow * static_cast<long>(width),
+                w.Branch.begin() + endRow * static_cast<long>(width),
+                0);
       FootprintCollector collector(w, pixels, spacing, ids, firstRow, endRow);
       for (std::size_t b = 0; b < ids.size(); ++b)
       {
@@ -381,58 +384,62 @@ AssignVisibility(const CenterlineTree &            tree,
   FillFromNearestSeeds(width, height, spacing, result.Depth, result.Owner, threader, w.Fill);
 
   // How much of each branch lies behind another lumen: its centerline sampled every half pixel of projected length.
-  occlusion.clear();
-  for (std::size_t b = 0; b < tree.GetNumberOfBranches(); ++b)
-  {
-    const CenterlineBranch &  branch = tree.GetBranches()[b];
-    const CPRProjectedPoint * p = w.Projected.data() + w.FirstPoint[b];
-    const std::size_t         points = w.FirstPoint[b + 1] - w.FirstPoint[b];
-    CPRBranchOcclusion        entry;
-    entry.BranchId = branch.Id;
-    for (std::size_t i = 0; i + 1 < points; ++i)
+  occlusion.assign(tree.GetNumberOfBranches(), CPRBranchOcclusion());
+  threader->ParallelizeArray(
+    0,
+    tree.GetNumberOfBranches(),
+    [&](SizeValueType b)
     {
-      const double length = Distance3D(branch.Points[i], branch.Points[i + 1]);
-      entry.Length += length;
-      const double columns = p[i + 1].Column - p[i].Column;
-      const double rows = p[i + 1].Row - p[i].Row;
-      const double steps = std::min(std::ceil(2.0 * std::hypot(columns, rows)), 8.0 * (width + height));
-      const auto   n = static_cast<long>(std::max(1.0, steps));
-      const double eps = tolerance(b, p[i], p[i + 1]);
-      const double ra = radiusOf(b, p[i]);
-      const double rb = radiusOf(b, p[i + 1]);
-      long         hidden = 0;
-      for (long m = 0; m < n; ++m)
+      const CenterlineBranch &  branch = tree.GetBranches()[b];
+      const CPRProjectedPoint * p = w.Projected.data() + w.FirstPoint[b];
+      const std::size_t         points = w.FirstPoint[b + 1] - w.FirstPoint[b];
+      CPRBranchOcclusion        entry;
+      entry.BranchId = branch.Id;
+      for (std::size_t i = 0; i + 1 < points; ++i)
       {
-        const double t = (m + 0.5) / n;
-        const long   column = CellOf(p[i].Column + t * columns);
-        const long   row = CellOf(p[i].Row + t * rows);
-        if (column < 0 || row < 0 || column >= static_cast<long>(width) || row >= static_cast<long>(height))
+        const double length = Distance3D(branch.Points[i], branch.Points[i + 1]);
+        entry.Length += length;
+        const double columns = p[i + 1].Column - p[i].Column;
+        const double rows = p[i + 1].Row - p[i].Row;
+        const double steps = std::min(std::ceil(2.0 * std::hypot(columns, rows)), 8.0 * (width + height));
+        const auto   n = static_cast<long>(std::max(1.0, steps));
+        const double eps = tolerance(b, p[i], p[i + 1]);
+        const double ra = radiusOf(b, p[i]);
+        const double rb = radiusOf(b, p[i + 1]);
+        long         hidden = 0;
+        for (long m = 0; m < n; ++m)
         {
-          continue;
+          const double t = (m + 0.5) / n;
+          const long   column = CellOf(p[i].Column + t * columns);
+          const long   row = CellOf(p[i].Row + t * rows);
+          if (column < 0 || row < 0 || column >= static_cast<long>(width) || row >= static_cast<long>(height))
+          {
+            continue;
+          }
+          const double      depth = p[i].Depth + t * (p[i + 1].Depth - p[i].Depth);
+          const double      front = depth - (ra + t * (rb - ra)) - eps;
+          const std::size_t k = static_cast<std::size_t>(row) * width + column;
+          if (w.Branch[k] == 0 || !IsBehind(front, w.Back[k]))
+          {
+            continue;
+          }
+          ++hidden;
+          // The sample's share of the polyline, joined to the stretch it continues.
+          const double first = static_cast<double>(i) + static_cast<double>(m) / n;
+          const double last = static_cast<double>(i) + static_cast<double>(m + 1) / n;
+          if (!entry.HiddenStretches.empty() && entry.HiddenStretches.back().Last >= first - 1e-9)
+          {
+            entry.HiddenStretches.back().Last = last;
+          }
+          else
+          {
+            entry.HiddenStretches.push_back({ first, last });
+          }
         }
-        const double      depth = p[i].Depth + t * (p[i + 1].Depth - p[i].Depth);
-        const double      front = depth - (ra + t * (rb - ra)) - eps;
-        const std::size_t k = static_cast<std::size_t>(row) * width + column;
-        if (w.Branch[k] == 0 || !IsBehind(front, w.Back[k]))
-        {
-          continue;
-        }
-        ++hidden;
-        // The sample's share of the polyline, joined to the stretch it continues.
-        const double first = static_cast<double>(i) + static_cast<double>(m) / n;
-        const double last = static_cast<double>(i) + static_cast<double>(m + 1) / n;
-        if (!entry.HiddenStretches.empty() && entry.HiddenStretches.back().Last >= first - 1e-9)
-        {
-          entry.HiddenStretches.back().Last = last;
-        }
-        else
-        {
-          entry.HiddenStretches.push_back({ first, last });
-        }
+        entry.HiddenLength += length * static_cast<double>(hidden) / static_cast<double>(n);
       }
-      entry.HiddenLength += length * static_cast<double>(hidden) / static_cast<double>(n);
-    }
-    occlusion.push_back(entry);
-  }
+      occlusion[b] = std::move(entry);
+    },
+    nullptr);
 }
 } // namespace itk::detail
