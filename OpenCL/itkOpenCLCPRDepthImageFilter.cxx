@@ -277,13 +277,17 @@ OpenCLCPRDepthImageFilter::ComputeOnDevice()
   DepthImageType * depth = this->GetDepthOutput();
   MaskImageType *  mask = this->GetFixedMaskOutput();
   LabelImageType * labels = this->GetOwnerLabelOutput();
-  for (ImageBase<2> * output : std::initializer_list<ImageBase<2> *>{ depth, mask, labels })
+  LabelImageType * hidden = this->GetHiddenLabelOutput();
+  for (ImageBase<2> * output : std::initializer_list<ImageBase<2> *>{ depth, mask, labels, hidden })
   {
     output->SetBufferedRegion(output->GetRequestedRegion());
   }
   depth->Allocate();
   mask->Allocate();
   labels->Allocate();
+  // Only Visibility mode hides a vessel, and it runs on the CPU (WhyHost): here no pixel has one behind it.
+  hidden->Allocate();
+  hidden->FillBuffer(0);
 
   DeviceState &            state = *m_DeviceState;
   vr::OpenCLSessionState & device = state.Device();

@@ -59,6 +59,7 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   m_Controller = new ReformationController(this);
   m_Panel = new ModulePanel;
   m_CPRView = new CPRView;
+  m_OcclusionStrip = new OcclusionStrip;
   m_ThreeDView = new ThreeDView;
   m_PathPanel = new VesselPathPanel;
   m_PathPanel->setVisible(false);
@@ -72,7 +73,14 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   auto * splitter = new QSplitter(Qt::Horizontal);
   m_Splitter = splitter;
   splitter->addWidget(scroll);
-  splitter->addWidget(m_CPRView);
+  // The CPR view with the occlusion strip under it, one pane of the splitter.
+  auto * cprPane = new QWidget;
+  auto * cprLayout = new QVBoxLayout(cprPane);
+  cprLayout->setContentsMargins(0, 0, 0, 0);
+  cprLayout->setSpacing(0);
+  cprLayout->addWidget(m_CPRView, 1);
+  cprLayout->addWidget(m_OcclusionStrip, 0);
+  splitter->addWidget(cprPane);
   splitter->addWidget(m_ThreeDView);
   splitter->addWidget(m_PathPanel);
   splitter->setStretchFactor(0, 0);
@@ -222,6 +230,10 @@ ViewerWindow::BuildMenus()
     },
     QKeySequence(Qt::Key_Home));
   home->setObjectName(QStringLiteral("resetView"));
+  view
+    ->addAction(
+      tr("&Best view (least hidden)"), this, [this] { GoToBestView(); }, QKeySequence(Qt::CTRL | Qt::Key_B))
+    ->setObjectName(QStringLiteral("bestView"));
   QMenu *       presets = view->addMenu(tr("Window &preset"));
   const QString presetNames[] = { QString::fromLatin1(CTAPreset.Name),
                                   QString::fromLatin1(BonePreset.Name),
@@ -244,6 +256,25 @@ ViewerWindow::BuildMenus()
       tr("Vessel Reformation &help"), this, [this] { ShowHelp(); }, QKeySequence::HelpContents)
     ->setObjectName(QStringLiteral("showHelp"));
   help->addAction(tr("&About Vessel Reformation"), this, [this] { ShowAbout(); });
+}
+
+bool
+ViewerWindow::GoToBestView()
+{
+  const auto profile = m_OcclusionStrip->GetProfile();
+  if (!profile || profile->HiddenLength.empty())
+  {
+    statusBar()->showMessage(tr("Best view: the occlusion profile is not computed yet"), 5000);
+    return false;
+  }
+  const unsigned int angle = profile->LeastOccludedAngle();
+  statusBar()->showMessage(tr("Best view: %1° hides %2 mm (%3 % of the tree)")
+                             .arg(angle)
+                             .arg(profile->HiddenLength[angle], 0, 'f', 0)
+                             .arg(100.0 * profile->HiddenFraction(angle), 0, 'f', 1),
+                           8000);
+  m_Panel->SetAngle(static_cast<double>(angle), RequestKind::Final);
+  return true;
 }
 
 void
@@ -300,6 +331,10 @@ ViewerWindow::ConnectParts()
             }
             RequestTurn(angle);
           });
+  connect(m_OcclusionStrip,
+          &OcclusionStrip::angleClicked,
+          this,
+          [this](double degrees) { m_Panel->SetAngle(degrees, RequestKind::Final); });
   connect(m_CPRView,
           &CPRView::windowLevelChanged,
           this,
@@ -519,6 +554,11 @@ ViewerWindow::ShowResult(const std::shared_ptr<const ReformationResult> & result
       m_Panel->SetAngle(result->Parameters.AngleInDegrees, RequestKind::Interactive);
     }
     m_CPRView->SetResult(result);
+    if (result->Outputs.OcclusionProfile)
+    {
+      m_OcclusionStrip->SetProfile(result->Outputs.OcclusionProfile); // previews have none: the last one stays
+    }
+    m_OcclusionStrip->SetCurrentAngle(result->Outputs.View.GetAngleInDegrees());
     m_ThreeDView->SetResult(result);
     m_PathPanel->SetViewParameters(result->Parameters);
     if (m_FullRangeOnNextResult)

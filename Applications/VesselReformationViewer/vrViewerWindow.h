@@ -5,6 +5,7 @@
 #include "vrCPRView.h"
 #include "vrDICOMSeriesChoice.h"
 #include "vrModulePanel.h"
+#include "vrOcclusionStrip.h"
 #include "vrReformationController.h"
 #include "vrRotationSeries.h"
 #include "vrThreeDView.h"
@@ -179,6 +180,16 @@ public:
   {
     return m_ThreeDView;
   }
+  /** \return the strip under the CPR view: hidden fraction against the angle. */
+  OcclusionStrip *
+  GetOcclusionStrip() const
+  {
+    return m_OcclusionStrip;
+  }
+  /** View > Best view: turns to the angle of 0-179 degrees that hides the least of the tree (the occlusion profile's
+   * minimum). \return false when no profile has come yet. */
+  bool
+  GoToBestView();
   ReformationController *
   GetController() const
   {
@@ -292,6 +303,7 @@ private:
   ReformationController *                    m_Controller{ nullptr };
   ModulePanel *                              m_Panel{ nullptr };
   CPRView *                                  m_CPRView{ nullptr };
+  OcclusionStrip *                           m_OcclusionStrip{ nullptr };
   ThreeDView *                               m_ThreeDView{ nullptr };
   VesselPathPanel *                          m_PathPanel{ nullptr };
   QLabel *                                   m_Readout{ nullptr };

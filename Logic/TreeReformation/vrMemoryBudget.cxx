@@ -11,22 +11,35 @@
 
 namespace vr
 {
+namespace
+{
+// Visibility mode's own bytes per pixel besides every update's (measured as those: 55.9-56.0 on both phantoms and the
+// aorta, 256 x 512 to 1024 x 2048): its footprint buffers (eleven of 4 bytes), the nearest fill's column winners, the
+// hidden labels of the assignment and their output node (4 each).
+constexpr double VisibilityBytesPerPixel = 56.0;
+} // namespace
+
 double
 EstimateReformationBytes(const itk::Size<2> & size,
                          std::size_t          relaxWorkspaceBytes,
                          bool                 surface,
-                         double               volumeSamplingBytes)
+                         double               volumeSamplingBytes,
+                         itk::CPRDepthMode    mode)
 {
   // Bytes per view pixel at the peak of an update besides the relaxation's workspace, counted as allocated bytes
-  // (Testing/Tools/MeasureReformationMemory; 71.0-71.3 and 83.8-83.9 at 256 x 512, 512 x 1024 and 1024 x 2048):
-  // - every update: the centerline raster, the depth assignment, the depth filter's outputs, the relaxed depth, both
-  //   CPR images and the output nodes of all of them: 71;
+  // (Testing/Tools/MeasureReformationMemory; 74.7-75.0 and 83.8-83.9 at 256 x 512, 512 x 1024 and 1024 x 2048):
+  // - every update: the centerline raster, the depth assignment, the depth filter's outputs (the hidden labels among
+  //   them, 0 outside Visibility mode), the relaxed depth, both CPR images and the output nodes of all of them: 75;
   // - the cut surface: points, scalars and two triangles a pixel: 84.
   // The relax filter keeps its workspace through the stages after it, so it adds to the peak whole.
-  double perPixel = 71.0;
+  double perPixel = 75.0;
   if (surface)
   {
     perPixel += 84.0;
+  }
+  if (mode == itk::CPRDepthMode::Visibility)
+  {
+    perPixel += VisibilityBytesPerPixel;
   }
   return perPixel * static_cast<double>(size[0]) * static_cast<double>(size[1]) +
          static_cast<double>(relaxWorkspaceBytes) + volumeSamplingBytes;
@@ -44,7 +57,8 @@ CheckViewFitsInMemory(const itk::CPRViewGeometry &                           vie
                       bool                                                   sizeGiven,
                       itk::BilateralDepthRelaxFilter<itk::Image<float, 2>> & relax,
                       bool                                                   surface,
-                      double                                                 volumeSamplingBytes)
+                      double                                                 volumeSamplingBytes,
+                      itk::CPRDepthMode                                      mode)
 {
   const auto &       size = view.GetSize();
   std::ostringstream origin;
@@ -63,7 +77,8 @@ CheckViewFitsInMemory(const itk::CPRViewGeometry &                           vie
     throw InputError(origin.str() + ": at most " + std::to_string(INT_MAX) + " pixels per side are supported",
                      parameter);
   }
-  const double needed = EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface, volumeSamplingBytes);
+  const double needed =
+    EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface, volumeSamplingBytes, mode);
   const double available = AvailableMemoryInBytes();
   if (needed > available)
   {

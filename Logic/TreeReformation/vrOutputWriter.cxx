@@ -4,6 +4,7 @@
 #include "vrImageIO.h"
 #include "vrInputError.h"
 #include "vrNodeConversion.h"
+#include "vrOcclusionTableIO.h"
 #include "vrSurfaceIO.h"
 
 #include <filesystem>
@@ -31,6 +32,12 @@ OutputFileName(ReformationOutput output)
       return "labels.nrrd";
     case ReformationOutput::CutSurface:
       return "cut-surface.vtp";
+    case ReformationOutput::HiddenLabels:
+      return "hidden-labels.nrrd";
+    case ReformationOutput::HiddenLengths:
+      return "hidden-lengths.csv";
+    case ReformationOutput::OcclusionProfile:
+      return "occlusion-profile.csv";
   }
   return "";
 }
@@ -41,9 +48,20 @@ OutputWriter::Write(const ReformationOutputs & outputs, double window, double le
   WriteReserved(
     [&outputs](ReformationOutput output)
     {
-      return output == ReformationOutput::CutSurface && !outputs.Surface
-               ? std::string("no cut surface was computed for these outputs")
-               : std::string();
+      switch (output)
+      {
+        case ReformationOutput::CutSurface:
+          return outputs.Surface ? std::string() : std::string("no cut surface was computed for these outputs");
+        case ReformationOutput::HiddenLabels:
+        case ReformationOutput::HiddenLengths:
+          return outputs.HiddenLabels ? std::string()
+                                      : std::string("what lies hidden is computed only in the visibility depth mode");
+        case ReformationOutput::OcclusionProfile:
+          return outputs.OcclusionProfile ? std::string()
+                                          : std::string("no occlusion profile was computed for these outputs");
+        default:
+          return std::string();
+      }
     },
     [&](ReformationOutput output, const std::string & path)
     {
@@ -75,6 +93,15 @@ OutputWriter::Write(const ReformationOutputs & outputs, double window, double le
           // logic's surface is RAS.
           WriteSurface(outputs.Surface, path, CoordinateSpace::RAS, CoordinateSpace::LPS);
           break;
+        case ReformationOutput::HiddenLabels:
+          WriteImage2D(ConvertVolumeNodeToLabelImage(outputs.HiddenLabels), path);
+          break;
+        case ReformationOutput::HiddenLengths:
+          WriteHiddenLengthTable(outputs.BranchOcclusions, outputs.View.GetAngleInDegrees(), path);
+          break;
+        case ReformationOutput::OcclusionProfile:
+          WriteOcclusionProfileTable(*outputs.OcclusionProfile, path);
+          break;
       }
     });
 }
@@ -102,6 +129,9 @@ WriteOutputs(const ReformationOutputs & outputs,
   choose(selection.FixedMask, ReformationOutput::FixedMask);
   choose(selection.OwnerLabels, ReformationOutput::OwnerLabels);
   choose(selection.CutSurface, ReformationOutput::CutSurface);
+  choose(selection.HiddenLabels, ReformationOutput::HiddenLabels);
+  choose(selection.HiddenLengths, ReformationOutput::HiddenLengths);
+  choose(selection.OcclusionProfile, ReformationOutput::OcclusionProfile);
   if (chosen.empty())
   {
     throw InputError("save outputs: no output is checked");

@@ -302,7 +302,28 @@ ParseDepthMode(const std::string & text, const std::string & what)
   {
     return itk::CPRDepthMode::Nearest;
   }
-  throw InputError(what + " " + Quoted(text) + ": use scanline or nearest");
+  if (key == "visibility")
+  {
+    return itk::CPRDepthMode::Visibility;
+  }
+  throw InputError(what + " " + Quoted(text) + ": use scanline, nearest or visibility");
+}
+
+AngleChoice
+ParseAngle(const std::string & text, const std::string & what)
+{
+  AngleChoice choice;
+  if (ToLower(Trim(text)) == "best")
+  {
+    choice.LeastOccluded = true;
+    return choice;
+  }
+  if (!ParseWholeDouble(Trim(text), choice.Degrees) || !std::isfinite(choice.Degrees))
+  {
+    throw InputError(what + " " + Quoted(text) +
+                     ": expected an angle in degrees, e.g. 30, or best (the view that hides the least)");
+  }
+  return choice;
 }
 
 itk::CPRInterpolationMode
@@ -376,7 +397,15 @@ ParseOnOff(const std::string & text, const std::string & what)
 const char *
 ToString(itk::CPRDepthMode mode)
 {
-  return mode == itk::CPRDepthMode::Nearest ? "nearest" : "scanline";
+  switch (mode)
+  {
+    case itk::CPRDepthMode::Nearest:
+      return "nearest";
+    case itk::CPRDepthMode::Visibility:
+      return "visibility";
+    default:
+      return "scanline";
+  }
 }
 
 const char *
@@ -439,7 +468,9 @@ SetReformationParameter(ReformationParameters & p,
   }
   else if (key == "angle")
   {
-    p.AngleInDegrees = Number(value, spelling);
+    const AngleChoice choice = ParseAngle(value, spelling);
+    p.LeastOccludedAngle = choice.LeastOccluded;
+    p.AngleInDegrees = choice.Degrees;
   }
   else if (key == "size")
   {

@@ -43,6 +43,10 @@ struct ReformationParameters
   VectorType Up;
   /** Rotation angle theta about up, in degrees. */
   double AngleInDegrees{ 0.0 };
+  /** Take instead the angle of 0-179 degrees at which the view hides the least centerline length behind other lumens
+   * (itk::ComputeCPROcclusionProfile; of equal ones the nearest to 0); AngleInDegrees is then ignored, and the
+   * outputs say which angle was taken. */
+  bool LeastOccludedAngle{ false };
   /** View centre C in LPS mm; without one, the centre of the tree's bounding box. */
   bool      HasCenter{ false };
   PointType Center{};
@@ -52,7 +56,7 @@ struct ReformationParameters
    * fits the tree into ImageSize). */
   itk::Vector<double, 2> PixelSpacing;
 
-  /** Scanline (mpCPR) or Nearest depth assignment. */
+  /** Scanline (mpCPR), Nearest or Visibility (occlusion-aware) depth assignment. */
   itk::CPRDepthMode Mode{ itk::CPRDepthMode::Scanline };
   /** Fix the lumen (pixels within the owner's radius) as well as the centerline pixels. */
   bool FixLumen{ true };
@@ -132,7 +136,18 @@ ParseImageSize(const std::string & text, const std::string & what);
 /** "s" (both axes) or "sx,sy" in mm, finite and > 0. */
 itk::Vector<double, 2>
 ParsePixelSpacing(const std::string & text, const std::string & what);
-/** "scanline" or "nearest". */
+/** The view angle as a user writes it: degrees, or "best" for the least occluded angle.
+ * \ingroup VesselReformation
+ */
+struct AngleChoice
+{
+  bool   LeastOccluded{ false };
+  double Degrees{ 0.0 };
+};
+/** A finite number of degrees, or "best" (any case). */
+AngleChoice
+ParseAngle(const std::string & text, const std::string & what);
+/** "scanline", "nearest" or "visibility". */
 itk::CPRDepthMode
 ParseDepthMode(const std::string & text, const std::string & what);
 /** "linear", "nearest" or "cubic". */

@@ -7,6 +7,7 @@
 #include "vrMemoryBudget.h"
 #include "vrStageMonitor.h"
 #include "vrViewBackend.h"
+#include "vrVisibilityOutputs.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRDepthImageFilter.h"
@@ -50,6 +51,7 @@ struct VesselReformationLogic::Internals
   CenterlineExtractionParameters  ExtractionParameters;
   ReformationParameters           Parameters;
   bool                            SurfaceEnabled{ true };
+  bool                            ProfileEnabled{ false };
   WarningCallback                 Warn;
 
   // The inputs as ITK sees them, from the cache (converted again only when a node changes; possibly shared with
@@ -105,6 +107,12 @@ struct VesselReformationLogic::Internals
   std::string BackendNotice;
   /** The steady solve that stopped short of its tolerance (how far it got), else "". */
   std::string RelaxWarning;
+  /** Visibility mode with branches that have no radii: what that costs, else "". */
+  std::string                                RadiusWarning;
+  std::shared_ptr<const itk::CenterlineTree> RadiusCheckedTree;
+  itk::CPRDepthMode                          RadiusCheckedMode{ itk::CPRDepthMode::Scanline };
+
+  detail::OcclusionProfileCache Profile;
 
   ReformationOutputs Outputs;
   StageCounts        Counts;
@@ -151,6 +159,10 @@ struct VesselReformationLogic::Internals
   ChooseRelaxFilter();
   void
   ConfigurePipeline();
+  void
+  CheckRadiiForVisibility();
+  void
+  UpdateOcclusionProfile();
   void
   PlanProgress();
   std::vector<itk::ProcessObject *>
@@ -395,7 +407,10 @@ VesselReformationLogic::Internals::ConfigurePipeline()
 {
   ChooseRelaxFilter(); // and with it the depth and resampling filters in use
   Depth->SetCenterlineTree(*Tree);
-  Depth->SetViewSpecification(Parameters.ToViewSpecification());
+  if (!Parameters.LeastOccludedAngle)
+  {
+    Depth->SetViewSpecification(Parameters.ToViewSpecification()); // else UpdateOcclusionProfile() chooses the angle
+  }
   Depth->SetReferenceVolume(Volume->Image);
   Depth->SetMode(Parameters.Mode);
   Depth->SetFixLumen(Parameters.FixLumen);
@@ -415,6 +430,56 @@ VesselReformationLogic::Internals::ConfigurePipeline()
   }
   UnfilteredResample->SetDepth(Depth->GetDepthOutput());
   RelaxedResample->SetDepth(Relax->GetOutput());
+}
+
+void
+VesselReformationLogic::Internals::CheckRadiiForVisibility()
+{
+  if (Tree == RadiusCheckedTree && Parameters.Mode == RadiusCheckedMode)
+  {
+    return;
+  }
+  RadiusCheckedTree = Tree;
+  RadiusCheckedMode = Parameters.Mode;
+  RadiusWarning.clear();
+  if (Parameters.Mode != itk::CPRDepthMode::Visibility)
+  {
+    return;
+  }
+  RadiusWarning = detail::DescribeBranchesWithoutRadii(*Tree);
+  Warning(RadiusWarning, ParameterName::DepthMode);
+}
+
+void
+VesselReformationLogic::Internals::UpdateOcclusionProfile()
+{
+  Outputs.AngleChosen = false;
+  if (!ProfileEnabled && !Parameters.LeastOccludedAngle)
+  {
+    Outputs.OcclusionProfile = nullptr;
+    return;
+  }
+  itk::CPRViewSpecification specification = Parameters.ToViewSpecification();
+  specification.AngleInDegrees = 0.0;
+  itk::CPRViewGeometry view;
+  try
+  {
+    view = itk::CPRViewGeometry::Resolve(specification, *Tree, Volume->Image);
+  }
+  catch (const itk::ExceptionObject &)
+  {
+    // The depth filter resolves the same view next and names what is wrong with it.
+    Depth->SetViewSpecification(Parameters.ToViewSpecification());
+    return;
+  }
+  Outputs.OcclusionProfile = Profile.Get(Tree, view, Outputs.Times.OcclusionProfile);
+  if (Parameters.LeastOccludedAngle)
+  {
+    specification = Parameters.ToViewSpecification();
+    specification.AngleInDegrees = static_cast<double>(Outputs.OcclusionProfile->LeastOccludedAngle());
+    Depth->SetViewSpecification(specification);
+    Outputs.AngleChosen = true;
+  }
 }
 
 void
@@ -459,6 +524,13 @@ VesselReformationLogic::Internals::RefreshOutputs(const StageCounts & now)
     Outputs.Depth = ConvertItkImageToVolumeNode(Depth->GetDepthOutput(), "Depth");
     Outputs.FixedMask = ConvertItkImageToVolumeNode(Depth->GetFixedMaskOutput(), "Fixed mask");
     Outputs.OwnerLabels = ConvertItkImageToVolumeNode(Depth->GetOwnerLabelOutput(), "Owner labels");
+    Outputs.HiddenLabels = nullptr;
+    Outputs.BranchOcclusions.clear();
+    if (Depth->GetMode() == itk::CPRDepthMode::Visibility)
+    {
+      Outputs.HiddenLabels = ConvertItkImageToVolumeNode(Depth->GetHiddenLabelOutput(), "Hidden labels");
+      Outputs.BranchOcclusions = detail::NameBranchOcclusions(Depth->GetCenterlineTree(), Depth->GetBranchOcclusions());
+    }
   }
   if (now.Relax != before.Relax || RelaxedDepthFrom != Relax.GetPointer())
   {
@@ -560,6 +632,18 @@ VesselReformationLogic::GetSurfaceEnabled() const
 }
 
 void
+VesselReformationLogic::SetOcclusionProfileEnabled(bool enabled)
+{
+  m_Internals->ProfileEnabled = enabled;
+}
+
+bool
+VesselReformationLogic::GetOcclusionProfileEnabled() const
+{
+  return m_Internals->ProfileEnabled;
+}
+
+void
 VesselReformationLogic::SetProgressCallback(ProgressCallback callback)
 {
   m_Internals->Monitor.SetProgressCallback(std::move(callback));
@@ -622,6 +706,8 @@ VesselReformationLogic::Update()
   d.ConvertInputs();
   d.ExtractCenterlines();
   d.ConfigurePipeline();
+  d.CheckRadiiForVisibility();
+  d.UpdateOcclusionProfile();
   try
   {
     // Resolves the view (cheap) so that a view too large for memory is refused before anything is allocated.
@@ -651,7 +737,8 @@ VesselReformationLogic::Update()
                         cubicHeld ? 0.0
                                   : EstimateVolumeSamplingBytes(
                                       static_cast<double>(d.Volume->Image->GetBufferedRegion().GetNumberOfPixels()),
-                                      d.Parameters.Interpolation));
+                                      d.Parameters.Interpolation),
+                        d.Parameters.Mode);
   d.PlanProgress();
 
   const StageCounts before = GetStageExecutionCounts();
@@ -766,6 +853,7 @@ VesselReformationLogic::GetWarnings() const
                                        &m_Internals->ExtractionWarning,
                                        &m_Internals->InputWarning,
                                        &m_Internals->RelaxWarning,
+                                       &m_Internals->RadiusWarning,
                                        &m_Internals->BackendNotice })
   {
     if (!warning->empty())

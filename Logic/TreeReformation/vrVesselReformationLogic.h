@@ -3,6 +3,7 @@
 #define vrVesselReformationLogic_h
 
 #include "itkCPRDepthImageFilter.h"
+#include "itkCPROcclusionProfile.h"
 #include "itkCPRResampleImageFilter.h"
 #include "itkCPRViewGeometry.h"
 #include "vrCenterlineExtraction.h"
@@ -11,6 +12,7 @@
 #include "vrReformationParameters.h"
 #include "vrRelaxBackend.h"
 #include "vrImageTypes.h"
+#include "vrOcclusionTableIO.h"
 #include "vrVolumeNode.h"
 
 #include <vtkSmartPointer.h>
@@ -41,6 +43,8 @@ struct StageTimes
   double Resample{ 0.0 };
   /** The cut surface. */
   double Surface{ 0.0 };
+  /** The occlusion profile over 180 angles (when it was computed anew). */
+  double OcclusionProfile{ 0.0 };
 };
 
 /** How many times each stage has run since the logic was made (docs/design.md 3.7's recompute rules are tested on
@@ -73,6 +77,17 @@ struct ReformationOutputs
   vtkSmartPointer<VolumeNode> RelaxedDepth;
   vtkSmartPointer<VolumeNode> FixedMask;
   vtkSmartPointer<VolumeNode> OwnerLabels;
+  /** Visibility mode: the branch whose lumen lies behind the visible one, per pixel (0 = none); null in the other
+   * modes. */
+  vtkSmartPointer<VolumeNode> HiddenLabels;
+  /** Visibility mode: each branch's centerline length and the part this view hides, with its name; empty in the
+   * other modes. */
+  std::vector<BranchOcclusionRow> BranchOcclusions;
+  /** The hidden length against the angle about the view's up axis (0-179 degrees), when the parameters ask for the
+   * least occluded angle or SetOcclusionProfileEnabled() is on; else null. */
+  std::shared_ptr<const itk::CPROcclusionProfile> OcclusionProfile;
+  /** Whether View's angle was chosen as the least occluded one (ReformationParameters::LeastOccludedAngle). */
+  bool                        AngleChosen{ false };
   vtkSmartPointer<VolumeNode> UnfilteredCPR;
   vtkSmartPointer<VolumeNode> CPR;
   /** The centerlines extracted from the segmentation node (RAS, radius per point, one polyline per branch); null
@@ -132,7 +147,8 @@ struct ReformationOutputs
  * memory, an unavailable backend, filter errors. AbortUpdate() stops a
  * running Update() through ITK's abort flag; that Update() throws vr::Cancelled. Warnings (most centerline points
  * outside the volume: wrong RAS/LPS; the backend auto falling back to the CPU; a steady solve that stopped at its bound
- * of outer iterations, with how far it got) do not stop the run; they go to the warning callback and GetWarnings().
+ * of outer iterations, with how far it got; branches without radii in Visibility mode) do not stop the run; they go
+ * to the warning callback and GetWarnings().
  *
  * \sa ReformationParameters, VolumeNode, CenterlineNode, itk::CPRDepthImageFilter,
  * itk::BilateralDepthRelaxFilter, itk::CPRResampleImageFilter
@@ -205,6 +221,15 @@ public:
   /** \return whether the cut surface is built. */
   bool
   GetSurfaceEnabled() const;
+
+  /** \param enabled whether Update() provides the occlusion profile of the tree about the view's up axis
+   * (Outputs.OcclusionProfile), computed again only when the centerlines, the up axis, the centre or the pixel
+   * spacing change (a new angle reuses it). Default off; the least occluded angle computes it anyway. */
+  void
+  SetOcclusionProfileEnabled(bool enabled);
+  /** \return whether the occlusion profile is provided. */
+  bool
+  GetOcclusionProfileEnabled() const;
 
   /** \param callback receives progress during Update(); may be empty. */
   void

@@ -3,7 +3,7 @@
 // and without bilateral depth filtering, written as pictures (the paper's Figure 2, or its thoracic figure).
 //
 //   VesselReformationDemo [--phantom runoff|thorax] [--output DIR] [--angle DEG] [--size W,H] [--iterations N]
-//                         [--solver jacobi|steady] [--backend B]
+//                         [--solver jacobi|steady] [--backend B] [--mode scanline|nearest|visibility]
 //   VesselReformationDemo --phantom runoff|thorax [--phantomSpacing MM] --writePhantom DIR
 //                         only writes the phantom's volume and exact centerlines there, as inputs for other tools
 
@@ -16,6 +16,7 @@
 #include "vrOutputWriter.h"
 #include "vrVesselReformationLogic.h"
 #include "vrVolumeIO.h"
+#include "vrVisibilityFigure.h"
 
 #include <CLI/CLI.hpp>
 
@@ -24,6 +25,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 namespace
 {
@@ -85,6 +87,7 @@ RunDemo(int argc, char * argv[])
   double                    spacing = 1.5;
   std::string               backendName = "auto";
   std::string               phantomFolder;
+  std::string               modeName = "scanline";
   app.add_option("--phantom", phantomName, "the synthetic CTA: runoff (legs) or thorax (aortic arch)")
     ->capture_default_str();
   app.add_option("--output", output, "folder for the pictures")->capture_default_str();
@@ -102,6 +105,12 @@ RunDemo(int argc, char * argv[])
                  phantomFolder,
                  "only write the phantom's volume (<phantom>.nrrd, HU) and exact centerlines "
                  "(<phantom>-centerlines.vtp, RAS as VMTK writes them) into this folder, and stop");
+  app
+    .add_option("--mode",
+                modeName,
+                "depth mode: scanline, nearest or visibility (visibility also writes visibility-comparison.png, "
+                "scanline beside visibility; without --angle at the angle that hides the most)")
+    ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   try
@@ -141,10 +150,16 @@ RunDemo(int argc, char * argv[])
     parameters.Backend = vr::ParseRelaxBackend(backendName, "--backend");
     parameters.Relaxation = 1.0;
     parameters.Solver = vr::ParseRelaxSolver(solverName, "--solver");
+    parameters.Mode = vr::ParseDepthMode(modeName, "--mode");
+    const bool visibility = parameters.Mode == itk::CPRDepthMode::Visibility;
     parameters.Validate();
     std::filesystem::create_directories(output);
-    std::cout << "VesselReformation demo: " << phantom.Description << ", view " << angle << " degrees about superior, "
-              << size[0] << " x " << size[1] << " pixels" << std::endl;
+    const bool         chooseAngle = visibility && angleOption->count() == 0;
+    std::ostringstream shownAngle;
+    shownAngle << angle << " degrees";
+    std::cout << "VesselReformation demo: " << phantom.Description << ", view "
+              << (chooseAngle ? std::string("at the angle that hides the most (below)") : shownAngle.str())
+              << " about superior, " << size[0] << " x " << size[1] << " pixels" << std::endl;
 
     auto start = Clock::now();
     phantom.Source->Update();
@@ -160,6 +175,24 @@ RunDemo(int argc, char * argv[])
     logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom.Tree, nodeName + "Centerlines"));
     logic.SetWarningCallback([](const std::string & message, const std::string &)
                              { std::cout << "  warning: " << message << std::endl; });
+    if (visibility)
+    {
+      // Where overlaps matter most: the occlusion profile over 0-179 degrees (the logic's, about the same view).
+      logic.SetOcclusionProfileEnabled(true);
+      logic.SetParameters(parameters);
+      const auto         profile = logic.Update().OcclusionProfile;
+      const unsigned int worst = profile->MostOccludedAngle();
+      const unsigned int best = profile->LeastOccludedAngle();
+      std::cout << "  occlusion profile: " << std::lround(profile->HiddenLength[worst]) << " of "
+                << std::lround(profile->TreeLength) << " mm hidden at " << worst << " degrees (the most), "
+                << std::lround(profile->HiddenLength[best]) << " mm at " << best << " degrees (the least)" << std::endl;
+      if (chooseAngle)
+      {
+        angle = worst;
+        parameters.AngleInDegrees = angle;
+        std::cout << "  view at " << angle << " degrees, where vessels hide each other the most" << std::endl;
+      }
+    }
 
     // The middle column: plain smoothing (a = 0) on the run-off phantom, as in the paper's Figure 2; on the thorax the
     // paper's a = 0.5 mm^-2, which leaves the arch's seams of 2-10 mm in place. The right column: our default J.
@@ -255,6 +288,34 @@ RunDemo(int argc, char * argv[])
       caption.str());
     const char * figureName = thorax ? "thorax-comparison.png" : "figure2-comparison.png";
     vr::WriteRGBPNG(figure, path(figureName));
+    if (visibility)
+    {
+      // Scanline beside visibility where vessels overlap, the hidden stretches dashed; then what lies hidden, through
+      // the one writer.
+      parameters.Anisotropy.reset();
+      const vr::ReformationOutputs shown = vr::WriteVisibilityFigure(logic,
+                                                                     parameters,
+                                                                     phantom.Tree,
+                                                                     thorax ? "thoracic" : "run-off",
+                                                                     Window,
+                                                                     Level,
+                                                                     path("visibility-comparison.png"));
+      vr::OutputSelection          hidden;
+      hidden.CPR = hidden.CPRPNG = hidden.UnfilteredCPR = hidden.DepthMaps = hidden.FixedMask = false;
+      hidden.OwnerLabels = hidden.CutSurface = false;
+      hidden.HiddenLabels = hidden.HiddenLengths = hidden.OcclusionProfile = true;
+      vr::WriteOutputs(shown, hidden, output, Window, Level);
+      double hiddenLength = 0.0;
+      for (const auto & row : shown.BranchOcclusions)
+      {
+        hiddenLength += row.HiddenLength;
+        if (row.HiddenLength >= 1.0)
+        {
+          std::cout << "  hidden: " << row.Name << " " << std::lround(row.HiddenLength) << " mm" << std::endl;
+        }
+      }
+      std::cout << "  hidden in all: " << std::lround(hiddenLength) << " mm" << std::endl;
+    }
 
     std::cout << "Wrote to " << std::filesystem::absolute(output).string() << ":" << std::endl
               << "  cpr-unfiltered.png, cpr-filtered.png     the CPR before and after bilateral filtering" << std::endl
@@ -267,6 +328,14 @@ RunDemo(int argc, char * argv[])
               << "  cut-surface.vtp                          the relaxed cut surface in 3D (LPS, SPACE recorded, as 3D "
                  "Slicer stores models), coloured by HU"
               << std::endl;
+    if (visibility)
+    {
+      std::cout << "  visibility-comparison.png                scanline | visibility, hidden stretches dashed"
+                << std::endl
+                << "  hidden-labels.nrrd, hidden-lengths.csv, occlusion-profile.csv  what lies hidden, and where to "
+                   "look from"
+                << std::endl;
+    }
     return EXIT_SUCCESS;
   }
   catch (const vr::InputError & error)

@@ -37,6 +37,9 @@ const std::pair<const char *, vr::ReformationOutput> OutputFlags[] = {
   { "outputRelaxedDepth", vr::ReformationOutput::RelaxedDepth },
   { "outputMask", vr::ReformationOutput::FixedMask },
   { "outputLabels", vr::ReformationOutput::OwnerLabels },
+  { "outputHiddenLabels", vr::ReformationOutput::HiddenLabels },
+  { "outputHiddenLengths", vr::ReformationOutput::HiddenLengths },
+  { "outputOcclusionProfile", vr::ReformationOutput::OcclusionProfile },
   { "outputUnfilteredCPR", vr::ReformationOutput::UnfilteredCPR },
   { "outputSurface", vr::ReformationOutput::CutSurface },
   { "outputPNG", vr::ReformationOutput::CPRPNG },
@@ -57,6 +60,15 @@ Milliseconds(double seconds)
   return text.str();
 }
 
+/** \return \a value with \a decimals decimals. */
+std::string
+Fixed(double value, int decimals)
+{
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(decimals) << value;
+  return text.str();
+}
+
 vr::ReformationParameters
 ParametersFrom(const vr::CLIArguments & arguments)
 {
@@ -64,7 +76,9 @@ ParametersFrom(const vr::CLIArguments & arguments)
   const vr::UpAxisChoice    up = vr::ParseUpAxis(arguments.String("up"), "--up");
   parameters.AutomaticUp = up.Automatic;
   parameters.Up = up.Vector;
-  parameters.AngleInDegrees = arguments.Double("angle");
+  const vr::AngleChoice angle = vr::ParseAngle(arguments.String("angle"), arguments.Spelling("angle"));
+  parameters.AngleInDegrees = angle.Degrees;
+  parameters.LeastOccludedAngle = angle.LeastOccluded;
   if (arguments.Given("size"))
   {
     parameters.ImageSize = vr::ParseImageSize(arguments.String("size"), "--size");
@@ -175,6 +189,15 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   }
   logic.SetParameters(parameters);
   logic.SetSurfaceEnabled(writer.Has(vr::ReformationOutput::CutSurface));
+  logic.SetOcclusionProfileEnabled(writer.Has(vr::ReformationOutput::OcclusionProfile));
+  if ((writer.Has(vr::ReformationOutput::HiddenLabels) || writer.Has(vr::ReformationOutput::HiddenLengths)) &&
+      parameters.Mode != itk::CPRDepthMode::Visibility)
+  {
+    // Refused before the work: only the visibility mode knows what lies hidden.
+    throw vr::InputError((writer.Has(vr::ReformationOutput::HiddenLabels) ? arguments.Spelling("outputHiddenLabels")
+                                                                          : arguments.Spelling("outputHiddenLengths")) +
+                         ": what lies hidden is computed only with " + arguments.Spelling("mode") + " visibility");
+  }
   logic.SetWarningCallback(
     [&progress, &arguments](const std::string & message, const std::string & parameter)
     {
@@ -230,6 +253,18 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
   progress.SetReturnValue("backendUsed", results.RelaxBackendUsed);
   progress.SetReturnValue("imageSize", std::to_string(size[0]) + "," + std::to_string(size[1]));
   progress.SetReturnValue("numberOfBranches", std::to_string(branches));
+  double hidden = 0.0;
+  double length = 0.0;
+  for (const vr::BranchOcclusionRow & row : results.BranchOcclusions)
+  {
+    hidden += row.HiddenLength;
+    length += row.Length;
+  }
+  std::ostringstream angleUsed;
+  angleUsed << results.View.GetAngleInDegrees();
+  progress.SetReturnValue("angleUsed", angleUsed.str());
+  progress.SetReturnValue("hiddenLength", Fixed(hidden, 3));
+  progress.SetReturnValue("hiddenPercent", Fixed(length > 0.0 ? 100.0 * hidden / length : 0.0, 3));
   progress.SetReturnValue("conversionTime", Milliseconds(times.Conversion));
   progress.SetReturnValue("depthTime", Milliseconds(times.Depth));
   progress.SetReturnValue("relaxTime", Milliseconds(times.Relax));
@@ -249,6 +284,32 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
           << results.DepthBackendUsed << " (" << results.DepthBackendReason << "), resampling on "
           << results.ResampleBackendUsed << " (" << results.ResampleBackendReason << ")";
   progress.Print(std::cout, summary.str());
+  if (results.AngleChosen)
+  {
+    const itk::CPROcclusionProfile & profile = *results.OcclusionProfile;
+    const unsigned int               best = profile.LeastOccludedAngle();
+    const unsigned int               worst = profile.MostOccludedAngle();
+    progress.Print(std::cout,
+                   "VesselReformation: angle best: " + std::to_string(best) + " degrees hides " +
+                     Fixed(profile.HiddenLength[best], 1) + " mm (" + Fixed(100.0 * profile.HiddenFraction(best), 1) +
+                     " % of the tree), the least of 0-179 degrees (the most: " + Fixed(profile.HiddenLength[worst], 1) +
+                     " mm at " + std::to_string(worst) + " degrees)");
+  }
+  if (parameters.Mode == itk::CPRDepthMode::Visibility)
+  {
+    std::string list;
+    for (const vr::BranchOcclusionRow & row : results.BranchOcclusions)
+    {
+      if (row.HiddenLength > 0.05)
+      {
+        list += (list.empty() ? "" : "; ") + (row.Name.empty() ? "branch " + std::to_string(row.BranchId) : row.Name) +
+                " " + Fixed(row.HiddenLength, 1) + " mm";
+      }
+    }
+    progress.Print(std::cout,
+                   "VesselReformation: hidden behind other vessels at " + angleUsed.str() + " degrees: " +
+                     Fixed(hidden, 1) + " mm of " + Fixed(length, 1) + " mm" + (list.empty() ? "" : " (" + list + ")"));
+  }
 }
 } // namespace
 

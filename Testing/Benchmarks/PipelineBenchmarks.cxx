@@ -6,17 +6,25 @@
 //   DepthResample/W/H  both, for a new angle: what rotating costs without relaxing
 //   Pipeline_CPU/W/H   depth + relax (500 iterations, CPU) + resample for a new angle (the paper's "total")
 //   Pipeline_OpenCL/W/H  the same with the OpenCL relax (the paper's "total with GPU"), when built with OpenCL
+//   Depth_Visibility/W/H  the depth map in Visibility mode (issue 38), the same angles as Depth: its ratio to Depth
+//   Depth_Overlap/W/H, Depth_Visibility_Overlap/W/H  both modes at 120-130 degrees, where the legs overlap
+//   OcclusionProfile/512/1024  the hidden length at 180 angles, computed from the segments
+//   (itk::ComputeCPROcclusionProfile) OcclusionProfile_DepthMaps/512/1024  its plain reference: 180 depth maps in
+//   Visibility mode, their hidden lengths
 // Each iteration turns the view by a quarter degree, so every depth map is new.
 #include "vrBenchmarkScene.h"
 
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRDepthImageFilter.h"
+#include "itkCPROcclusionProfile.h"
 #include "itkCPRResampleImageFilter.h"
 #ifdef VESSELREFORMATION_HAS_OPENCL
 #include "itkOpenCLBilateralDepthRelaxFilter.h"
 #endif
 
 #include <benchmark/benchmark.h>
+
+#include <vector>
 
 namespace
 {
@@ -32,6 +40,13 @@ double
 AngleOfIteration(std::size_t iteration)
 {
   return vr::benchmarks::DesignAngle + 0.25 * static_cast<double>(iteration % 40);
+}
+
+/** Angles 120, 120.25, ... 129.75, 120, ...: the legs of the run-off phantom overlap (the scanline ladder). */
+double
+OverlapAngleOfIteration(std::size_t iteration)
+{
+  return 120.0 + 0.25 * static_cast<double>(iteration % 40);
 }
 
 DepthFilter::Pointer
@@ -65,6 +80,84 @@ Depth(benchmark::State & state)
       vr::benchmarks::PaperView(state.range(0), state.range(1), AngleOfIteration(++iteration)));
     depth->Update();
     benchmark::DoNotOptimize(depth->GetDepthOutput()->GetBufferPointer());
+  }
+}
+
+void
+DepthInMode(benchmark::State & state, itk::CPRDepthMode mode, double (*angleOfIteration)(std::size_t))
+{
+  auto depth = MakeDepthFilter(state.range(0), state.range(1));
+  depth->SetMode(mode);
+  depth->Update(); // not timed: the workspace's first allocation
+  std::size_t iteration = 0;
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    depth->SetViewSpecification(
+      vr::benchmarks::PaperView(state.range(0), state.range(1), angleOfIteration(++iteration)));
+    depth->Update();
+    benchmark::DoNotOptimize(depth->GetDepthOutput()->GetBufferPointer());
+  }
+}
+
+void
+DepthVisibility(benchmark::State & state)
+{
+  DepthInMode(state, itk::CPRDepthMode::Visibility, AngleOfIteration);
+}
+
+void
+DepthOverlap(benchmark::State & state)
+{
+  DepthInMode(state, itk::CPRDepthMode::Scanline, OverlapAngleOfIteration);
+}
+
+void
+DepthVisibilityOverlap(benchmark::State & state)
+{
+  DepthInMode(state, itk::CPRDepthMode::Visibility, OverlapAngleOfIteration);
+}
+
+itk::CPRViewGeometry
+ResolvedPaperView(unsigned int width, unsigned int height)
+{
+  auto depth = MakeDepthFilter(width, height);
+  depth->UpdateOutputInformation();
+  return depth->GetView();
+}
+
+void
+OcclusionProfile(benchmark::State & state)
+{
+  const itk::CPRViewGeometry view = ResolvedPaperView(state.range(0), state.range(1));
+  const auto &               tree = PhantomScene::Instance().GetCenterlineTree();
+  auto                       threader = itk::MultiThreaderBase::New();
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    const itk::CPROcclusionProfile profile = itk::ComputeCPROcclusionProfile(tree, view, threader);
+    benchmark::DoNotOptimize(profile.HiddenLength.data());
+  }
+}
+
+void
+OcclusionProfileDepthMaps(benchmark::State & state)
+{
+  auto depth = MakeDepthFilter(state.range(0), state.range(1));
+  depth->SetMode(itk::CPRDepthMode::Visibility);
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    std::vector<double> hidden;
+    for (unsigned int angle = 0; angle < itk::CPROcclusionProfile::NumberOfAngles; ++angle)
+    {
+      depth->SetViewSpecification(vr::benchmarks::PaperView(state.range(0), state.range(1), angle));
+      depth->Update();
+      double sum = 0.0;
+      for (const auto & entry : depth->GetBranchOcclusions())
+      {
+        sum += entry.HiddenLength;
+      }
+      hidden.push_back(sum);
+    }
+    benchmark::DoNotOptimize(hidden.data());
   }
 }
 
@@ -166,7 +259,33 @@ const bool Registered = []
         ->Repetitions(10)
         ->ReportAggregatesOnly();
     }
+    for (const auto & stage : {
+           std::pair<const char *, void (*)(benchmark::State &)>{ "Depth_Visibility", DepthVisibility },
+           { "Depth_Overlap", DepthOverlap },
+           { "Depth_Visibility_Overlap", DepthVisibilityOverlap },
+         })
+    {
+      benchmark::RegisterBenchmark(stage.first, stage.second)
+        ->Args({ size.first, size.second })
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Repetitions(10)
+        ->ReportAggregatesOnly();
+    }
   }
+  benchmark::RegisterBenchmark("OcclusionProfile", OcclusionProfile)
+    ->Args({ 512, 1024 })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Repetitions(10)
+    ->ReportAggregatesOnly();
+  benchmark::RegisterBenchmark("OcclusionProfile_DepthMaps", OcclusionProfileDepthMaps)
+    ->Args({ 512, 1024 })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->ReportAggregatesOnly();
   return true;
 }();
 } // namespace

@@ -44,6 +44,10 @@ OPENCL_RELAX_TARGET = 2.0
 STEADY_RATIO_TARGET = 2.0
 STEADY_GROWTH_TARGET = 5.0
 STEADY_PREFIX = "Relax_Steady"
+# Issue 38: the Visibility depth map within this factor of the scanline one in the same run, and the occlusion
+# profile of 180 angles within this many ms at 512 x 1024.
+MAXIMUM_VISIBILITY_OVER_SCANLINE = 2.0
+MAXIMUM_OCCLUSION_PROFILE_MS = 200.0
 # Issue 22: on a machine with 16 cores, Relax_CPU/512/1024/threads:16 at least this much faster than threads:2.
 MINIMUM_SCALING_16_OVER_2 = 5.0
 
@@ -183,6 +187,22 @@ def table(report):
         verdict = "met" if speed_up >= MINIMUM_SPEED_UP else "MISSED"
         checks.append(f"- CPU relax ≥ {MINIMUM_SPEED_UP:.0f}× the plain reference in the same run: "
                       f"{speed_up:.1f}×, {verdict}")
+
+    for visible, scan, where in (("Depth_Visibility", "Depth", "30-40°"),
+                                 ("Depth_Visibility_Overlap", "Depth_Overlap", "120-130°, legs overlapping")):
+        value, reference = ours(visible, big), ours(scan, big)
+        if value and reference:
+            verdict = "met" if value / reference <= MAXIMUM_VISIBILITY_OVER_SCANLINE else "MISSED"
+            checks.append(f"- visibility depth ≤ {MAXIMUM_VISIBILITY_OVER_SCANLINE:.0f}× scanline in the same run "
+                          f"({where}): {milliseconds(value)} against {milliseconds(reference)}, "
+                          f"{value / reference:.2f}×, {verdict}")
+    profile, brute = ours("OcclusionProfile", big), ours("OcclusionProfile_DepthMaps", big)
+    if profile:
+        verdict = "met" if profile <= MAXIMUM_OCCLUSION_PROFILE_MS else "MISSED"
+        checks.append(f"- occlusion profile, 180 angles ≤ {MAXIMUM_OCCLUSION_PROFILE_MS:.0f} ms: "
+                      f"{milliseconds(profile)}, {verdict}"
+                      + (f"; 180 visibility depth maps (its plain reference) {milliseconds(brute)}, "
+                         f"{ratio(brute, profile)} slower" if brute else ""))
 
     two, sixteen = teams.get((big[0], big[1], 2)), teams.get((big[0], big[1], 16))
     cpus = int(context.get("num_cpus", 0) or 0)

@@ -5,7 +5,7 @@
 // code are not counted). The growth of the peak resident memory is printed beside it.
 //
 //   MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom runoff|thorax|aorta] [--cubic]
-//                            [--tolerance F]
+//                            [--mode scanline|nearest|visibility] [--tolerance F]
 //
 // With --cubic the measured update interpolates cubically after a linear warm-up, so that it computes the B-spline
 // coefficients of the volume in both resamplers, which the check counts besides the view (the volume itself is
@@ -66,7 +66,8 @@ main(int argc, char ** argv)
 {
   if (argc < 4)
   {
-    std::cerr << "usage: MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--tolerance F]\n";
+    std::cerr << "usage: MeasureReformationMemory W H jacobi|steady [surface|nosurface] [--phantom P] [--mode M] "
+                 "[--tolerance F]\n";
     return 2;
   }
   const unsigned int width = static_cast<unsigned int>(std::atoi(argv[1]));
@@ -76,12 +77,17 @@ main(int argc, char ** argv)
   double             tolerance = -1.0;
   std::string        phantomName = "runoff";
   bool               cubic = false;
+  itk::CPRDepthMode  mode = itk::CPRDepthMode::Scanline;
   for (int k = 4; k < argc; ++k)
   {
     const std::string argument = argv[k];
     if (argument == "nosurface")
     {
       surface = false;
+    }
+    else if (argument == "--mode" && k + 1 < argc)
+    {
+      mode = vr::ParseDepthMode(argv[++k], "--mode");
     }
     else if (argument == "--phantom" && k + 1 < argc)
     {
@@ -122,6 +128,7 @@ main(int argc, char ** argv)
     parameters.Backend = vr::RelaxBackend::CPU;
     parameters.Solver =
       solver == "steady" ? itk::BilateralDepthRelaxSolver::Steady : itk::BilateralDepthRelaxSolver::Jacobi;
+    parameters.Mode = mode;
     parameters.ImageSize[0] = 16;
     parameters.ImageSize[1] = 32;
     logic.SetParameters(parameters);
@@ -151,10 +158,11 @@ main(int argc, char ** argv)
       static_cast<double>(logic.GetResampleFilter()->GetVolume()->GetBufferedRegion().GetNumberOfPixels());
     const double volumeSampling = vr::EstimateVolumeSamplingBytes(
       voxels, cubic ? itk::CPRInterpolationMode::Cubic : itk::CPRInterpolationMode::Linear);
-    const double predicted = vr::EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface, volumeSampling);
+    const double predicted =
+      vr::EstimateReformationBytes(size, relax.GetWorkspaceBytes(size), surface, volumeSampling, mode);
     const double pixels = static_cast<double>(width) * height;
     auto         percent = [measured](double bytes) { return 100.0 * (bytes - measured) / measured; };
-    std::cout << phantomName << ", " << width << " x " << height << " " << solver
+    std::cout << phantomName << " (" << vr::ToString(mode) << "), " << width << " x " << height << " " << solver
               << (surface ? " with surface" : " without surface") << ", "
               << itk::MultiThreaderBase::GetGlobalDefaultNumberOfThreads() << " threads: allocated at the peak "
               << measured / pixels << " B/pixel (peak resident growth " << resident / pixels << "); predicted "

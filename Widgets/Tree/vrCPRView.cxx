@@ -2,6 +2,7 @@
 #include "vrCPRView.h"
 
 #include "vrBranchColors.h"
+#include "vrCenterlineOverlay.h"
 #include "vrFilterSettingsText.h"
 #include "vrOpenGLRenderer.h"
 
@@ -268,7 +269,9 @@ CPRView::SetResult(std::shared_ptr<const ReformationResult> result)
   const bool   refit = frameWidth != m_FrameSize[0] || frameHeight != m_FrameSize[1] ||
                      frame.GetSpacing()[0] != m_FrameSpacing[0] || frame.GetSpacing()[1] != m_FrameSpacing[1] ||
                      !m_Result;
-  const bool newCenterlines = !m_Result || m_Result->Inputs != result->Inputs || m_Result->Outputs.View != view;
+  // Hidden stretches come with a new depth map (its hidden labels): the overlay follows.
+  const bool newCenterlines = !m_Result || m_Result->Inputs != result->Inputs || m_Result->Outputs.View != view ||
+                              m_Result->Outputs.HiddenLabels != result->Outputs.HiddenLabels;
   m_Result = std::move(result);
   m_ImageSize[0] = static_cast<int>(view.GetSize()[0]);
   m_ImageSize[1] = static_cast<int>(view.GetSize()[1]);
@@ -490,32 +493,9 @@ CPRView::UpdateCenterlines()
   {
     return;
   }
-  const auto &                 view = m_Result->Outputs.View;
-  vtkNew<vtkPoints>            points;
-  vtkNew<vtkCellArray>         lines;
-  vtkNew<vtkUnsignedCharArray> colors;
-  colors->SetNumberOfComponents(3);
-  colors->SetName("BranchColors");
-  for (const auto & branch : m_Result->Inputs->Tree.GetBranches())
-  {
-    std::vector<vtkIdType> ids;
-    for (const auto & point : branch.Points)
-    {
-      const auto coordinates = view.ToView(point);
-      ids.push_back(points->InsertNextPoint(
-        m_Origin[0] + coordinates.Column * m_Spacing[0], m_Origin[1] + coordinates.Row * m_Spacing[1], 0.0));
-    }
-    if (ids.size() < 2)
-    {
-      continue;
-    }
-    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    const auto rgb = BranchColor(branch.Id);
-    colors->InsertNextTuple3(255.0 * rgb[0], 255.0 * rgb[1], 255.0 * rgb[2]);
-  }
-  m_CenterlinePolyData->SetPoints(points);
-  m_CenterlinePolyData->SetLines(lines);
-  m_CenterlinePolyData->GetCellData()->SetScalars(colors);
+  // Hidden stretches (Visibility mode) dashed: their own file draws them.
+  m_CenterlinePolyData->ShallowCopy(BuildCenterlineOverlay(
+    m_Result->Inputs->Tree, m_Result->Outputs.View, m_Result->Outputs.BranchOcclusions, m_Origin, m_Spacing));
 }
 
 void

@@ -575,6 +575,10 @@ ModulePanel::GetOutputSelection() const
   selection.FixedMask = m_Ui->saveMaskCheck->isChecked();
   selection.OwnerLabels = m_Ui->saveLabelsCheck->isChecked();
   selection.CutSurface = m_Ui->saveSurfaceCheck->isChecked();
+  // What lies hidden exists only in the visibility mode; it goes with the owner labels.
+  const bool visibility = m_Ui->modeCombo->currentText() == QString(ToString(itk::CPRDepthMode::Visibility));
+  selection.HiddenLabels = selection.OwnerLabels && visibility;
+  selection.HiddenLengths = selection.OwnerLabels && visibility;
   return selection;
 }
 

@@ -36,6 +36,12 @@ PixelReadout::ToText() const
                    .arg(intensity)
                    .arg(Depth, 0, 'f', 1);
   text += Branch > 0 ? QStringLiteral("  %1").arg(QString::fromStdString(BranchName)) : QStringLiteral("  no branch");
+  if (HiddenBranch > 0)
+  {
+    text += HiddenBranch == Branch
+              ? QStringLiteral(", in front of another part of itself")
+              : QStringLiteral(", in front of the %1").arg(QString::fromStdString(HiddenBranchName));
+  }
   if (Unfiltered)
   {
     text += QStringLiteral("  (unfiltered)");
@@ -67,9 +73,14 @@ ReadPixel(const ReformationResult & result, bool unfiltered, int column, int row
   readout.Intensity = ScalarAt(cpr, column, row);
   readout.Depth = ScalarAt(depth, column, row);
   readout.Branch = static_cast<int>(ScalarAt(outputs.OwnerLabels, column, row));
+  readout.HiddenBranch = static_cast<int>(ScalarAt(outputs.HiddenLabels, column, row));
   if (readout.Branch > 0 && result.Inputs)
   {
     readout.BranchName = result.Inputs->BranchName(readout.Branch);
+  }
+  if (readout.HiddenBranch > 0 && result.Inputs)
+  {
+    readout.HiddenBranchName = result.Inputs->BranchName(readout.HiddenBranch);
   }
   if (result.Inputs)
   {

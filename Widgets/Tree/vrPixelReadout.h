@@ -33,9 +33,12 @@ struct PixelReadout
   /** The owner label (branch id, 0 = none) and its name. */
   int         Branch{ 0 };
   std::string BranchName;
+  /** Visibility mode: the branch whose lumen lies behind the visible one here (0 = none), and its name. */
+  int         HiddenBranch{ 0 };
+  std::string HiddenBranchName;
 
   /** \return one line for the status bar: "(i, j)  RAS (x, y, z) mm  v HU  depth d mm  branch" ("value v" for
-   * intensities without a unit). */
+   * intensities without a unit), and where a vessel lies hidden behind it, "branch, in front of hidden branch". */
   QString
   ToText() const;
 };

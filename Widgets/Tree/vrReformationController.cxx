@@ -503,6 +503,8 @@ ReformationController::Update(const Job &                   job,
   }
   m_Logic.SetParameters(parameters);
   m_Logic.SetSurfaceEnabled(surface);
+  // The occlusion strip's profile at the full view's spacing: a preview's would be computed again at its own.
+  m_Logic.SetOcclusionProfileEnabled(factor == 1);
   m_ProgressStarted = false;
   const StageCounts before = m_Logic.GetStageExecutionCounts();
   const auto        start = Clock::now();

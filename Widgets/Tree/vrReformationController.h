@@ -60,7 +60,8 @@ struct ReformationResult
    * preview over the same millimetres. */
   itk::CPRViewGeometry FullView;
   /** The logic's output nodes (the logic makes new nodes when a stage reruns, so these stay as they are). Surface is
-   * null in the first result of a request and set in the second one (Final requests only). */
+   * null in the first result of a request and set in the second one (Final requests only). OcclusionProfile is set
+   * in full-resolution results (at the full view's spacing), null in previews. */
   ReformationOutputs Outputs;
   /** The data the outputs were computed from (the overlays' centerlines, branch names). */
   std::shared_ptr<const ReformationInputs> Inputs;

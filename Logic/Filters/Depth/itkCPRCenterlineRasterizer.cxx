@@ -9,13 +9,7 @@ namespace itk::detail
 {
 namespace
 {
-struct ProjectedPoint
-{
-  double Column;
-  double Row;
-  double Depth;
-  double Radius;
-};
+using ProjectedPoint = CPRProjectedPoint;
 
 /** Whether a deposit of \a depth by \a owner replaces the pixel's \a current owner and \a currentDepth: the nearer
  * wins, then the smaller branch id; on a tie the first deposit stays. */
@@ -109,37 +103,6 @@ private:
   SizeValueType                     m_Height;
 };
 
-/** The pixel cell holding a view coordinate; -1 (outside every image) for one beyond what a long holds. */
-long
-CellOf(double coordinate)
-{
-  constexpr double Limit = 1e15;
-  if (!(coordinate > -Limit && coordinate < Limit))
-  {
-    return -1;
-  }
-  return static_cast<long>(std::floor(coordinate + 0.5));
-}
-
-/** Liang-Barsky: narrows [t0, t1] to the part of a + t (b - a) with low <= coordinate <= high. */
-bool
-ClipAxis(double a, double delta, double low, double high, double & t0, double & t1)
-{
-  if (delta == 0.0)
-  {
-    return a >= low && a <= high;
-  }
-  double enter = (low - a) / delta;
-  double leave = (high - a) / delta;
-  if (enter > leave)
-  {
-    std::swap(enter, leave);
-  }
-  t0 = std::max(t0, enter);
-  t1 = std::min(t1, leave);
-  return t0 <= t1;
-}
-
 template<typename TWriter>
 void
 RasterizeSegment(const ProjectedPoint & a,
@@ -149,69 +112,20 @@ RasterizeSegment(const ProjectedPoint & a,
                  SizeValueType          width,
                  SizeValueType          height)
 {
-  const double dx = b.Column - a.Column;
-  const double dy = b.Row - a.Row;
-  const double lengthSquared = dx * dx + dy * dy;
-  if (lengthSquared < 1e-18)
+  if (IsDegenerateSegment(a, b))
   {
     writer.Deposit(CellOf(a.Column), CellOf(a.Row), a.Depth, a.Radius, owner);
     writer.Deposit(CellOf(b.Column), CellOf(b.Row), b.Depth, b.Radius, owner);
     return;
   }
-  double t0 = 0.0;
-  double t1 = 1.0;
-  if (!ClipAxis(a.Column, dx, -0.5, width - 0.5, t0, t1) || !ClipAxis(a.Row, dy, -0.5, height - 0.5, t0, t1))
-  {
-    return;
-  }
-  auto depositCell = [&](long column, long row)
-  {
-    // Depth and radius at the segment point nearest the pixel centre.
-    double t = ((column - a.Column) * dx + (row - a.Row) * dy) / lengthSquared;
-    t = std::min(1.0, std::max(0.0, t));
-    writer.Deposit(column, row, a.Depth + t * (b.Depth - a.Depth), a.Radius + t * (b.Radius - a.Radius), owner);
-  };
-
-  // Amanatides-Woo traversal of the pixel cells [i - 0.5, i + 0.5) x [j - 0.5, j + 0.5).
-  const double startColumn = a.Column + t0 * dx;
-  const double startRow = a.Row + t0 * dy;
-  long         column = std::min<long>(std::max<long>(CellOf(startColumn), 0), static_cast<long>(width) - 1);
-  long         row = std::min<long>(std::max<long>(CellOf(startRow), 0), static_cast<long>(height) - 1);
-  const long   stepColumn = dx > 0.0 ? 1 : -1;
-  const long   stepRow = dy > 0.0 ? 1 : -1;
-  const double infinity = std::numeric_limits<double>::infinity();
-  const double deltaColumn = dx != 0.0 ? 1.0 / std::abs(dx) : infinity;
-  const double deltaRow = dy != 0.0 ? 1.0 / std::abs(dy) : infinity;
-  double       nextColumn = dx != 0.0 ? (column + 0.5 * stepColumn - a.Column) / dx : infinity;
-  double       nextRow = dy != 0.0 ? (row + 0.5 * stepRow - a.Row) / dy : infinity;
-
-  const long maximumSteps = static_cast<long>(width + height) + 4;
-  for (long step = 0; step < maximumSteps; ++step)
-  {
-    depositCell(column, row);
-    const double nextBoundary = std::min(nextColumn, nextRow);
-    if (nextBoundary > t1)
-    {
-      break;
-    }
-    if (nextColumn < nextRow)
-    {
-      column += stepColumn;
-      nextColumn += deltaColumn;
-    }
-    else if (nextRow < nextColumn)
-    {
-      row += stepRow;
-      nextRow += deltaRow;
-    }
-    else
-    {
-      column += stepColumn;
-      row += stepRow;
-      nextColumn += deltaColumn;
-      nextRow += deltaRow;
-    }
-  }
+  // Depth and radius at the segment point nearest the pixel centre.
+  TraverseSegmentCells(
+    a,
+    b,
+    width,
+    height,
+    [&](long column, long row, double t)
+    { writer.Deposit(column, row, a.Depth + t * (b.Depth - a.Depth), a.Radius + t * (b.Radius - a.Radius), owner); });
 }
 
 /** Projects every branch of \a tree into \a view and hands each pixel its segments pass through to \a writer. */
@@ -219,18 +133,12 @@ template<typename TWriter>
 void
 RasterizeTree(const CenterlineTree & tree, const CPRViewGeometry & view, TWriter & writer)
 {
-  const SizeValueType width = view.GetSize()[0];
-  const SizeValueType height = view.GetSize()[1];
+  const SizeValueType         width = view.GetSize()[0];
+  const SizeValueType         height = view.GetSize()[1];
+  std::vector<ProjectedPoint> projected;
   for (const auto & branch : tree.GetBranches())
   {
-    std::vector<ProjectedPoint> projected;
-    projected.reserve(branch.Points.size());
-    for (std::size_t p = 0; p < branch.Points.size(); ++p)
-    {
-      const auto   coordinates = view.ToView(branch.Points[p]);
-      const double radius = branch.HasRadii() ? branch.Radii[p] : std::numeric_limits<double>::quiet_NaN();
-      projected.push_back({ coordinates.Column, coordinates.Row, coordinates.Depth, radius });
-    }
+    ProjectBranch(branch, view, projected);
     const auto owner = static_cast<uint32_t>(branch.Id);
     if (projected.size() == 1)
     {
@@ -244,6 +152,19 @@ RasterizeTree(const CenterlineTree & tree, const CPRViewGeometry & view, TWriter
   }
 }
 } // namespace
+
+void
+ProjectBranch(const CenterlineBranch & branch, const CPRViewGeometry & view, std::vector<CPRProjectedPoint> & projected)
+{
+  projected.clear();
+  projected.reserve(branch.Points.size());
+  for (std::size_t p = 0; p < branch.Points.size(); ++p)
+  {
+    const auto   coordinates = view.ToView(branch.Points[p]);
+    const double radius = branch.HasRadii() ? branch.Radii[p] : std::numeric_limits<double>::quiet_NaN();
+    projected.push_back({ coordinates.Column, coordinates.Row, coordinates.Depth, radius });
+  }
+}
 
 std::size_t
 CPRCenterlinePixels::CountCenterlinePixels() const

@@ -11,7 +11,15 @@ namespace itk
 std::ostream &
 operator<<(std::ostream & os, CPRDepthMode mode)
 {
-  return os << (mode == CPRDepthMode::Scanline ? "Scanline" : "Nearest");
+  switch (mode)
+  {
+    case CPRDepthMode::Nearest:
+      return os << "Nearest";
+    case CPRDepthMode::Visibility:
+      return os << "Visibility";
+    default:
+      return os << "Scanline";
+  }
 }
 
 namespace detail
@@ -255,6 +263,7 @@ AssignDepth(const CPRCenterlinePixels & pixels,
   result.Depth.assign(count, 0.0f);
   result.Fixed.assign(count, 0);
   result.Owner.assign(count, 0);
+  result.Hidden.clear();
   if (mode == CPRDepthMode::Scanline)
   {
     AssignScanline(pixels, spacing[0], fixLumen, threader, result);

@@ -2,6 +2,7 @@
 #ifndef itkCPRDepthComputation_h
 #define itkCPRDepthComputation_h
 
+#include "itkCPRBranchOcclusion.h"
 #include "itkCPRDepthMode.h"
 #include "itkCPRDepthWorkspace.h"
 #include "itkCPRViewGeometry.h"
@@ -10,6 +11,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace itk
 {
@@ -26,11 +28,15 @@ struct CPRDepthResult
   const float *         Depth;
   const unsigned char * Fixed;
   const uint32_t *      Owner;
+  /** Visibility mode: the hidden labels and each branch's hidden length; null in the other modes. */
+  const uint32_t *                        Hidden;
+  const std::vector<CPRBranchOcclusion> * Occlusion;
 };
 
 /** Rasterises \a tree into \a view (centerline pixels, docs/design.md 3.4 step 1), then assigns every pixel its depth,
  * owner and fixed flag by \a mode; \a rasterized is called in between. Creates \a workspace when null. The
- * non-template work of every CPRDepthImageFilter, compiled once. */
+ * non-template work of every CPRDepthImageFilter, compiled once. In Visibility mode \a fixLumen applies to the
+ * branches with radii; the caller of the other modes passes it only when every branch has them. */
 CPRDepthResult
 ComputeCPRDepth(const CenterlineTree &        tree,
                 const CPRViewGeometry &       view,

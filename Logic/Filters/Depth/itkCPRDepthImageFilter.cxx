@@ -5,6 +5,7 @@
 
 #include "itkCPRCenterlineRasterizer.h"
 #include "itkCPRDepthAssignment.h"
+#include "itkCPRVisibilityDepth.h"
 
 namespace itk
 {
@@ -12,8 +13,10 @@ namespace detail
 {
 struct CPRDepthWorkspace
 {
-  CPRCenterlinePixels CenterlinePixels;
-  CPRDepthAssignment  Assignment;
+  CPRCenterlinePixels             CenterlinePixels;
+  CPRDepthAssignment              Assignment;
+  CPRVisibilityWorkspace          Visibility;
+  std::vector<CPRBranchOcclusion> Occlusion;
 };
 
 void
@@ -40,8 +43,25 @@ ComputeCPRDepth(const CenterlineTree &        tree,
   {
     rasterized();
   }
-  AssignDepth(workspace->CenterlinePixels, mode, view.GetSpacing(), fixLumen, threader, workspace->Assignment);
-  return { workspace->Assignment.Depth.data(), workspace->Assignment.Fixed.data(), workspace->Assignment.Owner.data() };
+  CPRDepthAssignment & assignment = workspace->Assignment;
+  if (mode == CPRDepthMode::Visibility)
+  {
+    AssignVisibility(tree,
+                     view,
+                     workspace->CenterlinePixels,
+                     fixLumen,
+                     threader,
+                     workspace->Visibility,
+                     assignment,
+                     workspace->Occlusion);
+    return { assignment.Depth.data(),
+             assignment.Fixed.data(),
+             assignment.Owner.data(),
+             assignment.Hidden.data(),
+             &workspace->Occlusion };
+  }
+  AssignDepth(workspace->CenterlinePixels, mode, view.GetSpacing(), fixLumen, threader, assignment);
+  return { assignment.Depth.data(), assignment.Fixed.data(), assignment.Owner.data(), nullptr, nullptr };
 }
 } // namespace detail
 

@@ -2,6 +2,7 @@
 #ifndef itkCPRDepthImageFilter_h
 #define itkCPRDepthImageFilter_h
 
+#include "itkCPRBranchOcclusion.h"
 #include "itkCPRDepthMode.h"
 #include "itkCPRDepthWorkspace.h"
 #include "itkCPRViewGeometry.h"
@@ -9,20 +10,32 @@
 #include "itkImage.h"
 #include "itkImageSource.h"
 
+#include <vector>
+
 namespace itk
 {
 /** \class CPRDepthImageFilter
  * \brief Computes the multipath CPR depth map of a centerline tree for a view (docs/design.md 3.4).
  *
- * Three outputs on the view's image grid: the depth along the view direction v in mm (output 0), the fixed
- * mask (output 1, 1 = fixed: centerline pixels and, with FixLumen, pixels within the owner's lumen radius) and
- * the owner labels (output 2, the id of the branch whose centerline pixel gave the depth, 0 = none).
+ * Four outputs on the view's image grid: the depth along the view direction v in mm (output 0), the fixed
+ * mask (output 1, 1 = fixed: centerline pixels and, with FixLumen, pixels within the owner's lumen radius), the
+ * owner labels (output 2, the id of the branch whose centerline pixel gave the depth, 0 = none) and the hidden labels
+ * (output 3, Visibility mode: the id of the branch whose lumen lies behind the visible one, 0 = none; all 0 in the
+ * other modes).
  *
  * Every centerline point is projected into the view; each pixel a projected segment passes through is a
  * centerline pixel, with depth and radius interpolated along the segment and the nearer vessel winning where
  * two cross. In Scanline mode (mpCPR, the default) every pixel takes the nearest centerline pixel of its own
  * row and rows without one copy the nearest row that has one, which gives the classical projected CPR and its
- * vertical and horizontal seams. In Nearest mode every pixel takes the nearest centerline pixel in 2D.
+ * vertical and horizontal seams. In Nearest mode every pixel takes the nearest centerline pixel in 2D. In
+ * Visibility mode every vessel's projected lumen footprint shows the lumen the view ray meets first, so that where
+ * vessels overlap in projection the one in front is shown whole and no row alternates between them; the pixels
+ * outside every footprint take the nearest footprint pixel in 2D; the hidden labels and GetBranchOcclusions() say what
+ * lies behind. Its footprints need radii: a branch without them is its centerline alone.
+ *
+ * Depth on another device: a subclass that computes some modes elsewhere (OpenCL) overrides GenerateData() and calls
+ * this class's GenerateData() for a mode it lacks; the mode is a parameter like any other, so the fallback needs no
+ * other seam.
  *
  * The view is given as a CPRViewSpecification and resolved against the tree and the optional reference volume
  * (used only for defaults: the smallest spacing and the automatic up axis); GetView() returns it after
@@ -101,7 +114,7 @@ public:
   void
   UpdateOutputInformation() override;
 
-  /** Scanline (mpCPR, default) or Nearest. */
+  /** Scanline (mpCPR, default), Nearest or Visibility. */
   itkSetEnumMacro(Mode, CPRDepthMode);
   itkGetEnumMacro(Mode, CPRDepthMode);
 
@@ -119,8 +132,19 @@ public:
   GetFixedMaskOutput();
   LabelImageType *
   GetOwnerLabelOutput();
+  /** Visibility mode: the branch whose lumen lies wholly behind the visible one, per pixel (0 = none). */
+  LabelImageType *
+  GetHiddenLabelOutput();
 
-  /** Creates the outputs' data objects: depth, mask and labels. */
+  /** Visibility mode, after an update: each branch's length and how much of it this view hides (in the tree's
+   * order); empty after an update in another mode. */
+  const std::vector<CPRBranchOcclusion> &
+  GetBranchOcclusions() const
+  {
+    return m_BranchOcclusions;
+  }
+
+  /** Creates the outputs' data objects: depth, mask, owner and hidden labels. */
   using Superclass::MakeOutput;
   DataObject::Pointer
   MakeOutput(ProcessObject::DataObjectPointerArraySizeType index) override;
@@ -149,6 +173,7 @@ private:
   CPRViewGeometry                       m_View;
   CPRDepthMode                          m_Mode{ CPRDepthMode::Scanline };
   bool                                  m_FixLumen{ true };
+  std::vector<CPRBranchOcclusion>       m_BranchOcclusions;
 
   // Work buffers kept between updates: a new angle then allocates (and page-faults) nothing.
   detail::CPRDepthWorkspacePointer m_Workspace;

@@ -15,9 +15,10 @@ template<typename TDepthImage>
 CPRDepthImageFilter<TDepthImage>::CPRDepthImageFilter()
 {
   this->SetNumberOfRequiredInputs(0);
-  this->SetNumberOfRequiredOutputs(3);
+  this->SetNumberOfRequiredOutputs(4);
   this->SetNthOutput(1, this->MakeOutput(1));
   this->SetNthOutput(2, this->MakeOutput(2));
+  this->SetNthOutput(3, this->MakeOutput(3));
 }
 
 template<typename TDepthImage>
@@ -29,6 +30,7 @@ CPRDepthImageFilter<TDepthImage>::MakeOutput(ProcessObject::DataObjectPointerArr
     case 1:
       return MaskImageType::New().GetPointer();
     case 2:
+    case 3:
       return LabelImageType::New().GetPointer();
     default:
       return DepthImageType::New().GetPointer();
@@ -109,6 +111,13 @@ CPRDepthImageFilter<TDepthImage>::GetOwnerLabelOutput() -> LabelImageType *
 }
 
 template<typename TDepthImage>
+auto
+CPRDepthImageFilter<TDepthImage>::GetHiddenLabelOutput() -> LabelImageType *
+{
+  return dynamic_cast<LabelImageType *>(this->ProcessObject::GetOutput(3));
+}
+
+template<typename TDepthImage>
 void
 CPRDepthImageFilter<TDepthImage>::GenerateOutputInformation()
 {
@@ -117,6 +126,7 @@ CPRDepthImageFilter<TDepthImage>::GenerateOutputInformation()
   m_View.ConfigureImageInformation(this->GetDepthOutput());
   m_View.ConfigureImageInformation(this->GetFixedMaskOutput());
   m_View.ConfigureImageInformation(this->GetOwnerLabelOutput());
+  m_View.ConfigureImageInformation(this->GetHiddenLabelOutput());
 }
 
 template<typename TDepthImage>
@@ -140,20 +150,30 @@ CPRDepthImageFilter<TDepthImage>::GenerateData()
   mask->Allocate();
   labels->SetBufferedRegion(labels->GetRequestedRegion());
   labels->Allocate();
+  LabelImageType * hidden = this->GetHiddenLabelOutput();
+  hidden->SetBufferedRegion(hidden->GetRequestedRegion());
+  hidden->Allocate();
 
   MultiThreaderBase * threader = this->GetMultiThreader();
   threader->SetNumberOfWorkUnits(this->GetNumberOfWorkUnits());
-  const detail::CPRDepthResult result = detail::ComputeCPRDepth(m_CenterlineTree,
-                                                                m_View,
-                                                                m_Mode,
-                                                                m_FixLumen && m_CenterlineTree.HasRadii(),
-                                                                threader,
-                                                                m_Workspace,
-                                                                [this]() { this->UpdateProgress(0.3f); });
-  const std::size_t            count = depth->GetBufferedRegion().GetNumberOfPixels();
+  // Visibility mode fixes the lumen of every branch that has radii; the others only when all have them.
+  const bool fixLumen = m_FixLumen && (m_Mode == CPRDepthMode::Visibility || m_CenterlineTree.HasRadii());
+  const detail::CPRDepthResult result = detail::ComputeCPRDepth(
+    m_CenterlineTree, m_View, m_Mode, fixLumen, threader, m_Workspace, [this]() { this->UpdateProgress(0.3f); });
+  const std::size_t count = depth->GetBufferedRegion().GetNumberOfPixels();
   std::copy(result.Depth, result.Depth + count, depth->GetBufferPointer());
   std::copy(result.Fixed, result.Fixed + count, mask->GetBufferPointer());
   std::copy(result.Owner, result.Owner + count, labels->GetBufferPointer());
+  if (result.Hidden != nullptr)
+  {
+    std::copy(result.Hidden, result.Hidden + count, hidden->GetBufferPointer());
+    m_BranchOcclusions = *result.Occlusion;
+  }
+  else
+  {
+    std::fill_n(hidden->GetBufferPointer(), count, LabelPixelType{ 0 });
+    m_BranchOcclusions.clear();
+  }
   this->UpdateProgress(1.0f);
 }
 

@@ -13,10 +13,14 @@ enum class CPRDepthMode
   /** mpCPR: the nearest centerline pixel in the pixel's own row; empty rows copy the nearest filled row. */
   Scanline,
   /** Centerline-reformation-like: the nearest centerline pixel in 2D (a Voronoi partition of the plane). */
-  Nearest
+  Nearest,
+  /** Occlusion-aware: each vessel's projected lumen footprint shows the vessel whose lumen the view ray meets first
+   * there; pixels outside every footprint take the nearest footprint pixel in 2D. A second label image names the
+   * vessel hidden behind (docs/design.md "Depth", Visibility mode). */
+  Visibility
 };
 
-/** Prints "Scanline" or "Nearest". */
+/** Prints "Scanline", "Nearest" or "Visibility". */
 std::ostream &
 operator<<(std::ostream & os, CPRDepthMode mode);
 } // namespace itk
