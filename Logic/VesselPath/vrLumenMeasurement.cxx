@@ -48,7 +48,7 @@ MeasureLumen(const itk::VesselPathSectionList & sections,
                      " section(s); it needs at least two");
   }
   CheckReferencePoints(parameters.ReferenceArcLengths, sections.front().ArcLength, sections.back().ArcLength);
-  if (parameters.ReferenceMethod == itk::VesselReferenceMethod::RobustFit && parameters.ReferenceArcLengths.size() == 1)
+  if (parameters.ReferenceMethod == vr::VesselReferenceMethod::RobustFit && parameters.ReferenceArcLengths.size() == 1)
   {
     throw InputError("the robust-fit reference needs two reference points (the span it fits), or none for 5 % and "
                      "95 % of the path",
@@ -87,12 +87,12 @@ MeasureLumen(const itk::VesselPathSectionList & sections,
     }
   }
 
-  itk::VesselStenosisOptions options;
+  vr::VesselStenosisOptions options;
   options.Method = parameters.ReferenceMethod;
   options.ReferenceArcLengths = parameters.ReferenceArcLengths;
   try
   {
-    result.Summary = itk::AnalyseVesselStenosis(result.Profile, options);
+    result.Summary = vr::AnalyseVesselStenosis(result.Profile, options);
   }
   catch (const itk::ExceptionObject & exception)
   {
@@ -129,7 +129,7 @@ LumenSummaryValues(const LumenMeasurement & measurement)
   }
   return { { "pathLength", number(summary.PathLength) },
            { "lumenSource", itk::ToString(summary.Source) },
-           { "referenceMethod", itk::ToString(summary.Method) },
+           { "referenceMethod", vr::ToString(summary.Method) },
            { "referencePoints", points },
            { "minimalLumenDiameter", number(summary.MinimalLumenDiameter) },
            { "minimalLumenDiameterArcLength", number(summary.MinimalLumenDiameterArcLength) },

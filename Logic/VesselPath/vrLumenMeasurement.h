@@ -2,7 +2,7 @@
 #ifndef vrLumenMeasurement_h
 #define vrLumenMeasurement_h
 
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 #include "vrSegmentationIO.h"
 
 #include <string>
@@ -17,7 +17,7 @@ namespace vr
  */
 struct LumenMeasurementParameters
 {
-  itk::VesselReferenceMethod ReferenceMethod{ itk::VesselReferenceMethod::Interpolated };
+  vr::VesselReferenceMethod ReferenceMethod{ vr::VesselReferenceMethod::Interpolated };
   /** Arc lengths (mm) of the reference points; empty: 5 % and 95 % of the path. */
   std::vector<double> ReferenceArcLengths;
   /** In-plane sampling step (mm; 0: a quarter of the segmentation's smallest voxel spacing) and half-width (mm). */
@@ -31,8 +31,8 @@ struct LumenMeasurementParameters
  */
 struct LumenMeasurement
 {
-  itk::VesselLumenProfile    Profile;
-  itk::VesselStenosisSummary Summary;
+  itk::VesselLumenProfile   Profile;
+  vr::VesselStenosisSummary Summary;
 };
 
 /** Measures the lumen along a path and grades its stenosis: from \a segmentation when one is given, else from the

@@ -90,7 +90,7 @@ struct VesselPathLogic::Internals
   bool                       MeasurementValid{ false };
   ImageStamp                 MeasuredMask;
   std::vector<double>        MeasuredReferences;
-  itk::VesselReferenceMethod MeasuredMethod{ itk::VesselReferenceMethod::Interpolated };
+  vr::VesselReferenceMethod  MeasuredMethod{ vr::VesselReferenceMethod::Interpolated };
 
   CPRFilterType::Pointer   CPRFilter = CPRFilterType::New();
   StackFilterType::Pointer StackFilter = StackFilterType::New();
@@ -341,7 +341,7 @@ VesselPathLogic::Internals::RunMeasurement()
   MeasurementValid = false;
   Results.HasLumen = false;
   Results.Lumen = itk::VesselLumenProfile();
-  Results.Stenosis = itk::VesselStenosisSummary();
+  Results.Stenosis = vr::VesselStenosisSummary();
   if (Mask || Results.Path.HasRadii())
   {
     LumenMeasurementParameters measurement;

@@ -6,7 +6,7 @@
 #include "itkVesselLumenMeasurement.h"
 #include "itkVesselPath.h"
 #include "itkVesselPathSection.h"
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 #include "vrImageTypes.h"
 #include "vrVesselPathParameters.h"
 
@@ -57,9 +57,9 @@ struct VesselPathResults
   /** The stack of cross-sections (u, v, s); null unless asked for. */
   VolumeImageType::Pointer CrossSections;
   /** The lumen along the path, and its stenosis grading when the lumen was measured. */
-  itk::VesselLumenProfile    Lumen;
-  bool                       HasLumen{ false };
-  itk::VesselStenosisSummary Stenosis;
+  itk::VesselLumenProfile   Lumen;
+  bool                      HasLumen{ false };
+  vr::VesselStenosisSummary Stenosis;
   /** The pixel spacing and section spacing used (the defaults resolved). */
   double PixelSpacing{ 0.0 };
   double SectionSpacing{ 0.0 };

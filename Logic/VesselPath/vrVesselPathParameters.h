@@ -3,7 +3,7 @@
 #define vrVesselPathParameters_h
 
 #include "itkCPRResampleImageFilter.h"
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 #include "itkVector.h"
 #include "vrParameterName.h"
 
@@ -67,7 +67,7 @@ struct VesselPathParameters
   std::vector<double> ReferencePoints;
   /** How the reference diameter is found: interpolated between the reference points, or a robust fit to the profile
    * (docs/lumen-measurement.md). */
-  itk::VesselReferenceMethod ReferenceMethod{ itk::VesselReferenceMethod::Interpolated };
+  vr::VesselReferenceMethod ReferenceMethod{ vr::VesselReferenceMethod::Interpolated };
 
   /** Throws vr::InputError naming the parameter and its value when one is out of range or not finite. Whether
    * the range and the reference points lie on the path is known only once the path is: the logic checks that. */

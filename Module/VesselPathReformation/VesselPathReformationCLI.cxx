@@ -123,8 +123,8 @@ ParametersFrom(const vr::CLIArguments & arguments)
     parameters.ReferencePoints = Numbers(arguments, "referencePoints");
   }
   parameters.ReferenceMethod = arguments.String("referenceMethod") == "robust"
-                                 ? itk::VesselReferenceMethod::RobustFit
-                                 : itk::VesselReferenceMethod::Interpolated;
+                                 ? vr::VesselReferenceMethod::RobustFit
+                                 : vr::VesselReferenceMethod::Interpolated;
   parameters.Validate();
   return parameters;
 }
@@ -264,7 +264,7 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
             << stenosis.MinimalLumenDiameter << " mm at " << std::setprecision(1)
             << stenosis.MinimalLumenDiameterArcLength << " mm, " << std::setprecision(0)
             << stenosis.DiameterStenosisPercent << " % diameter stenosis (CAD-RADS " << stenosis.CADRADS << ", "
-            << itk::ToString(stenosis.Method) << " reference)";
+            << vr::ToString(stenosis.Method) << " reference)";
   }
   else
   {

@@ -119,7 +119,7 @@ TEST(LumenMeasurement, ReferencePointsOutsideThePathAreNamed)
     EXPECT_EQ(error.Parameter(), vr::ParameterName::ReferencePoints);
   }
   parameters.ReferenceArcLengths = { 12.0 };
-  parameters.ReferenceMethod = itk::VesselReferenceMethod::RobustFit;
+  parameters.ReferenceMethod = vr::VesselReferenceMethod::RobustFit;
   EXPECT_TRUE(vr::test::Contains(
     vr::test::InputErrorOf([&] { vr::MeasureLumen(StenosisScene().Sections, nullptr, "", parameters); }),
     "two reference points"));

@@ -124,11 +124,11 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 5);
   // The reference method: the measurement alone.
-  parameters.ReferenceMethod = itk::VesselReferenceMethod::RobustFit;
+  parameters.ReferenceMethod = vr::VesselReferenceMethod::RobustFit;
   logic.SetParameters(parameters);
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 6);
-  EXPECT_EQ(logic.GetResults().Stenosis.Method, itk::VesselReferenceMethod::RobustFit);
+  EXPECT_EQ(logic.GetResults().Stenosis.Method, vr::VesselReferenceMethod::RobustFit);
   // The section spacing: the frame, the resampling and the measurement.
   parameters.SectionSpacing = 1.0;
   logic.SetParameters(parameters);

@@ -77,7 +77,7 @@ LumenProfilePlot::Clear()
 }
 
 void
-LumenProfilePlot::SetProfile(const itk::VesselLumenProfile & profile, const itk::VesselStenosisSummary & summary)
+LumenProfilePlot::SetProfile(const itk::VesselLumenProfile & profile, const vr::VesselStenosisSummary & summary)
 {
   Clear();
   const bool fromSegmentation = profile.Source == itk::VesselLumenSource::Segmentation;

@@ -3,7 +3,7 @@
 #define vrLumenProfilePlot_h
 
 #include "itkVesselLumenMeasurement.h"
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 
 #include <QPointF>
 #include <QRectF>
@@ -33,7 +33,7 @@ public:
 
   /** Plots \a profile and marks \a summary's MLD (none when its MLD is NaN). */
   void
-  SetProfile(const itk::VesselLumenProfile & profile, const itk::VesselStenosisSummary & summary);
+  SetProfile(const itk::VesselLumenProfile & profile, const vr::VesselStenosisSummary & summary);
   /** Clears the plot. */
   void
   Clear();

@@ -507,7 +507,7 @@ VesselPathPanel::ShowMeasurements()
     text += tr("<br><b>MLA</b> %1 mm² at %2 mm")
               .arg(Number(stenosis.MinimalLumenArea, 1), Number(stenosis.MinimalLumenAreaArcLength, 1));
     text += tr("<br>reference %1 mm (%2)")
-              .arg(Number(stenosis.ReferenceDiameter, 2), QString::fromStdString(itk::ToString(stenosis.Method)));
+              .arg(Number(stenosis.ReferenceDiameter, 2), QString::fromStdString(vr::ToString(stenosis.Method)));
     text += tr("<br><b>stenosis</b> %1 % diameter, %2 % area")
               .arg(Number(stenosis.DiameterStenosisPercent, 0), Number(stenosis.AreaStenosisPercent, 0));
     text += tr("<br><b>CAD-RADS</b> %1").arg(CADRADSText(stenosis.CADRADS));

@@ -1,13 +1,13 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-#ifndef itkVesselStenosis_h
-#define itkVesselStenosis_h
+#ifndef vrVesselStenosis_h
+#define vrVesselStenosis_h
 
 #include "itkVesselLumenMeasurement.h"
 
 #include <limits>
 #include <vector>
 
-namespace itk
+namespace vr
 {
 
 /** How the reference (healthy) diameter along the path is found (docs/lumen-measurement.md, "Reference"). */
@@ -45,11 +45,11 @@ struct VesselStenosisOptions
  */
 struct VesselStenosisSummary
 {
-  using PointType = Point<double, 3>;
+  using PointType = itk::Point<double, 3>;
   static constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
 
-  VesselLumenSource     Source{ VesselLumenSource::Segmentation };
-  VesselReferenceMethod Method{ VesselReferenceMethod::Interpolated };
+  itk::VesselLumenSource Source{ itk::VesselLumenSource::Segmentation };
+  VesselReferenceMethod  Method{ VesselReferenceMethod::Interpolated };
   /** Arc length from the first section to the last. */
   double PathLength{ 0.0 };
   /** The reference points used, ascending (the defaults when none were given). The robust fit uses the profile
@@ -92,8 +92,8 @@ CADRADSClass(double diameterStenosisPercent);
  * points, the path has fewer than two sections or arc lengths that decrease, or no section is measured (for the
  * robust fit: none between the first and the last reference point). */
 VesselStenosisSummary
-AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions & options = {});
+AnalyseVesselStenosis(itk::VesselLumenProfile & profile, const VesselStenosisOptions & options = {});
 
-} // namespace itk
+} // namespace vr
 
 #endif

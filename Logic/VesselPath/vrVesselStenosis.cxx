@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 
 #include "itkMacro.h"
 
@@ -8,7 +8,7 @@
 #include <iterator>
 #include <sstream>
 
-namespace itk
+namespace vr
 {
 
 const char *
@@ -61,7 +61,7 @@ struct Sample
 
 /** The measured (arc length, diameter) pairs of the profile, in its order. */
 std::vector<Sample>
-MeasuredSamples(const VesselLumenProfile & profile)
+MeasuredSamples(const itk::VesselLumenProfile & profile)
 {
   std::vector<Sample> samples;
   for (const auto & section : profile.Sections)
@@ -225,7 +225,7 @@ RobustLine(const std::vector<Sample> & samples, double s0)
 }
 
 void
-CheckPath(const VesselLumenProfile & profile)
+CheckPath(const itk::VesselLumenProfile & profile)
 {
   const auto & sections = profile.Sections;
   if (sections.size() < 2)
@@ -248,7 +248,7 @@ CheckPath(const VesselLumenProfile & profile)
 }
 
 std::vector<double>
-ReferencePoints(const VesselLumenProfile & profile, const VesselStenosisOptions & options)
+ReferencePoints(const itk::VesselLumenProfile & profile, const VesselStenosisOptions & options)
 {
   const double        first = profile.Sections.front().ArcLength;
   const double        last = profile.Sections.back().ArcLength;
@@ -284,7 +284,7 @@ ReferencePoints(const VesselLumenProfile & profile, const VesselStenosisOptions 
 } // namespace
 
 VesselStenosisSummary
-AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions & options)
+AnalyseVesselStenosis(itk::VesselLumenProfile & profile, const VesselStenosisOptions & options)
 {
   CheckPath(profile);
   VesselStenosisSummary summary;
@@ -296,8 +296,8 @@ AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions 
   const double spanLast = summary.ReferenceArcLengths.back();
 
   // The area profile: measured areas, or the circle of the diameter for the centerline-radius source.
-  const bool segmentation = profile.Source == VesselLumenSource::Segmentation;
-  const auto areaOf = [segmentation](const VesselLumenSection & section)
+  const bool segmentation = profile.Source == itk::VesselLumenSource::Segmentation;
+  const auto areaOf = [segmentation](const itk::VesselLumenSection & section)
   { return segmentation ? section.Area : 0.25 * Pi * section.Diameter * section.Diameter; };
   std::vector<Sample> diameters;
   std::vector<Sample> areas;
@@ -349,12 +349,12 @@ AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions 
       }
     }
   };
-  reference(diameters, [](VesselLumenSection & section, double value) { section.ReferenceDiameter = value; });
-  reference(areas, [](VesselLumenSection & section, double value) { section.ReferenceArea = value; });
+  reference(diameters, [](itk::VesselLumenSection & section, double value) { section.ReferenceDiameter = value; });
+  reference(areas, [](itk::VesselLumenSection & section, double value) { section.ReferenceArea = value; });
 
   // MLD and MLA over the whole path (docs/lumen-measurement.md).
-  const VesselLumenSection * narrowest = nullptr;
-  const VesselLumenSection * smallest = nullptr;
+  const itk::VesselLumenSection * narrowest = nullptr;
+  const itk::VesselLumenSection * smallest = nullptr;
   for (const auto & section : profile.Sections)
   {
     if (!section.IsMeasured())
@@ -389,4 +389,4 @@ AnalyseVesselStenosis(VesselLumenProfile & profile, const VesselStenosisOptions 
   return summary;
 }
 
-} // namespace itk
+} // namespace vr
