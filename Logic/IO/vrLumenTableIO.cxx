@@ -23,6 +23,20 @@ Cell(std::ostream & output, char separator, double value)
     output << value;
   }
 }
+
+/** Text without the separator, the comment mark at its start or a line break, which would break the table. */
+std::string
+Clean(std::string text, char separator)
+{
+  for (char & c : text)
+  {
+    if (c == separator || c == '\n' || c == '\r')
+    {
+      c = separator == ';' ? ',' : ';';
+    }
+  }
+  return text;
+}
 } // namespace
 
 char
@@ -41,9 +55,14 @@ LumenTableSeparator(const std::string & path)
 }
 
 void
-WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path)
+WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path, const LumenTableNotes & notes)
 {
-  const char   separator = LumenTableSeparator(path);
+  const char separator = LumenTableSeparator(path);
+  if (!notes.Rows.empty() && notes.Rows.size() != profile.Sections.size())
+  {
+    throw InputError("lumen table " + path + ": " + std::to_string(notes.Rows.size()) + " rows of marks for " +
+                     std::to_string(profile.Sections.size()) + " sections");
+  }
   AtomicOutput staged(path);
   {
     std::ofstream output(staged.TemporaryPath());
@@ -52,6 +71,15 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
       throw InputError("lumen table " + path + ": cannot be created");
     }
     output.precision(10);
+    for (const std::string & comment : notes.Comments)
+    {
+      std::string line = comment;
+      for (char & c : line)
+      {
+        c = (c == '\n' || c == '\r') ? ' ' : c;
+      }
+      output << "# " << line << '\n';
+    }
     bool first = true;
     for (const char * column : LumenTableColumns)
     {
@@ -61,9 +89,10 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
     output << '\n';
     const bool        segmentation = profile.Source == itk::VesselLumenSource::Segmentation;
     const std::string source = itk::ToString(profile.Source);
-    for (const auto & section : profile.Sections)
+    for (std::size_t k = 0; k < profile.Sections.size(); ++k)
     {
-      const auto ras = LPSToRAS(section.Center);
+      const auto & section = profile.Sections[k];
+      const auto   ras = LPSToRAS(section.Center);
       output << section.ArcLength;
       Cell(output, separator, ras[0]);
       Cell(output, separator, ras[1]);
@@ -90,7 +119,18 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
       {
         output << (section.RegionClipped ? 1 : 0);
       }
-      output << separator << section.BranchId << '\n';
+      output << separator << section.BranchId << separator;
+      if (k < notes.Rows.size() && notes.Rows[k].Segment > 0)
+      {
+        const auto & marks = notes.Rows[k];
+        output << marks.Segment << separator << (marks.Candidate ? 1 : 0) << separator
+               << Clean(marks.ExcludedBecause, separator);
+      }
+      else
+      {
+        output << separator << separator; // three empty cells
+      }
+      output << '\n';
     }
     output.close();
     if (!output)

@@ -91,6 +91,10 @@ struct VesselPathLogic::Internals
   ImageStamp                 MeasuredMask;
   std::vector<double>        MeasuredReferences;
   vr::VesselReferenceMethod  MeasuredMethod{ vr::VesselReferenceMethod::Interpolated };
+  StenosisScale              MeasuredScale{ StenosisScale::Automatic };
+  /** Whether the range cut the path at its start or its end: such an end is no vessel end. */
+  bool CutAtStart{ false };
+  bool CutAtEnd{ false };
 
   CPRFilterType::Pointer   CPRFilter = CPRFilterType::New();
   StackFilterType::Pointer StackFilter = StackFilterType::New();
@@ -122,6 +126,16 @@ struct VesselPathLogic::Internals
   void
   RunMeasurement();
 };
+
+std::string
+DescribePath(const VesselPathResults & results)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(1);
+  text << results.Path.GetLength() << " mm: " << results.PathName;
+  return text.str();
+}
 
 VesselPathLogic::VesselPathLogic()
   : m(std::make_unique<Internals>())
@@ -200,8 +214,11 @@ VesselPathLogic::Internals::RunPath()
   {
     throw InputError(Describe(error), p.BranchId > 0 ? ParameterName::Branch : "");
   }
+  CutAtStart = CutAtEnd = false;
   if (p.HasRange)
   {
+    CutAtStart = p.RangeStart > 0.0;
+    CutAtEnd = p.RangeEnd < path.GetLength();
     if (p.RangeEnd > path.GetLength())
     {
       std::ostringstream message;
@@ -219,6 +236,21 @@ VesselPathLogic::Internals::RunPath()
     }
   }
   Results.Path = path;
+  std::vector<std::string> names;
+  for (const int id : path.GetBranchChain())
+  {
+    std::string name = "branch " + std::to_string(id);
+    for (const auto & branch : Tree.GetBranches())
+    {
+      if (branch.Id == id && !branch.Name.empty())
+      {
+        name = branch.Name;
+      }
+    }
+    names.push_back(name);
+  }
+  Results.PathName = JoinPathNames(names);
+  Results.Layout = FindPathLayout(Tree, path, CutAtStart, CutAtEnd);
   PathTree = Tree;
   PathParameters = p;
   PathValid = true;
@@ -347,6 +379,8 @@ VesselPathLogic::Internals::RunMeasurement()
     LumenMeasurementParameters measurement;
     measurement.ReferenceArcLengths = Parameters.ReferencePoints;
     measurement.ReferenceMethod = Parameters.ReferenceMethod;
+    measurement.Layout = Results.Layout;
+    measurement.Scale = Parameters.GradingScale;
     LumenMeasurement lumen = MeasureLumen(FrameSections, Mask, MaskName, measurement);
     Results.Lumen = std::move(lumen.Profile);
     Results.Stenosis = lumen.Summary;
@@ -361,6 +395,7 @@ VesselPathLogic::Internals::RunMeasurement()
   MeasuredMask = ImageStamp::Of(Mask.GetPointer());
   MeasuredReferences = Parameters.ReferencePoints;
   MeasuredMethod = Parameters.ReferenceMethod;
+  MeasuredScale = Parameters.GradingScale;
   MeasurementValid = true;
   ++Counts.Measurement;
 }
@@ -406,7 +441,8 @@ VesselPathLogic::Update()
     m->RunResampling();
   }
   if (!m->MeasurementValid || m->MeasuredMask != ImageStamp::Of(m->Mask.GetPointer()) ||
-      m->MeasuredReferences != p.ReferencePoints || m->MeasuredMethod != p.ReferenceMethod)
+      m->MeasuredReferences != p.ReferencePoints || m->MeasuredMethod != p.ReferenceMethod ||
+      m->MeasuredScale != p.GradingScale)
   {
     m->RunMeasurement();
   }

@@ -1,7 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrVesselStenosis.h"
 
-#include "itkMacro.h"
+#include "vrInputError.h"
+#include "vrParameterName.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,43 +11,10 @@
 
 namespace vr
 {
-
 const char *
 ToString(VesselReferenceMethod method)
 {
   return method == VesselReferenceMethod::Interpolated ? "interpolated" : "robust fit";
-}
-
-int
-CADRADSClass(double diameterStenosisPercent)
-{
-  if (std::isnan(diameterStenosisPercent))
-  {
-    return -1;
-  }
-  if (diameterStenosisPercent >= 100.0)
-  {
-    return 5;
-  }
-  // Halves up; some lumen left is never an occlusion.
-  const double percent = std::min(99.0, std::floor(diameterStenosisPercent + 0.5));
-  if (percent <= 0.0)
-  {
-    return 0;
-  }
-  if (percent < 25.0)
-  {
-    return 1;
-  }
-  if (percent < 50.0)
-  {
-    return 2;
-  }
-  if (percent < 70.0)
-  {
-    return 3;
-  }
-  return 4;
 }
 
 namespace
@@ -59,25 +27,10 @@ struct Sample
   double D;
 };
 
-/** The measured (arc length, diameter) pairs of the profile, in its order. */
-std::vector<Sample>
-MeasuredSamples(const itk::VesselLumenProfile & profile)
-{
-  std::vector<Sample> samples;
-  for (const auto & section : profile.Sections)
-  {
-    if (section.IsMeasured())
-    {
-      samples.push_back({ section.ArcLength, section.Diameter });
-    }
-  }
-  return samples;
-}
-
-/** The profile's diameter at \a s: linear between the measured sections on either side, the nearest one where
- * there is a side without. */
+/** The samples' value at \a s: linear between the samples on either side, the nearest one where there is a side
+ * without (so: constant beyond the first and the last). */
 double
-DiameterAt(const std::vector<Sample> & samples, double s)
+ValueAt(const std::vector<Sample> & samples, double s)
 {
   const auto after = std::lower_bound(
     samples.begin(), samples.end(), s, [](const Sample & sample, double value) { return sample.S < value; });
@@ -97,13 +50,6 @@ DiameterAt(const std::vector<Sample> & samples, double s)
   }
   const double t = (s - a.S) / (b.S - a.S);
   return a.D + t * (b.D - a.D);
-}
-
-/** Piecewise linear through \a points (ascending S), constant beyond the first and the last. */
-double
-PiecewiseLinear(const std::vector<Sample> & points, double s)
-{
-  return DiameterAt(points, s);
 }
 
 double
@@ -224,41 +170,95 @@ RobustLine(const std::vector<Sample> & samples, double s0)
   return line;
 }
 
+/** A reference along part of the path: interpolated between points, or a robust line. */
+struct Reference
+{
+  bool                  Valid{ false };
+  VesselReferenceMethod Method{ VesselReferenceMethod::Interpolated };
+  std::vector<Sample>   Points;
+  Line                  Fit{ 0.0, 0.0 };
+  double                Start{ 0.0 };
+
+  double
+  At(double s) const
+  {
+    if (!Valid)
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+    return Method == VesselReferenceMethod::Interpolated ? ValueAt(Points, s) : Fit.At(s, Start);
+  }
+};
+
+/** The reference of \a samples (ascending S) through \a points (ascending): the samples' values there
+ * (interpolated), or the robust line over the samples between the first and the last point. */
+Reference
+MakeReference(VesselReferenceMethod method, const std::vector<Sample> & samples, const std::vector<double> & points)
+{
+  Reference reference;
+  reference.Method = method;
+  if (samples.empty() || points.empty())
+  {
+    return reference;
+  }
+  if (method == VesselReferenceMethod::Interpolated)
+  {
+    for (const double s : points)
+    {
+      reference.Points.push_back({ s, ValueAt(samples, s) });
+    }
+    reference.Valid = true;
+    return reference;
+  }
+  std::vector<Sample> span;
+  std::copy_if(samples.begin(),
+               samples.end(),
+               std::back_inserter(span),
+               [&](const Sample & sample) { return sample.S >= points.front() && sample.S <= points.back(); });
+  if (span.empty())
+  {
+    return reference;
+  }
+  reference.Start = points.front();
+  reference.Fit = RobustLine(span, reference.Start);
+  reference.Valid = true;
+  return reference;
+}
+
 void
 CheckPath(const itk::VesselLumenProfile & profile)
 {
   const auto & sections = profile.Sections;
   if (sections.size() < 2)
   {
-    itkGenericExceptionMacro(<< "stenosis: the path has " << sections.size()
-                             << " section(s); a profile needs at least two");
+    throw InputError("stenosis: the path has " + std::to_string(sections.size()) +
+                     " section(s); a profile needs at least two");
   }
   for (std::size_t k = 0; k < sections.size(); ++k)
   {
     if (!std::isfinite(sections[k].ArcLength) || (k > 0 && sections[k].ArcLength < sections[k - 1].ArcLength))
     {
-      itkGenericExceptionMacro(<< "stenosis: section " << k << "'s arc length " << sections[k].ArcLength
-                               << " mm is not finite or decreases along the path");
+      std::ostringstream message;
+      message << "stenosis: section " << k << "'s arc length " << sections[k].ArcLength
+              << " mm is not finite or decreases along the path";
+      throw InputError(message.str());
     }
   }
   if (!(sections.back().ArcLength > sections.front().ArcLength))
   {
-    itkGenericExceptionMacro(<< "stenosis: the path has length 0");
+    throw InputError("stenosis: the path has length 0");
   }
 }
 
+/** The user's reference points, checked, sorted and without repeats. */
 std::vector<double>
-ReferencePoints(const itk::VesselLumenProfile & profile, const VesselStenosisOptions & options)
+UserPoints(const itk::VesselLumenProfile & profile, const VesselStenosisOptions & options)
 {
   const double        first = profile.Sections.front().ArcLength;
   const double        last = profile.Sections.back().ArcLength;
   std::vector<double> points = options.ReferenceArcLengths;
-  if (points.empty())
-  {
-    points = { first + 0.05 * (last - first), first + 0.95 * (last - first) };
-  }
-  std::ostringstream outside;
-  std::size_t        bad = 0;
+  std::ostringstream  outside;
+  std::size_t         bad = 0;
   for (const double s : points)
   {
     if (!std::isfinite(s) || s < first || s > last)
@@ -268,18 +268,169 @@ ReferencePoints(const itk::VesselLumenProfile & profile, const VesselStenosisOpt
   }
   if (bad > 0)
   {
-    itkGenericExceptionMacro(<< "stenosis: reference point" << (bad > 1 ? "s " : " ") << outside.str()
-                             << (bad > 1 ? " lie" : " lies") << " outside the path (arc length " << first << " to "
-                             << last << " mm)");
+    std::ostringstream message;
+    message << "reference point" << (bad > 1 ? "s " : " ") << outside.str() << (bad > 1 ? " lie" : " lies")
+            << " outside the path (arc length " << first << " to " << last << " mm)";
+    throw InputError(message.str(), ParameterName::ReferencePoints);
   }
   std::sort(points.begin(), points.end());
   points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (options.Method == VesselReferenceMethod::RobustFit && points.size() < 2)
+  if (options.Method == VesselReferenceMethod::RobustFit && points.size() == 1)
   {
-    itkGenericExceptionMacro(<< "stenosis: the robust fit needs two distinct reference points (the span it fits), "
-                             << "got " << points.size());
+    throw InputError("the robust-fit reference needs two distinct reference points (the span it fits), got 1",
+                     ParameterName::ReferencePoints);
   }
   return points;
+}
+
+/** The radius to measure a margin with near section \a k: the centerline's, else half the median measured diameter
+ * within 5 mm (on the side of \a side: -1 before, +1 after, 0 both), else 0. */
+double
+LocalRadius(const itk::VesselLumenProfile & profile, double s, int side)
+{
+  std::vector<double> diameters;
+  double              inscribed = std::numeric_limits<double>::quiet_NaN();
+  double              nearest = std::numeric_limits<double>::infinity();
+  for (const auto & section : profile.Sections)
+  {
+    const double offset = section.ArcLength - s;
+    if (std::abs(offset) < nearest && std::isfinite(section.InscribedDiameter) && offset * side >= 0.0)
+    {
+      nearest = std::abs(offset);
+      inscribed = section.InscribedDiameter;
+    }
+    if (std::abs(offset) <= 5.0 && offset * side >= 0.0 && section.IsMeasured())
+    {
+      diameters.push_back(section.Diameter);
+    }
+  }
+  if (std::isfinite(inscribed) && nearest <= 5.0)
+  {
+    return 0.5 * inscribed;
+  }
+  return diameters.empty() ? 0.0 : 0.5 * Median(diameters);
+}
+
+std::string
+Millimetres(double value)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(1);
+  text << value << " mm";
+  return text.str();
+}
+
+/** Which sections may hold the MLD, and why the others may not. */
+std::vector<SectionGrading>
+MarkSections(const itk::VesselLumenProfile & profile, const PathLayout & layout, std::size_t & excluded)
+{
+  const auto & sections = profile.Sections;
+  const double first = sections.front().ArcLength;
+  const double last = sections.back().ArcLength;
+  struct Margin
+  {
+    double      Begin;
+    double      End;
+    std::string Why;
+  };
+  std::vector<Margin> margins;
+  if (layout.StartIsVesselEnd)
+  {
+    margins.push_back({ -std::numeric_limits<double>::infinity(),
+                        first + std::max(MinimumExclusionMargin, LocalRadius(profile, first, 1)),
+                        "path start" });
+  }
+  if (layout.EndIsVesselEnd)
+  {
+    margins.push_back({ last - std::max(MinimumExclusionMargin, LocalRadius(profile, last, -1)),
+                        std::numeric_limits<double>::infinity(),
+                        "path end" });
+  }
+  for (const auto & junction : layout.Junctions)
+  {
+    const double radius = std::isfinite(junction.ParentRadius)
+                            ? junction.ParentRadius
+                            : LocalRadius(profile, junction.ArcLength, junction.OnPath ? -1 : 0);
+    const double margin = std::max(MinimumExclusionMargin, radius);
+    margins.push_back({ junction.ArcLength - margin,
+                        junction.ArcLength + margin,
+                        junction.OnPath ? "junction into branch " + std::to_string(junction.BranchId)
+                                        : "origin of branch " + std::to_string(junction.BranchId) });
+  }
+  std::vector<SectionGrading> marks(sections.size());
+  excluded = 0;
+  std::size_t segment = 0;
+  for (std::size_t k = 0; k < sections.size(); ++k)
+  {
+    const double s = sections[k].ArcLength;
+    while (segment + 1 < layout.Segments.size() && s >= layout.Segments[segment].End)
+    {
+      ++segment;
+    }
+    marks[k].Segment = segment;
+    for (const Margin & margin : margins)
+    {
+      if (s >= margin.Begin && s <= margin.End)
+      {
+        marks[k].ExcludedBecause = margin.Why;
+        ++excluded;
+        break;
+      }
+    }
+    if (marks[k].ExcludedBecause.empty() && !sections[k].IsMeasured())
+    {
+      marks[k].ExcludedBecause = "not measured";
+    }
+    marks[k].Candidate = marks[k].ExcludedBecause.empty();
+  }
+  return marks;
+}
+
+/** The segment's scale and why. */
+void
+ChooseScale(SegmentGrading & grading, StenosisScale chosen, double medianDiameter)
+{
+  const std::string & name = grading.Segment.Name;
+  if (chosen != StenosisScale::Automatic)
+  {
+    grading.Scale = chosen;
+    grading.ScaleReason = "chosen by the user";
+    return;
+  }
+  const StenosisScale byName = ScaleOfVesselName(name);
+  if (byName != StenosisScale::Automatic)
+  {
+    grading.Scale = byName;
+    grading.ScaleReason = "by its name";
+    return;
+  }
+  if (name.empty() && std::isfinite(medianDiameter) && medianDiameter >= AortaSizedDiameter)
+  {
+    grading.Scale = StenosisScale::Aorta;
+    grading.ScaleReason = "by its size: unnamed, median diameter " + Millimetres(medianDiameter) + " (aorta-sized, " +
+                          Millimetres(AortaSizedDiameter) + " or more)";
+    return;
+  }
+  grading.Scale = StenosisScale::Peripheral;
+  grading.ScaleReason =
+    name.empty() ? "unnamed, median diameter " + Millimetres(medianDiameter) + ": taken for a peripheral artery"
+                 : "by its name: not an aorta, a coronary or a carotid artery";
+}
+
+std::string
+DescribeSegment(std::size_t index, const SegmentGrading & grading)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(1);
+  text << "segment " << index + 1 << " (";
+  if (!grading.Segment.Name.empty())
+  {
+    text << grading.Segment.Name << ", ";
+  }
+  text << grading.Segment.Begin << "–" << grading.Segment.End << " mm)";
+  return text.str();
 }
 } // namespace
 
@@ -287,106 +438,241 @@ VesselStenosisSummary
 AnalyseVesselStenosis(itk::VesselLumenProfile & profile, const VesselStenosisOptions & options)
 {
   CheckPath(profile);
+  const std::vector<double> userPoints = UserPoints(profile, options);
+  auto &                    sections = profile.Sections;
+
   VesselStenosisSummary summary;
   summary.Source = profile.Source;
   summary.Method = options.Method;
-  summary.PathLength = profile.Sections.back().ArcLength - profile.Sections.front().ArcLength;
-  summary.ReferenceArcLengths = ReferencePoints(profile, options);
-  const double spanFirst = summary.ReferenceArcLengths.front();
-  const double spanLast = summary.ReferenceArcLengths.back();
+  summary.UserReferencePoints = !userPoints.empty();
+  summary.PathLength = sections.back().ArcLength - sections.front().ArcLength;
 
   // The area profile: measured areas, or the circle of the diameter for the centerline-radius source.
   const bool segmentation = profile.Source == itk::VesselLumenSource::Segmentation;
   const auto areaOf = [segmentation](const itk::VesselLumenSection & section)
   { return segmentation ? section.Area : 0.25 * Pi * section.Diameter * section.Diameter; };
-  std::vector<Sample> diameters;
-  std::vector<Sample> areas;
-  std::size_t         inSpan = 0;
-  for (const auto & section : profile.Sections)
+  std::vector<Sample> allDiameters;
+  std::vector<Sample> allAreas;
+  for (const auto & section : sections)
   {
     if (section.IsMeasured())
     {
-      diameters.push_back({ section.ArcLength, section.Diameter });
-      areas.push_back({ section.ArcLength, areaOf(section) });
-      inSpan += section.ArcLength >= spanFirst && section.ArcLength <= spanLast ? 1 : 0;
+      allDiameters.push_back({ section.ArcLength, section.Diameter });
+      allAreas.push_back({ section.ArcLength, areaOf(section) });
     }
   }
-  summary.MeasuredSections = diameters.size();
-  summary.MeasuredSectionsInSpan = inSpan;
-  if (diameters.empty() || (options.Method == VesselReferenceMethod::RobustFit && inSpan == 0))
+  summary.MeasuredSections = allDiameters.size();
+  if (allDiameters.empty())
   {
-    itkGenericExceptionMacro(<< "stenosis: no section "
-                             << (diameters.empty() ? "of the path" : "between the reference points")
-                             << " has a measured diameter");
+    throw InputError("stenosis: no section of the path has a measured diameter");
   }
 
-  // The same reference method on the diameters and on the areas, over the whole path.
-  const auto reference = [&](const std::vector<Sample> & samples, auto assign)
+  PathLayout layout = options.Layout;
+  if (layout.Segments.empty())
   {
-    if (options.Method == VesselReferenceMethod::Interpolated)
+    layout.Segments.push_back({ sections.front().ArcLength, sections.back().ArcLength, 0, std::string() });
+  }
+  summary.Sections = MarkSections(profile, layout, summary.ExcludedSections);
+
+  // The user's points give one reference over the whole path, from every measured section.
+  const Reference userDiameter = MakeReference(options.Method, allDiameters, userPoints);
+  const Reference userArea = MakeReference(options.Method, allAreas, userPoints);
+
+  for (std::size_t g = 0; g < layout.Segments.size(); ++g)
+  {
+    SegmentGrading grading;
+    grading.Segment = layout.Segments[g];
+    std::vector<Sample>      diameters;
+    std::vector<Sample>      areas;
+    std::vector<std::size_t> candidates;
+    std::vector<double>      measuredInSegment;
+    for (std::size_t k = 0; k < sections.size(); ++k)
     {
-      std::vector<Sample> points;
-      for (const double s : summary.ReferenceArcLengths)
+      if (summary.Sections[k].Segment != g)
       {
-        points.push_back({ s, DiameterAt(samples, s) });
+        continue;
       }
-      for (auto & section : profile.Sections)
+      if (sections[k].IsMeasured())
       {
-        assign(section, PiecewiseLinear(points, section.ArcLength));
+        measuredInSegment.push_back(sections[k].Diameter);
+      }
+      if (summary.Sections[k].Candidate)
+      {
+        candidates.push_back(k);
+        diameters.push_back({ sections[k].ArcLength, sections[k].Diameter });
+        areas.push_back({ sections[k].ArcLength, areaOf(sections[k]) });
+      }
+    }
+    grading.Candidates = candidates.size();
+    std::vector<double> sizes;
+    for (const auto & sample : diameters)
+    {
+      sizes.push_back(sample.D);
+    }
+    const double median = !sizes.empty()               ? Median(sizes)
+                          : !measuredInSegment.empty() ? Median(measuredInSegment)
+                                                       : std::numeric_limits<double>::quiet_NaN();
+    ChooseScale(grading, options.Scale, median);
+
+    // The segment's own reference between the ends of its candidates, or the user's.
+    Reference diameterReference = userDiameter;
+    Reference areaReference = userArea;
+    if (userPoints.empty())
+    {
+      if (candidates.size() >= MinimumCandidates)
+      {
+        grading.ReferenceArcLengths = { diameters.front().S, diameters.back().S };
+        diameterReference = MakeReference(options.Method, diameters, grading.ReferenceArcLengths);
+        areaReference = MakeReference(options.Method, areas, grading.ReferenceArcLengths);
+      }
+      else
+      {
+        diameterReference = Reference();
+        areaReference = Reference();
+        std::ostringstream why;
+        why.setf(std::ios::fixed);
+        why.precision(1);
+        if (measuredInSegment.empty())
+        {
+          why << "no section measured";
+        }
+        else
+        {
+          why << "too short for two reference points: " << candidates.size()
+              << " measured section(s) outside the margins of its ends and branch origins ("
+              << grading.Segment.End - grading.Segment.Begin << " mm long)";
+        }
+        grading.NotGradedBecause = why.str();
       }
     }
     else
     {
-      std::vector<Sample> span;
-      std::copy_if(samples.begin(),
-                   samples.end(),
-                   std::back_inserter(span),
-                   [&](const Sample & sample) { return sample.S >= spanFirst && sample.S <= spanLast; });
-      const Line line = RobustLine(span, spanFirst);
-      for (auto & section : profile.Sections)
+      grading.ReferenceArcLengths = userPoints;
+      if (candidates.empty())
       {
-        assign(section, line.At(section.ArcLength, spanFirst));
+        grading.NotGradedBecause = measuredInSegment.empty()
+                                     ? "no section measured"
+                                     : "every measured section lies within a margin of an end or a branch origin";
       }
     }
-  };
-  reference(diameters, [](itk::VesselLumenSection & section, double value) { section.ReferenceDiameter = value; });
-  reference(areas, [](itk::VesselLumenSection & section, double value) { section.ReferenceArea = value; });
+    for (std::size_t k = 0; k < sections.size(); ++k)
+    {
+      if (summary.Sections[k].Segment == g)
+      {
+        sections[k].ReferenceDiameter = diameterReference.At(sections[k].ArcLength);
+        sections[k].ReferenceArea = areaReference.At(sections[k].ArcLength);
+      }
+    }
 
-  // MLD and MLA over the whole path (docs/lumen-measurement.md).
-  const itk::VesselLumenSection * narrowest = nullptr;
-  const itk::VesselLumenSection * smallest = nullptr;
-  for (const auto & section : profile.Sections)
+    // MLD, MLA and the widest section among the candidates.
+    const itk::VesselLumenSection * narrowest = nullptr;
+    const itk::VesselLumenSection * smallest = nullptr;
+    const itk::VesselLumenSection * widest = nullptr;
+    for (const std::size_t k : candidates)
+    {
+      const auto & section = sections[k];
+      narrowest = narrowest == nullptr || section.Diameter < narrowest->Diameter ? &section : narrowest;
+      smallest = smallest == nullptr || areaOf(section) < areaOf(*smallest) ? &section : smallest;
+      widest = widest == nullptr || section.Diameter > widest->Diameter ? &section : widest;
+    }
+    if (widest != nullptr)
+    {
+      grading.MaximumDiameter = widest->Diameter;
+      grading.MaximumDiameterArcLength = widest->ArcLength;
+    }
+    if (narrowest != nullptr && diameterReference.Valid)
+    {
+      grading.MinimalLumenDiameter = narrowest->Diameter;
+      grading.MinimalLumenDiameterArcLength = narrowest->ArcLength;
+      grading.MinimalLumenDiameterCenter = narrowest->Center;
+      grading.ReferenceDiameter = narrowest->ReferenceDiameter;
+      grading.MinimalLumenArea = areaOf(*smallest);
+      grading.MinimalLumenAreaArcLength = smallest->ArcLength;
+      grading.ReferenceArea = smallest->ReferenceArea;
+      if (grading.ReferenceDiameter > 0.0)
+      {
+        grading.DiameterStenosisPercent = 100.0 * (1.0 - grading.MinimalLumenDiameter / grading.ReferenceDiameter);
+      }
+      if (grading.ReferenceArea > 0.0)
+      {
+        grading.AreaStenosisPercent = 100.0 * (1.0 - grading.MinimalLumenArea / grading.ReferenceArea);
+      }
+      if (grading.Scale == StenosisScale::Aorta)
+      {
+        grading.NotGradedBecause = "the aorta's stenosis is not graded: its headline is the maximum diameter";
+      }
+      else
+      {
+        grading.Category = StenosisCategory(grading.Scale, grading.DiameterStenosisPercent);
+        grading.Grade = StenosisCategoryText(grading.Scale, grading.Category);
+        if (grading.Category < 0)
+        {
+          grading.NotGradedBecause = "the reference diameter is not positive";
+        }
+      }
+    }
+    summary.Segments.push_back(grading);
+  }
+
+  // The headline: the most severe graded stenosis; else the aorta's maximum diameter.
+  int worst = -1;
+  int widestAorta = -1;
+  for (std::size_t g = 0; g < summary.Segments.size(); ++g)
   {
-    if (!section.IsMeasured())
+    const SegmentGrading & grading = summary.Segments[g];
+    // On a tie the later segment wins: the vessel the path was opened for.
+    if (grading.IsGraded() &&
+        (worst < 0 ||
+         grading.DiameterStenosisPercent >= summary.Segments[static_cast<std::size_t>(worst)].DiameterStenosisPercent))
     {
-      continue;
+      worst = static_cast<int>(g);
     }
-    if (narrowest == nullptr || section.Diameter < narrowest->Diameter)
+    if (grading.Scale == StenosisScale::Aorta && std::isfinite(grading.MaximumDiameter) &&
+        (widestAorta < 0 ||
+         grading.MaximumDiameter > summary.Segments[static_cast<std::size_t>(widestAorta)].MaximumDiameter))
     {
-      narrowest = &section;
-    }
-    if (smallest == nullptr || areaOf(section) < areaOf(*smallest))
-    {
-      smallest = &section;
+      widestAorta = static_cast<int>(g);
     }
   }
-  summary.MinimalLumenDiameter = narrowest->Diameter;
-  summary.MinimalLumenDiameterArcLength = narrowest->ArcLength;
-  summary.MinimalLumenDiameterCenter = narrowest->Center;
-  summary.ReferenceDiameter = narrowest->ReferenceDiameter;
-  summary.MinimalLumenArea = areaOf(*smallest);
-  summary.MinimalLumenAreaArcLength = smallest->ArcLength;
-  summary.ReferenceArea = smallest->ReferenceArea;
-  if (summary.ReferenceDiameter > 0.0)
+  if (widestAorta >= 0)
   {
-    summary.DiameterStenosisPercent = 100.0 * (1.0 - summary.MinimalLumenDiameter / summary.ReferenceDiameter);
+    const SegmentGrading & aorta = summary.Segments[static_cast<std::size_t>(widestAorta)];
+    summary.MaximumDiameter = aorta.MaximumDiameter;
+    summary.MaximumDiameterArcLength = aorta.MaximumDiameterArcLength;
   }
-  if (summary.ReferenceArea > 0.0)
+  summary.HeadlineSegment = worst >= 0 ? worst : widestAorta;
+  if (summary.HeadlineSegment >= 0)
   {
-    summary.AreaStenosisPercent = 100.0 * (1.0 - summary.MinimalLumenArea / summary.ReferenceArea);
+    const SegmentGrading & headline = summary.Segments[static_cast<std::size_t>(summary.HeadlineSegment)];
+    summary.Scale = headline.Scale;
+    summary.ReferenceArcLengths = headline.ReferenceArcLengths;
+    summary.MinimalLumenDiameter = headline.MinimalLumenDiameter;
+    summary.MinimalLumenDiameterArcLength = headline.MinimalLumenDiameterArcLength;
+    summary.MinimalLumenDiameterCenter = headline.MinimalLumenDiameterCenter;
+    summary.MinimalLumenArea = headline.MinimalLumenArea;
+    summary.MinimalLumenAreaArcLength = headline.MinimalLumenAreaArcLength;
+    summary.ReferenceDiameter = headline.ReferenceDiameter;
+    summary.ReferenceArea = headline.ReferenceArea;
+    summary.DiameterStenosisPercent = headline.DiameterStenosisPercent;
+    summary.AreaStenosisPercent = headline.AreaStenosisPercent;
+    summary.Grade = headline.Grade;
+    summary.CADRADS = headline.Scale == StenosisScale::CADRADS ? headline.Category : -1;
   }
-  summary.CADRADS = CADRADSClass(summary.DiameterStenosisPercent);
+  else if (!summary.Segments.empty())
+  {
+    summary.Scale = summary.Segments.front().Scale;
+  }
+  if (worst < 0)
+  {
+    std::string reasons;
+    for (std::size_t g = 0; g < summary.Segments.size(); ++g)
+    {
+      const std::string & why = summary.Segments[g].NotGradedBecause;
+      reasons += (reasons.empty() ? "" : "; ") + DescribeSegment(g, summary.Segments[g]) + ": " +
+                 (why.empty() ? std::string("not graded") : why);
+    }
+    summary.NotGradedBecause = reasons;
+  }
   return summary;
 }
-
 } // namespace vr

@@ -1,7 +1,9 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // Reference diameter, MLD, MLA, % stenosis and the CAD-RADS class (docs/lumen-measurement.md) on profiles written by
 // hand, against values worked out by hand; and on the lumen measured on a tube of known cross-section (the issue's
-// 50 % concentric stenosis, from the mask and from the radii).
+// 50 % concentric stenosis, from the mask and from the radii). A profile without a layout is one segment whose ends
+// are vessel ends: no MLD within max(2 mm, the radius there) of either end.
+#include "vrInputError.h"
 #include "vrTestLumenTubes.h"
 #include "vrVesselStenosis.h"
 
@@ -62,30 +64,39 @@ TEST(VesselStenosis, CADRADSClassesAtTheirBoundaries)
   EXPECT_EQ(vr::CADRADSClass(100.0), 5);
 }
 
-TEST(VesselStenosis, InterpolatedReferenceAtTheDefaultPoints)
+TEST(VesselStenosis, InterpolatedReferenceBetweenTheEndsOfTheCandidates)
 {
   auto       profile = Profile(0.0, 100.0, 1.0, TaperWithDip);
   const auto summary = vr::AnalyseVesselStenosis(profile);
-  // Reference points at 5 and 95 mm: 6.1 and 7.9 mm; at 50 mm 6.1 + 45/90 * 1.8 = 7.0 mm.
+  // Margins: radius 3 mm at the start (d = 6.0), 4 mm at the end (d = 8.0); sections 0-3 and 96-100 are excluded,
+  // so the reference points are the first and the last candidate, 4 and 95 mm: 6.08 and 7.9 mm; at 50 mm
+  // 6.08 + 46/91 * 1.82 = 7.0 mm.
   ASSERT_EQ(summary.ReferenceArcLengths.size(), 2u);
-  EXPECT_DOUBLE_EQ(summary.ReferenceArcLengths[0], 5.0);
+  EXPECT_DOUBLE_EQ(summary.ReferenceArcLengths[0], 4.0);
   EXPECT_DOUBLE_EQ(summary.ReferenceArcLengths[1], 95.0);
   EXPECT_NEAR(summary.ReferenceDiameter, 7.0, 1e-12);
   EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameter, 3.5);
   EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 50.0);
   EXPECT_NEAR(summary.DiameterStenosisPercent, 50.0, 1e-10);
-  // Areas from the diameters (radius source), their reference interpolated between the areas at 5 and 95 mm:
-  // pi/4 (6.1^2 + (7.9^2 - 6.1^2) / 2) = pi/4 49.81 at 50 mm, so 1 - 3.5^2 / 49.81.
-  EXPECT_NEAR(summary.ReferenceArea, M_PI / 4.0 * 49.81, 1e-10);
-  EXPECT_NEAR(summary.AreaStenosisPercent, 100.0 * (1.0 - 12.25 / 49.81), 1e-10);
-  EXPECT_EQ(summary.CADRADS, 3);
+  // Areas from the diameters (radius source), their reference interpolated between the areas at 4 and 95 mm:
+  // pi/4 (6.08^2 + 46/91 (7.9^2 - 6.08^2)) at 50 mm.
+  const double referenceArea = M_PI / 4.0 * (6.08 * 6.08 + 46.0 / 91.0 * (7.9 * 7.9 - 6.08 * 6.08));
+  EXPECT_NEAR(summary.ReferenceArea, referenceArea, 1e-10);
+  EXPECT_NEAR(summary.AreaStenosisPercent, 100.0 * (1.0 - M_PI / 4.0 * 12.25 / referenceArea), 1e-10);
+  // An unnamed vessel of 7 mm is graded as a peripheral artery: 50 % is "50-99 %", and no CAD-RADS class.
+  EXPECT_EQ(summary.Scale, vr::StenosisScale::Peripheral);
+  EXPECT_EQ(summary.CADRADS, -1);
+  EXPECT_EQ(summary.Grade, "50–99 % (peripheral)");
   EXPECT_DOUBLE_EQ(summary.PathLength, 100.0);
   EXPECT_EQ(summary.MeasuredSections, 101u);
-  EXPECT_EQ(summary.MeasuredSectionsInSpan, 91u);
+  EXPECT_EQ(summary.ExcludedSections, 9u);
+  EXPECT_EQ(summary.Sections[3].ExcludedBecause, "path start");
+  EXPECT_TRUE(summary.Sections[4].Candidate);
+  EXPECT_EQ(summary.Sections[96].ExcludedBecause, "path end");
   // Constant beyond the reference points, linear between them.
-  EXPECT_NEAR(profile.Sections[0].ReferenceDiameter, 6.1, 1e-12);
-  EXPECT_NEAR(profile.Sections[2].ReferenceDiameter, 6.1, 1e-12);
-  EXPECT_NEAR(profile.Sections[20].ReferenceDiameter, 6.1 + 15.0 / 90.0 * 1.8, 1e-12);
+  EXPECT_NEAR(profile.Sections[0].ReferenceDiameter, 6.08, 1e-12);
+  EXPECT_NEAR(profile.Sections[2].ReferenceDiameter, 6.08, 1e-12);
+  EXPECT_NEAR(profile.Sections[20].ReferenceDiameter, 6.08 + 16.0 / 91.0 * 1.82, 1e-12);
   EXPECT_NEAR(profile.Sections[100].ReferenceDiameter, 7.9, 1e-12);
 }
 
@@ -114,25 +125,31 @@ TEST(VesselStenosis, InterpolatedReferenceAtGivenPointsBetweenSections)
   EXPECT_NEAR(at(20.0), 4.0, 1e-12);
   EXPECT_NEAR(at(25.0), 4.0 + 5.0 / 8.5 * (8.125 - 4.0), 1e-12);
   EXPECT_NEAR(at(30.0), 8.125, 1e-12);
-  // MLD over the whole path: the section at 10 mm, 1 mm, its reference 1.565 mm (constant before 12.5 mm).
-  EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 10.0);
-  EXPECT_NEAR(summary.MinimalLumenDiameter, 1.0, 1e-12);
-  EXPECT_NEAR(summary.ReferenceDiameter, 1.565, 1e-12);
-  EXPECT_NEAR(summary.DiameterStenosisPercent, 100.0 * (1.0 - 1.0 / 1.565), 1e-10);
-  // Areas (pi/4 d^2, the radius source) interpolated the same way: at 12.5 mm pi/4 (1.44^2 + 1.69^2) / 2.
-  EXPECT_NEAR(summary.MinimalLumenArea, M_PI / 4.0, 1e-12);
-  EXPECT_NEAR(summary.ReferenceArea, M_PI / 4.0 * (1.44 * 1.44 + 1.69 * 1.69) / 2.0, 1e-12);
-  EXPECT_NEAR(summary.AreaStenosisPercent, 100.0 * (1.0 - 2.0 / (1.44 * 1.44 + 1.69 * 1.69)), 1e-10);
+  // The MLD among the candidates: the path start's margin is 2 mm (radius 0.5 mm there), so 10-12 mm are excluded
+  // and the narrowest candidate is 13 mm, 1.69 mm, its reference 1.565 + 0.5 / 7.5 * 2.435 mm.
+  EXPECT_TRUE(summary.UserReferencePoints);
+  EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 13.0);
+  EXPECT_NEAR(summary.MinimalLumenDiameter, 1.69, 1e-12);
+  const double reference = 1.565 + 0.5 / 7.5 * (4.0 - 1.565);
+  EXPECT_NEAR(summary.ReferenceDiameter, reference, 1e-12);
+  EXPECT_NEAR(summary.DiameterStenosisPercent, 100.0 * (1.0 - 1.69 / reference), 1e-10);
+  // Areas (pi/4 d^2, the radius source) interpolated the same way: at 12.5 mm pi/4 (1.44^2 + 1.69^2) / 2, at 20 mm
+  // pi/4 16.
+  const double area12 = (1.44 * 1.44 + 1.69 * 1.69) / 2.0;
+  EXPECT_NEAR(summary.MinimalLumenArea, M_PI / 4.0 * 1.69 * 1.69, 1e-12);
+  EXPECT_NEAR(summary.ReferenceArea, M_PI / 4.0 * (area12 + 0.5 / 7.5 * (16.0 - area12)), 1e-12);
 }
 
 TEST(VesselStenosis, UnmeasuredSectionsAreSkippedByTheInterpolation)
 {
-  // Not measured at 4, 5 and 6 mm: the reference at 5 mm comes from 3 and 7 mm, (6.06 + 6.14) / 2 = 6.1.
+  // Not measured at 4, 5 and 6 mm: the first candidate is 7 mm (6.14 mm), the last 95 mm (7.9 mm); at 50 mm
+  // 6.14 + 43/88 * 1.76 = 7.0 mm.
   auto profile =
     Profile(0.0, 100.0, 1.0, [](double s) { return (s > 3.5 && s < 6.5) ? std::nan("") : TaperWithDip(s); });
   const auto summary = vr::AnalyseVesselStenosis(profile);
-  EXPECT_NEAR(profile.Sections[0].ReferenceDiameter, 6.1, 1e-12);
+  EXPECT_NEAR(profile.Sections[0].ReferenceDiameter, 6.14, 1e-12);
   EXPECT_EQ(summary.MeasuredSections, 98u);
+  EXPECT_EQ(summary.Sections[5].ExcludedBecause, "not measured");
   EXPECT_NEAR(summary.DiameterStenosisPercent, 50.0, 1e-10);
 }
 
@@ -171,23 +188,25 @@ TEST(VesselStenosis, ReferencePointsOutsideThePathAreNamed)
     vr::AnalyseVesselStenosis(profile, options);
     ADD_FAILURE() << "no exception";
   }
-  catch (const itk::ExceptionObject & exception)
+  catch (const vr::InputError & exception)
   {
-    const std::string message = exception.GetDescription();
+    EXPECT_EQ(exception.Parameter(), "reference points");
+    const std::string message = exception.what();
     EXPECT_NE(message.find("120 mm"), std::string::npos) << message;
     EXPECT_NE(message.find("-3.5 mm"), std::string::npos) << message;
     EXPECT_EQ(message.find("10 mm"), std::string::npos) << message;
     EXPECT_NE(message.find("0 to 80 mm"), std::string::npos) << message;
   }
   options.ReferenceArcLengths = { std::nan("") };
-  EXPECT_THROW(vr::AnalyseVesselStenosis(profile, options), itk::ExceptionObject);
+  EXPECT_THROW(vr::AnalyseVesselStenosis(profile, options), vr::InputError);
   options.ReferenceArcLengths = { 30.0 };
   options.Method = vr::VesselReferenceMethod::RobustFit;
-  EXPECT_THROW(vr::AnalyseVesselStenosis(profile, options), itk::ExceptionObject);
+  EXPECT_THROW(vr::AnalyseVesselStenosis(profile, options), vr::InputError);
   // One point is enough for the interpolated method: a constant reference.
   options.Method = vr::VesselReferenceMethod::Interpolated;
   const auto summary = vr::AnalyseVesselStenosis(profile, options);
   EXPECT_NEAR(profile.Sections.back().ReferenceDiameter, 6.6, 1e-12);
+  EXPECT_EQ(summary.ReferenceArcLengths, std::vector<double>{ 30.0 });
   EXPECT_DOUBLE_EQ(summary.MinimalLumenDiameterArcLength, 50.0);
   EXPECT_NEAR(summary.DiameterStenosisPercent, 100.0 * (1.0 - 3.5 / 6.6), 1e-10);
 }
@@ -195,12 +214,12 @@ TEST(VesselStenosis, ReferencePointsOutsideThePathAreNamed)
 TEST(VesselStenosis, TooShortOrUnmeasuredPathsThrow)
 {
   auto one = Profile(0.0, 0.0, 1.0, TaperWithDip);
-  EXPECT_THROW(vr::AnalyseVesselStenosis(one), itk::ExceptionObject);
+  EXPECT_THROW(vr::AnalyseVesselStenosis(one), vr::InputError);
   auto none = Profile(0.0, 50.0, 1.0, [](double) { return std::nan(""); });
-  EXPECT_THROW(vr::AnalyseVesselStenosis(none), itk::ExceptionObject);
+  EXPECT_THROW(vr::AnalyseVesselStenosis(none), vr::InputError);
   auto backwards = Profile(0.0, 50.0, 1.0, TaperWithDip);
   std::swap(backwards.Sections[3].ArcLength, backwards.Sections[4].ArcLength);
-  EXPECT_THROW(vr::AnalyseVesselStenosis(backwards), itk::ExceptionObject);
+  EXPECT_THROW(vr::AnalyseVesselStenosis(backwards), vr::InputError);
 }
 
 using vr::test::LumenTube;
@@ -226,6 +245,7 @@ TEST(VesselLumenMeasurement, StenosisGradedFromTheMask)
   const auto                summary = vr::AnalyseVesselStenosis(profile);
   vr::VesselStenosisOptions options;
   options.Method = vr::VesselReferenceMethod::RobustFit;
+  options.Scale = vr::StenosisScale::CADRADS; // as a user says when the tube is a coronary artery
   const auto robustSummary = vr::AnalyseVesselStenosis(robust, options);
   for (const auto * s : { &summary, &robustSummary })
   {
@@ -241,8 +261,18 @@ TEST(VesselLumenMeasurement, StenosisGradedFromTheMask)
     // Area stenosis 1 - (2/4)^2 = 75 %; 3 points of diameter stenosis are 3 of area stenosis here.
     EXPECT_NEAR(s->MinimalLumenArea, M_PI * 4.0, M_PI * 4.0 * 0.1);
     EXPECT_NEAR(s->AreaStenosisPercent, 75.0, 3.0);
-    EXPECT_EQ(s->CADRADS, vr::CADRADSClass(s->DiameterStenosisPercent));
-    EXPECT_TRUE(s->CADRADS == 2 || s->CADRADS == 3);
+    if (s == &robustSummary)
+    {
+      EXPECT_EQ(s->CADRADS, vr::CADRADSClass(s->DiameterStenosisPercent));
+      EXPECT_TRUE(s->CADRADS == 2 || s->CADRADS == 3);
+    }
+    else
+    {
+      // An unnamed 8 mm tube is a peripheral artery: no CAD-RADS class, the peripheral category instead.
+      EXPECT_EQ(s->CADRADS, -1);
+      EXPECT_EQ(s->Scale, vr::StenosisScale::Peripheral);
+      EXPECT_TRUE(s->Grade == "50–99 % (peripheral)" || s->Grade == "20–49 % (peripheral)") << s->Grade;
+    }
     EXPECT_DOUBLE_EQ(s->PathLength, 80.0);
     EXPECT_EQ(s->Source, itk::VesselLumenSource::Segmentation);
   }
@@ -268,8 +298,10 @@ TEST(VesselLumenMeasurement, StenosisGradedFromTheRadiiAlone)
     auto                      copy = profile;
     vr::VesselStenosisOptions options;
     options.Method = method;
+    options.Scale = vr::StenosisScale::CADRADS;
     const auto summary = vr::AnalyseVesselStenosis(copy, options);
-    // Exact for the interpolated reference (8 mm at 4 and 76 mm); the robust line gives the dip's flanks, close to
+    // Exact for the interpolated reference (8 mm at the first and last candidate, 4 and 76 mm: the tube's 4 mm radius
+    // is its end margin); the robust line gives the dip's flanks, close to
     // 8 mm, a little weight.
     const double tolerance = method == vr::VesselReferenceMethod::Interpolated ? 1e-9 : 0.01;
     EXPECT_NEAR(summary.MinimalLumenDiameter, 4.0, 1e-9);

@@ -3,7 +3,7 @@
 
 #include "vrCrossSectionView.h"
 #include "vrLumenProfilePlot.h"
-#include "vrLumenTableIO.h"
+#include "vrLumenMeasurement.h"
 #include "vrNodeConversion.h"
 #include "vrSegmentationIO.h"
 #include "vrStraightenedCPRView.h"
@@ -568,7 +568,9 @@ VesselPathPanel::WriteLumenTable(const QString & path) const
   }
   try
   {
-    vr::WriteLumenTable(m_Logic->GetResults().Lumen, path.toStdString());
+    const auto & results = m_Logic->GetResults();
+    vr::WriteLumenTable(
+      results.Lumen, path.toStdString(), LumenTableNotesOf({ results.Lumen, results.Stenosis }, DescribePath(results)));
   }
   catch (const std::exception & error)
   {
