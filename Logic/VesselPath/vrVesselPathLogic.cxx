@@ -309,7 +309,8 @@ VesselPathLogic::Internals::RunResampling()
   CPRFilter->SetComputePointImage(PointImageEnabled);
   try
   {
-    CPRFilter->Update();
+    // The largest region: a narrower width than the last run's must not keep the last requested region.
+    CPRFilter->UpdateLargestPossibleRegion();
   }
   catch (const itk::ExceptionObject & error)
   {
@@ -346,7 +347,7 @@ VesselPathLogic::Internals::RunResampling()
     StackFilter->SetSlabMode(p.SlabMode);
     try
     {
-      StackFilter->Update();
+      StackFilter->UpdateLargestPossibleRegion();
     }
     catch (const itk::ExceptionObject & error)
     {

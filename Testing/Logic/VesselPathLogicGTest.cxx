@@ -226,3 +226,32 @@ TEST(VesselPathLogic, ErrorsNameTheParameter)
   EXPECT_EQ(parameterOf(parameters), "(no error)");
 }
 } // namespace
+
+namespace
+{
+TEST(VesselPathLogic, ANarrowerWidthAfterAWiderOneIsResampledWhole)
+{
+  // The viewer's fold warning offers a narrower width: the filters must not keep the wider run's requested region
+  // (it failed with "Requested region is (at least partially) outside the largest possible region").
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  logic.SetVolume(scene.Volume);
+  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetCrossSectionsEnabled(true);
+  vr::VesselPathParameters parameters = Defaults();
+  parameters.Width = 40.0;
+  logic.SetParameters(parameters);
+  EXPECT_EQ(logic.Update().CPR->GetLargestPossibleRegion().GetSize()[0], 81u);
+  for (const double width : { 17.2, 6.0, 30.0 })
+  {
+    parameters.Width = width;
+    logic.SetParameters(parameters);
+    const auto & results = logic.Update();
+    const auto   columns = static_cast<unsigned long>(2 * std::lround(width / (2 * 0.5)) + 1);
+    EXPECT_EQ(results.CPR->GetLargestPossibleRegion().GetSize()[0], columns) << width;
+    EXPECT_EQ(results.CrossSections->GetLargestPossibleRegion().GetSize()[0],
+              static_cast<unsigned long>(std::lround(width / 0.5)) | 1u)
+      << width;
+  }
+}
+} // namespace
