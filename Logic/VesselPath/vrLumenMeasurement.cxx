@@ -176,7 +176,9 @@ DescribeSegmentGrading(const VesselStenosisSummary & summary, std::size_t segmen
   }
   if (!grading.NotGradedBecause.empty())
   {
-    text << (said ? "; " : "") << "not graded: " << grading.NotGradedBecause;
+    // An aortic segment's reason says it already ("the aorta is sized, not graded: ...").
+    const bool sized = grading.Scale == StenosisScale::Aorta && std::isfinite(grading.MaximumDiameter);
+    text << (said ? "; " : "") << (sized ? "" : "not graded: ") << grading.NotGradedBecause;
   }
   return text.str();
 }

@@ -536,6 +536,11 @@ AnalyseVesselStenosis(itk::VesselLumenProfile & profile, const VesselStenosisOpt
         {
           why << "no section measured";
         }
+        else if (candidates.empty())
+        {
+          why << "no section outside the margins of its ends and branch origins ("
+              << grading.Segment.End - grading.Segment.Begin << " mm long)";
+        }
         else
         {
           why << "too short for two reference points: " << candidates.size()
@@ -599,7 +604,7 @@ AnalyseVesselStenosis(itk::VesselLumenProfile & profile, const VesselStenosisOpt
       }
       if (grading.Scale == StenosisScale::Aorta)
       {
-        grading.NotGradedBecause = "the aorta's stenosis is not graded: its headline is the maximum diameter";
+        grading.NotGradedBecause = "the aorta is sized, not graded: its headline is the maximum diameter";
       }
       else
       {
