@@ -45,6 +45,7 @@ ViewerWindow::OpenFiles(const QString & volume, const QString & centerlines)
 {
   const std::string volumePath = volume.toStdString();
   const std::string centerlinePath = centerlines.toStdString();
+  RememberDataFolder(volume);
   RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), { QFileInfo(centerlines).absoluteFilePath() }, false });
   m_Controller->LoadInputs([volumePath, centerlinePath]
                            { return MakeInputs(ReadVolumeNode(volumePath), ReadCenterlineNode(centerlinePath)); },
@@ -61,6 +62,7 @@ ViewerWindow::OpenVolume(const QString & path)
     return;
   }
   const std::string volumePath = path.toStdString();
+  RememberDataFolder(path);
   m_Controller->LoadInputs(
     [volumePath, current]
     {
@@ -89,6 +91,7 @@ ViewerWindow::OpenCenterlines(const QString & path)
     return;
   }
   const std::string centerlinePath = path.toStdString();
+  RememberDataFolder(path);
   m_Controller->LoadInputs(
     [centerlinePath, current]
     {
@@ -130,6 +133,7 @@ ViewerWindow::OpenSegmentation(const QStringList & paths)
     files.push_back(path.toStdString());
     names << QFileInfo(path).fileName();
   }
+  RememberDataFolder(paths.front());
   m_Controller->LoadInputs(
     [files, current]
     {
@@ -163,6 +167,7 @@ ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringLis
   {
     absolute << QFileInfo(path).absoluteFilePath();
   }
+  RememberDataFolder(volume);
   RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), absolute, true });
   m_Controller->LoadInputs(
     [volumePath, files]
@@ -182,7 +187,24 @@ ViewerWindow::OpenFilesWithSegmentation(const QString & volume, const QStringLis
 QString
 ViewerWindow::StartFolder() const
 {
-  return m_Settings ? m_Settings->LastFolder() : QString();
+  // The folder of the data on screen; else the latest folder of an earlier run; else where the viewer was started.
+  if (!m_DataFolder.isEmpty() && QFileInfo(m_DataFolder).isDir())
+  {
+    return m_DataFolder;
+  }
+  const QString remembered = m_Settings ? m_Settings->LastFolder() : QString();
+  return !remembered.isEmpty() && remembered != QDir::homePath() ? remembered : QDir::currentPath();
+}
+
+void
+ViewerWindow::RememberDataFolder(const QString & path)
+{
+  const QFileInfo info(path);
+  m_DataFolder = info.isDir() ? info.absoluteFilePath() : info.absolutePath();
+  if (m_Settings)
+  {
+    m_Settings->RememberFolderOf(path);
+  }
 }
 
 void
