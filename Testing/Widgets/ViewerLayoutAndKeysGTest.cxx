@@ -323,13 +323,13 @@ TEST_F(ViewerLayoutTest, EachWindowKeyWorksWithTheFocusInASpinBoxTheTreeViewAndT
     ASSERT_TRUE(WaitUntilSettled(Window()));
   }
 
-  // Undo: each focus target takes Ctrl+Z to the window's Undo open.
+  // Undo: Ctrl+Z goes to the window's Undo open from the spin box, the tree view and the straightened CPR.
   ScopedTemporaryFolder folder;
   const std::string     volume = folder.File("phantom.nrrd");
   const std::string     centerlines = folder.File("phantom.vtp");
   WriteVolume(ConvertVolumeNodeToItkImage(SmallPhantomInputs().Volume), volume);
   WriteCenterlines(SmallPhantomInputs().Tree, centerlines);
-  for (int t = 0; t < 2; ++t)
+  for (int t = 0; t < 3; ++t)
   {
     SCOPED_TRACE(names[t]);
     const auto before = Controller().GetInputs();
@@ -337,6 +337,10 @@ TEST_F(ViewerLayoutTest, EachWindowKeyWorksWithTheFocusInASpinBoxTheTreeViewAndT
     ASSERT_TRUE(WaitUntil([&] { return Controller().GetInputs() != before; }));
     ASSERT_TRUE(WaitUntilSettled(Window()));
     ASSERT_TRUE(Window().CanUndoOpen());
+    if (targets[t] == panel->GetStraightenedView())
+    {
+      OpenPath(); // new inputs closed the path: the straightened CPR shows again
+    }
     const auto opened = Controller().GetInputs();
     Press(targets[t], Qt::Key_Z, Qt::ControlModifier);
     // Undo loads a copy of the earlier inputs: the same volume node again.
