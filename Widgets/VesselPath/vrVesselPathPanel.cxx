@@ -186,6 +186,7 @@ VesselPathPanel::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
   m_CrossSection->SetSlice(nullptr, 0, m_Window, m_Level);
   m_Plot->Clear();
   m_Measurements->clear();
+  m_ReportHTML.clear();
   if (!m_Inputs)
   {
     setEnabled(false);
@@ -570,11 +571,16 @@ VesselPathPanel::ShowPosition()
 void
 VesselPathPanel::ShowMeasurements()
 {
-  const auto & results = m_Logic->GetResults();
-  // The report keeps its place when it is rewritten for a new section.
-  const int scrolled = m_Measurements->verticalScrollBar()->value();
-  m_Measurements->setHtml(VesselPathReportHTML(results, static_cast<std::size_t>(m_Section), m_Parameters.Width));
-  m_Measurements->verticalScrollBar()->setValue(scrolled);
+  const auto &  results = m_Logic->GetResults();
+  const QString html = VesselPathReportHTML(results, static_cast<std::size_t>(m_Section), m_Parameters.Width);
+  // Laid out again only when it changed (a roll changes nothing in it), and where it was scrolled to.
+  if (html != m_ReportHTML)
+  {
+    m_ReportHTML = html;
+    const int scrolled = m_Measurements->verticalScrollBar()->value();
+    m_Measurements->setHtml(html);
+    m_Measurements->verticalScrollBar()->setValue(scrolled);
+  }
   std::string all;
   for (const auto & warning : results.Warnings)
   {

@@ -225,6 +225,7 @@ private:
   QDoubleSpinBox *      m_Roll{ nullptr };
   QTabWidget *          m_Tabs{ nullptr };
   QTextBrowser *        m_Measurements{ nullptr };
+  QString               m_ReportHTML;
   VesselPathSettings *  m_Settings{ nullptr };
   StraightenedCPRView * m_CPR{ nullptr };
   CrossSectionView *    m_CrossSection{ nullptr };
