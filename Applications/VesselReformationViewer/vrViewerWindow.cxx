@@ -4,6 +4,9 @@
 #include "itkCTAPhantom.h"
 #include "vrInputError.h"
 #include "vrModuleDescription.h"
+#include "vrViewerLayout.h"
+#include "vrViewerStatusBar.h"
+#include "vrWindowKeyPolicy.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -87,6 +90,8 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   splitter->setStretchFactor(1, 3);
   splitter->setStretchFactor(2, 2);
   splitter->setStretchFactor(3, 3);
+  m_Layout = new ViewerLayout(splitter);
+  m_KeyPolicy = new WindowKeyPolicy(this);
 
   // Warnings in full above the views, until dismissed or new data is opened.
   m_WarningBanner = new QFrame;
@@ -108,24 +113,20 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   centralLayout->addWidget(splitter, 1);
   setCentralWidget(central);
 
-  m_Readout = new QLabel;
+  // Messages, the readout, the times and the progress each in a field of their own.
+  auto * status = new ViewerStatusBar;
+  setStatusBar(status);
+  m_Readout = status->GetReadoutField();
   m_Readout->setToolTip(tr("The pixel under the mouse: column and row, its RAS position in mm, the intensity (HU), the "
                            "depth along the view direction (mm) and the branch owning it."));
-  m_Times = new QLabel;
+  m_Times = status->GetTimesField();
   m_Times->setToolTip(tr("The time of each stage of the latest update (the logic's own), and of drawing it."));
-  m_Progress = new QProgressBar;
-  m_Progress->setRange(0, 1000);
-  m_Progress->setMaximumWidth(160);
-  m_Progress->setTextVisible(false);
-  m_Progress->setVisible(false);
+  m_Progress = status->GetProgressBar();
   m_ProgressDelay = new QTimer(this);
   m_ProgressDelay->setSingleShot(true);
   m_ProgressDelay->setTimerType(Qt::PreciseTimer);
   m_ProgressDelay->setInterval(ProgressDelayMilliseconds);
   connect(m_ProgressDelay, &QTimer::timeout, m_Progress, [this] { m_Progress->setVisible(true); });
-  statusBar()->addWidget(m_Readout, 1);
-  statusBar()->addPermanentWidget(m_Times);
-  statusBar()->addPermanentWidget(m_Progress);
 
   BuildMenus();
   ConnectParts();
@@ -198,55 +199,7 @@ ViewerWindow::BuildMenus()
                     m_ThreeDView->ScheduleRender();
                   });
 
-  // Keys that turn the view and choose a window, as a reader works with the other hand on the mouse.
-  view->addSeparator();
-  const struct
-  {
-    const char * Name;
-    QString      Text;
-    double       Degrees;
-    QKeySequence Key;
-  } turns[] = { { "turnLeft1", tr("Turn left 1°"), -1.0, QKeySequence(Qt::Key_Left) },
-                { "turnRight1", tr("Turn right 1°"), 1.0, QKeySequence(Qt::Key_Right) },
-                { "turnLeft10", tr("Turn left 10°"), -10.0, QKeySequence(Qt::SHIFT | Qt::Key_Left) },
-                { "turnRight10", tr("Turn right 10°"), 10.0, QKeySequence(Qt::SHIFT | Qt::Key_Right) } };
-  for (const auto & turn : turns)
-  {
-    QAction * action = view->addAction(
-      turn.Text, this, [this, degrees = turn.Degrees] { TurnBy(degrees); }, turn.Key);
-    action->setObjectName(QString::fromLatin1(turn.Name));
-    action->setShortcutContext(Qt::WindowShortcut);
-  }
-  QAction * home = view->addAction(
-    tr("Reset the view"),
-    this,
-    [this]
-    {
-      m_Panel->SetAngle(0.0, RequestKind::Final);
-      m_CPRView->FitImage();
-      m_CPRView->Render();
-      m_ThreeDView->ResetCamera();
-      m_ThreeDView->ScheduleRender();
-    },
-    QKeySequence(Qt::Key_Home));
-  home->setObjectName(QStringLiteral("resetView"));
-  view
-    ->addAction(
-      tr("&Best view (least hidden)"), this, [this] { GoToBestView(); }, QKeySequence(Qt::CTRL | Qt::Key_B))
-    ->setObjectName(QStringLiteral("bestView"));
-  QMenu *       presets = view->addMenu(tr("Window &preset"));
-  const QString presetNames[] = { QString::fromLatin1(CTAPreset.Name),
-                                  QString::fromLatin1(BonePreset.Name),
-                                  QString::fromLatin1(SoftTissuePreset.Name),
-                                  QString::fromUtf8(PercentilePresetName) };
-  for (int k = 0; k < 4; ++k)
-  {
-    const QString name = presetNames[k];
-    presets
-      ->addAction(
-        name, this, [this, name] { m_Panel->ApplyPreset(name, 0.0, 0.0); }, QKeySequence(Qt::CTRL | (Qt::Key_1 + k)))
-      ->setObjectName(QStringLiteral("preset%1").arg(k + 1));
-  }
+  BuildViewKeys(view);
 
   BuildVesselPathMenu();
 
@@ -671,11 +624,8 @@ ViewerWindow::UseSettings(std::shared_ptr<ViewerSettings> settings)
   {
     restoreGeometry(geometry);
   }
-  const QByteArray split = m_Settings->Value(QStringLiteral("window/splitter"));
-  if (!split.isEmpty())
-  {
-    m_Splitter->restoreState(split);
-  }
+  // Checked: a split that would hide the CPR or the 3D view is not restored (ViewerLayout).
+  m_Layout->Restore(m_Settings->Value(QStringLiteral("window/splitter")));
   const QByteArray overlays = m_Settings->Value(QStringLiteral("display/overlays"));
   if (overlays.size() == 4)
   {
@@ -786,14 +736,19 @@ ViewerWindow::HelpText()
             "<li>Ctrl+click a vessel: open its path in the vessel path panel (right).</li>"
             "</ul><h4>The vessel path panel</h4><ul>"
             "<li>Straightened CPR: left-drag rolls it about the path; right-click puts the cross-section there.</li>"
-            "<li>Wheel or Up / Down over the straightened CPR or the cross-section: move the cross-section by one "
-            "section (Page Up / Down: ten); a click on the lumen plot moves it there.</li>"
+            "<li>Wheel over the straightened CPR or the cross-section, or Up / Down anywhere while a path is open: "
+            "move the cross-section by one section (Page Up / Down: ten); a click on the lumen plot moves it "
+            "there.</li>"
+            "<li>Report: the stenosis graded segment by segment on the scale of its vessel (CAD-RADS for a coronary "
+            "artery, NASCET for a carotid, the peripheral categories otherwise; the aorta's maximum diameter). "
+            "Settings: width, range, slab, reference and scale.</li>"
             "<li>The cross-section's point is marked in the CPR view (cross) and the 3D view (sphere).</li>"
             "<li>Vessel menu: the longest path, a segmentation to measure the lumen on, export of the lumen table "
             "and of the path's images.</li>"
             "</ul><h4>Keys</h4><ul>"
             "<li>Left / Right: turn by 1°; with Shift by 10°.</li>"
-            "<li>Home: angle 0, image fitted, 3D camera reset.</li>"
+            "<li>Home: angle 0, image fitted, 3D camera along the view.</li>"
+            "<li>The keys work wherever the focus is; a text field keeps its keys while you type in it.</li>"
             "<li>Ctrl+1 … Ctrl+4: CTA, bone, soft tissue, 1–99 % window.</li>"
             "<li>Ctrl+O: open a volume. Ctrl+Z: undo the latest open. Ctrl+S: save the outputs. F1: this page.</li>"
             "</ul><h4>The panel</h4><ul>"

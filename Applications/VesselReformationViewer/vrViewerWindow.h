@@ -23,6 +23,7 @@
 #include <memory>
 #include <vector>
 
+class QAction;
 class QCloseEvent;
 class QLabel;
 class QMenu;
@@ -32,6 +33,9 @@ class QTimer;
 
 namespace vr
 {
+class ViewerLayout;
+class WindowKeyPolicy;
+
 /** \class ViewerWindow
  * \brief The VesselReformationViewer's main window, a host for the module's widgets: the module panel, the CPR view
  * and the 3D view around one ReformationController, with menus to open files and phantoms, save outputs and show the
@@ -87,6 +91,10 @@ public:
   /** File > Open recent's entry \a index (0: the latest). */
   void
   OpenRecent(int index);
+  /** The folder file dialogs start in: the data's on screen, else the latest of an earlier run, else the working
+   * folder. */
+  QString
+  StartFolder() const;
 
   /** Edit > Undo open: loads again the inputs that were on screen before the latest successful open (several steps
    * back, up to MaximumUndoSteps), as they were: a volume and centerlines that looked wrong together are undone in
@@ -116,11 +124,14 @@ public:
   QString
   WriteScreenshot(const QString & path);
   /** Exports a rotation series of the reformation on screen (vr::RotationSeriesExport: its inputs and parameters, the
-   * panel's window and level) into \a folder at \a angles, on a thread of its own behind a modal progress dialog
-   * whose Cancel stops it (nothing is then written). Errors go to the error handler or a dialog.
-   * \return the number of views written, 0 when nothing was. */
+   * panel's window and level) into \a folder at \a angles, its pictures at least \a displayLongSide pixels long with
+   * the angle and orientation letters burned in (0: the CPR's own size), on a thread of its own behind a modal progress
+   * dialog whose Cancel stops it (nothing is then written). Errors go to the error handler or a dialog. \return the
+   * number of views written, 0 when nothing was. */
   int
-  ExportRotationSeries(const QString & folder, const RotationAngles & angles);
+  ExportRotationSeries(const QString &        folder,
+                       const RotationAngles & angles,
+                       unsigned int           displayLongSide = RotationSeriesSettings::DefaultDisplayLongSide);
 
   /** Errors go to \a handler instead of a dialog (scripted mode); an empty handler restores dialogs. */
   void
@@ -138,6 +149,15 @@ public:
   /** Turns the view by \a degrees from the panel's angle (the arrow keys: 1°, with Shift 10°). */
   void
   TurnBy(double degrees);
+  /** Home: angle 0, the image fitted, the 3D camera along the view direction at 0 degrees. */
+  void
+  ResetView();
+  /** The split between the panel and the views, which keeps every view on screen (View > Reset layout). */
+  ViewerLayout *
+  GetLayout() const
+  {
+    return m_Layout;
+  }
 
   /** \return the module description with the paper's citation, as the About box shows it (HTML). */
   static QString
@@ -221,6 +241,14 @@ private:
   BuildMenus();
   void
   BuildVesselPathMenu();
+  /** The View menu's keys (vrViewerWindowKeys.cxx): turns, Home, presets, Reset layout. */
+  void
+  BuildViewKeys(QMenu * view);
+  /** The Vessel menu's keys that step the cross-section, enabled while a path is open. */
+  void
+  BuildSectionKeys(QMenu * vessel);
+  void
+  EnableSectionKeys(bool enabled);
   void
   ConnectVesselPath();
   void
@@ -255,6 +283,9 @@ private:
   /** The folder file dialogs start in. */
   QString
   StartFolder() const;
+  /** Remembers the folder of \a path (a file or folder opened) for the dialogs, and in the settings. */
+  void
+  RememberDataFolder(const QString & path);
   void
   ChooseAndOpenVolumeAndCenterlines();
   void
@@ -309,8 +340,12 @@ private:
   QLabel *                                   m_Readout{ nullptr };
   QWidget *                                  m_WarningBanner{ nullptr };
   QSplitter *                                m_Splitter{ nullptr };
+  ViewerLayout *                             m_Layout{ nullptr };
+  WindowKeyPolicy *                          m_KeyPolicy{ nullptr };
+  std::vector<QAction *>                     m_SectionActions;
   QMenu *                                    m_RecentMenu{ nullptr };
   std::shared_ptr<ViewerSettings>            m_Settings;
+  QString                                    m_DataFolder;
   std::optional<ViewerSettings::RecentEntry> m_PendingRecent;
   QAction *                                  m_UndoOpen{ nullptr };
   /** The inputs shown before each successful open, the latest last; and those shown now. */

@@ -113,7 +113,7 @@ ViewerWindow::ChooseAndSaveOutputs()
 }
 
 int
-ViewerWindow::ExportRotationSeries(const QString & folder, const RotationAngles & angles)
+ViewerWindow::ExportRotationSeries(const QString & folder, const RotationAngles & angles, unsigned int displayLongSide)
 {
   const auto shown = m_CPRView->GetResult();
   if (!shown || !shown->Inputs)
@@ -132,6 +132,7 @@ ViewerWindow::ExportRotationSeries(const QString & folder, const RotationAngles 
   settings.Angles = angles;
   settings.Window = m_Panel->GetWindowSpinBox()->value();
   settings.Level = m_Panel->GetLevelSpinBox()->value();
+  settings.DisplayLongSide = displayLongSide;
   std::unique_ptr<RotationSeriesExport> series;
   try
   {
@@ -266,9 +267,23 @@ ViewerWindow::ChooseAndExportRotationSeries()
   {
     return;
   }
+  const int size = QInputDialog::getInt(this,
+                                        tr("Rotation series"),
+                                        tr("Long side of the pictures, in pixels (a smaller CPR is enlarged; 0: the "
+                                           "CPR's own size):"),
+                                        static_cast<int>(RotationSeriesSettings::DefaultDisplayLongSide),
+                                        0,
+                                        static_cast<int>(RotationSeriesSettings::MaximumDisplayLongSide),
+                                        64,
+                                        &accepted);
+  if (!accepted)
+  {
+    return;
+  }
   try
   {
-    ExportRotationSeries(folder, ParseRotationAngles(text.toStdString(), "the angles"));
+    ExportRotationSeries(
+      folder, ParseRotationAngles(text.toStdString(), "the angles"), static_cast<unsigned int>(size));
   }
   catch (const std::exception & error)
   {

@@ -51,6 +51,7 @@ ViewerWindow::OpenFiles(const QString & volume, const QString & centerlines, con
 {
   const std::string volumePath = volume.toStdString();
   const std::string centerlinePath = centerlines.toStdString();
+  RememberDataFolder(volume);
   RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), { QFileInfo(centerlines).absoluteFilePath() }, false });
   m_Controller->LoadInputs(
     [this, volumePath, centerlinePath, volume, centerlines, series]
@@ -78,6 +79,7 @@ ViewerWindow::OpenVolume(const QString & path, const QString & series)
     return;
   }
   const std::string volumePath = path.toStdString();
+  RememberDataFolder(path);
   m_Controller->LoadInputs(
     [this, volumePath, current, path, series]
     {
@@ -190,6 +192,7 @@ ViewerWindow::OpenCenterlines(const QString & path)
     return;
   }
   const std::string centerlinePath = path.toStdString();
+  RememberDataFolder(path);
   m_Controller->LoadInputs(
     [centerlinePath, current]
     {
@@ -231,6 +234,7 @@ ViewerWindow::OpenSegmentation(const QStringList & paths)
     files.push_back(path.toStdString());
     names << QFileInfo(path).fileName();
   }
+  RememberDataFolder(paths.front());
   m_Controller->LoadInputs(
     [files, current]
     {
@@ -266,6 +270,7 @@ ViewerWindow::OpenFilesWithSegmentation(const QString &     volume,
   {
     absolute << QFileInfo(path).absoluteFilePath();
   }
+  RememberDataFolder(volume);
   RememberWhenLoaded({ QFileInfo(volume).absoluteFilePath(), absolute, true });
   m_Controller->LoadInputs(
     [this, volumePath, files, volume, segmentation, series]
@@ -291,7 +296,24 @@ ViewerWindow::OpenFilesWithSegmentation(const QString &     volume,
 QString
 ViewerWindow::StartFolder() const
 {
-  return m_Settings ? m_Settings->LastFolder() : QString();
+  // The folder of the data on screen; else the latest folder of an earlier run; else where the viewer was started.
+  if (!m_DataFolder.isEmpty() && QFileInfo(m_DataFolder).isDir())
+  {
+    return m_DataFolder;
+  }
+  const QString remembered = m_Settings ? m_Settings->LastFolder() : QString();
+  return !remembered.isEmpty() && remembered != QDir::homePath() ? remembered : QDir::currentPath();
+}
+
+void
+ViewerWindow::RememberDataFolder(const QString & path)
+{
+  const QFileInfo info(path);
+  m_DataFolder = info.isDir() ? info.absoluteFilePath() : info.absolutePath();
+  if (m_Settings)
+  {
+    m_Settings->RememberFolderOf(path);
+  }
 }
 
 void

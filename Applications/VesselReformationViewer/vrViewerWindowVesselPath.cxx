@@ -6,6 +6,7 @@
 #include "vrCrossSectionView.h"
 #include "vrLumenProfilePlot.h"
 #include "vrStraightenedCPRView.h"
+#include "vrViewerLayout.h"
 
 #include <QDir>
 #include <QFileDialog>
@@ -41,6 +42,7 @@ ViewerWindow::BuildVesselPathMenu()
     ->setObjectName(QStringLiteral("exportVesselPathImages"));
   vessel->addSeparator();
   vessel->addAction(tr("&Close the vessel path"), this, [this] { CloseVesselPath(); });
+  BuildSectionKeys(vessel);
 }
 
 void
@@ -77,17 +79,8 @@ ViewerWindow::ConnectVesselPath()
               points.push_back(section.Center);
             }
             m_ThreeDView->SetPath(points);
-            if (!m_PathPanel->isVisible())
-            {
-              // Room for the panel, taken from the CPR and 3D views (the module panel keeps its width).
-              QList<int> sizes = m_Splitter->sizes();
-              const int  room = sizes[1] + sizes[2];
-              sizes[1] = room * 36 / 100;
-              sizes[2] = room * 22 / 100;
-              sizes[3] = room - sizes[1] - sizes[2];
-              m_PathPanel->setVisible(true);
-              m_Splitter->setSizes(sizes);
-            }
+            m_Layout->ShowPathPanel();
+            EnableSectionKeys(true);
           });
   connect(m_PathPanel,
           &VesselPathPanel::errorOccurred,
@@ -114,6 +107,7 @@ void
 ViewerWindow::CloseVesselPath()
 {
   m_PathPanel->setVisible(false);
+  EnableSectionKeys(false);
   m_CPRView->SetPathMarker(std::nullopt);
   m_ThreeDView->SetPathMarker(std::nullopt);
   m_ThreeDView->SetPath({});
@@ -128,6 +122,10 @@ ViewerWindow::OpenLumenSegmentation(const QStringList & paths)
     for (const QString & path : paths)
     {
       files.push_back(path.toStdString());
+    }
+    if (!paths.isEmpty())
+    {
+      RememberDataFolder(paths.front());
     }
     std::vector<std::string> warnings;
     std::vector<std::string> descriptions;

@@ -39,6 +39,7 @@ constexpr const char * MinimumBranchLength = "minimum branch length";
 /** The lumen measurement along a vessel path (vr::LumenMeasurementParameters). */
 constexpr const char * ReferencePoints = "reference points";
 constexpr const char * ReferenceMethod = "reference method";
+constexpr const char * GradingScale = "grading scale";
 constexpr const char * LumenSampling = "lumen sampling";
 /** The single-vessel reading (vr::VesselPathParameters). */
 constexpr const char * Branch = "branch";

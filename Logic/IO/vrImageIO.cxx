@@ -262,6 +262,18 @@ WriteWindowedPNG(const DepthImageType * image, double window, double level, cons
   {
     grey[k] = WindowLevelToByte(values[k], window, level);
   }
+  WriteGreyPNG(bytes, path);
+}
+
+void
+WriteGreyPNG(const MaskImageType * bytes, const std::string & path)
+{
+  if (bytes == nullptr)
+  {
+    throw InputError("PNG output " + path + ": no image to write");
+  }
+  const std::size_t     count = bytes->GetLargestPossibleRegion().GetNumberOfPixels();
+  const unsigned char * grey = bytes->GetBufferPointer();
   // ITK's PNG writer ignores a failed fclose, so a full disk can leave a truncated PNG behind a successful write:
   // read the file back and compare before it is published.
   const auto verify = [&](const std::string & written)

@@ -40,6 +40,10 @@ WindowLevelToByte(double value, double window, double level);
 /** Writes an 8-bit PNG of \a image through window/level (intensities level -+ window/2 map to 0..255). */
 void
 WriteWindowedPNG(const DepthImageType * image, double window, double level, const std::string & path);
+/** Writes an 8-bit grey image as a PNG, atomically, read back before it is published (a full disk leaves nothing).
+ * Throws vr::InputError naming the path. */
+void
+WriteGreyPNG(const MaskImageType * image, const std::string & path);
 // Grey = round(255 (v - level + window/2) / window) clamped to [0, 255]; NaN gives 0. Throws vr::InputError
 // naming the window or level when window is not > 0 or either is not finite. Row 0 of the image is the PNG's top.
 

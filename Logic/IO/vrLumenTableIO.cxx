@@ -23,12 +23,26 @@ Cell(std::ostream & output, char separator, double value)
     output << value;
   }
 }
+
+/** Text without the separator, the comment mark at its start or a line break, which would break the table. */
+std::string
+Clean(std::string text, char separator)
+{
+  for (char & c : text)
+  {
+    if (c == separator || c == '\n' || c == '\r')
+    {
+      c = separator == ';' ? ',' : ';';
+    }
+  }
+  return text;
+}
 } // namespace
 
 LumenTable
 MakeLumenTable(const itk::VesselLumenProfile & profile)
 {
-  constexpr std::size_t columns = sizeof(LumenTableColumns) / sizeof(LumenTableColumns[0]);
+  constexpr std::size_t columns = LumenTableProfileColumns;
   const double          empty = std::nan("");
   const bool            segmentation = profile.Source == itk::VesselLumenSource::Segmentation;
   LumenTable            table;
@@ -93,9 +107,14 @@ LumenTableSeparator(const std::string & path)
 }
 
 void
-WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path)
+WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path, const LumenTableNotes & notes)
 {
-  const char   separator = LumenTableSeparator(path);
+  const char separator = LumenTableSeparator(path);
+  if (!notes.Rows.empty() && notes.Rows.size() != profile.Sections.size())
+  {
+    throw InputError("lumen table " + path + ": " + std::to_string(notes.Rows.size()) + " rows of marks for " +
+                     std::to_string(profile.Sections.size()) + " sections");
+  }
   AtomicOutput staged(path);
   {
     std::ofstream output(staged.TemporaryPath());
@@ -104,6 +123,15 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
       throw InputError("lumen table " + path + ": cannot be created");
     }
     output.precision(10);
+    for (const std::string & comment : notes.Comments)
+    {
+      std::string line = comment;
+      for (char & c : line)
+      {
+        c = (c == '\n' || c == '\r') ? ' ' : c;
+      }
+      output << "# " << line << '\n';
+    }
     bool first = true;
     for (const char * column : LumenTableColumns)
     {
@@ -128,6 +156,17 @@ WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & pat
         {
           Cell(output, separator, table.Numbers[column][row]);
         }
+      }
+      output << separator;
+      if (row < notes.Rows.size() && notes.Rows[row].Segment > 0)
+      {
+        const auto & marks = notes.Rows[row];
+        output << marks.Segment << separator << (marks.Candidate ? 1 : 0) << separator
+               << Clean(marks.ExcludedBecause, separator);
+      }
+      else
+      {
+        output << separator << separator; // three empty cells
       }
       output << '\n';
     }

@@ -10,15 +10,16 @@
 
 namespace vr
 {
-/** The lumen table's columns, in order (docs/lumen-measurement.md, "The table"): the section's arc length, its
- * centre in RAS mm (r = -L, a = -P, s = S), the measured area and diameters, the reference diameter, then the
- * profile's diameter, the centerline's 2r, the reference area, the local % diameter stenosis 100 (1 - d / reference),
- * the source, whether the path point lies inside the segmentation, whether the region was clipped, and the branch id.
- */
+/** The lumen table's columns, in order (docs/lumen-measurement.md, "The table"): the section's arc length along the
+ * path, its centre in RAS mm (ras_r = -L, ras_a = -P, ras_s = S), the measured area and diameters, the reference
+ * diameter, then the profile's diameter, the centerline's 2r, the reference area, the local % diameter stenosis
+ * 100 (1 - d / reference), the source, whether the path point lies inside the segmentation, whether the region was
+ * clipped, the branch id, and the grading's marks: the segment (1, 2, ...), whether the section may hold the MLD,
+ * and why not. */
 constexpr const char * LumenTableColumns[] = { "arc_length_mm",
-                                               "r_mm",
-                                               "a_mm",
-                                               "s_mm",
+                                               "ras_r_mm",
+                                               "ras_a_mm",
+                                               "ras_s_mm",
                                                "area_mm2",
                                                "equivalent_diameter_mm",
                                                "min_diameter_mm",
@@ -31,10 +32,36 @@ constexpr const char * LumenTableColumns[] = { "arc_length_mm",
                                                "source",
                                                "in_segmentation",
                                                "region_clipped",
-                                               "branch_id" };
+                                               "branch_id",
+                                               "segment",
+                                               "mld_candidate",
+                                               "excluded_because" };
+
+/** \class LumenTableNotes
+ * \brief What the grading adds to a lumen table: comment lines before the header (the summary a reader signs: the
+ * reference method, the segments, the scales, why a value is not given), written as "# " + line, and the marks of
+ * each row (the last three columns; empty cells where there is no mark).
+ * \ingroup VesselReformation
+ */
+struct LumenTableNotes
+{
+  struct RowMarks
+  {
+    /** The segment, from 1; 0 leaves the cell empty. */
+    int         Segment{ 0 };
+    bool        Candidate{ false };
+    std::string ExcludedBecause;
+  };
+  std::vector<std::string> Comments;
+  /** One per profile section, or none. */
+  std::vector<RowMarks> Rows;
+};
 
 /** The position of the one text column, "source", among LumenTableColumns. */
 constexpr std::size_t LumenTableSourceColumn = 13;
+/** How many of LumenTableColumns the profile fills (MakeLumenTable), up to branch_id; the last three are the grading's
+ * marks (LumenTableNotes). */
+constexpr std::size_t LumenTableProfileColumns = 17;
 
 /** \class LumenTable
  * \brief The lumen table's cells as WriteLumenTable writes them and the Python package returns them: per column of
@@ -44,7 +71,8 @@ constexpr std::size_t LumenTableSourceColumn = 13;
  */
 struct LumenTable
 {
-  /** Numbers[c][k]: column c of LumenTableColumns (Numbers[LumenTableSourceColumn] is empty), section k. */
+  /** Numbers[c][k]: column c < LumenTableProfileColumns of LumenTableColumns (Numbers[LumenTableSourceColumn] is
+   * empty), section k. */
   std::vector<std::vector<double>> Numbers;
   /** The lumen source, the same in every row ("segmentation" or "centerline radius"). */
   std::string Source;
@@ -60,12 +88,13 @@ MakeLumenTable(const itk::VesselLumenProfile & profile);
 char
 LumenTableSeparator(const std::string & path);
 
-/** Writes \a profile as a table, one row per section after a header row (LumenTableColumns), CSV or TSV by the
- * extension. Empty cells where a value is not measured (NaN: areas without a segmentation, sections outside it).
- * Atomic (vr::AtomicOutput): on any error nothing appears and an existing file is left as it was. Throws
- * vr::InputError naming \a path on an unknown extension, a folder that cannot be written, or a failed write. */
+/** Writes \a profile as a table: \a notes' comment lines ("# ..."), then a header row (LumenTableColumns), then one
+ * row per section; CSV or TSV by the extension. Empty cells where a value is not measured (NaN: areas without a
+ * segmentation, sections outside it). Atomic (vr::AtomicOutput): on any error nothing appears and an existing file
+ * is left as it was. Throws vr::InputError naming \a path on an unknown extension, marks for another number of rows
+ * than sections, a folder that cannot be written, or a failed write. */
 void
-WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path);
+WriteLumenTable(const itk::VesselLumenProfile & profile, const std::string & path, const LumenTableNotes & notes = {});
 } // namespace vr
 
 #endif

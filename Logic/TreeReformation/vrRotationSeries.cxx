@@ -1,6 +1,10 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrRotationSeries.h"
 
+#include "itkLinearInterpolateImageFunction.h"
+#include "itkNearestNeighborExtrapolateImageFunction.h"
+#include "itkResampleImageFilter.h"
+#include "vrBurnedInLabels.h"
 #include "vrImageIO.h"
 #include "vrInputError.h"
 #include "vrIntensityWindow.h"
@@ -8,6 +12,7 @@
 #include "vrSecondaryCaptureIO.h"
 #include "vrStagedOutputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -196,6 +201,12 @@ RotationSeriesExport::RotationSeriesExport(const RotationSeriesSettings & settin
   self.Settings = settings;
   self.Flag = flag;
   settings.Angles.Validate(flag + " angles");
+  if (settings.DisplayLongSide > RotationSeriesSettings::MaximumDisplayLongSide)
+  {
+    throw InputError(flag + ": a display size of " + std::to_string(settings.DisplayLongSide) +
+                     " pixels; give 0 (the CPR's own size) to " +
+                     std::to_string(RotationSeriesSettings::MaximumDisplayLongSide));
+  }
   if (settings.Window > 0.0 && (!std::isfinite(settings.Window) || !std::isfinite(settings.Level)))
   {
     std::ostringstream problem;
@@ -302,6 +313,58 @@ RotationSeriesExport::DescribeSeries(const RotationAngles & angles, const Reform
   return description;
 }
 
+DepthImageType::Pointer
+RotationSeriesExport::ScaleForDisplay(const DepthImageType * image, unsigned int longSide)
+{
+  const auto size = image->GetLargestPossibleRegion().GetSize();
+  const auto longest = std::max(size[0], size[1]);
+  if (longSide == 0 || longest == 0 || longest >= longSide)
+  {
+    return const_cast<DepthImageType *>(image);
+  }
+  // The same extent in larger pixels' place: pixel centres of the first and last output pixels at the input's
+  // outer edges less half an output pixel.
+  const double                factor = static_cast<double>(longSide) / static_cast<double>(longest);
+  DepthImageType::SizeType    outputSize;
+  DepthImageType::SpacingType spacing;
+  DepthImageType::PointType   origin;
+  const auto &                inputSpacing = image->GetSpacing();
+  for (unsigned int d = 0; d < 2; ++d)
+  {
+    outputSize[d] = std::max<itk::SizeValueType>(1, static_cast<itk::SizeValueType>(std::lround(size[d] * factor)));
+    spacing[d] = inputSpacing[d] * static_cast<double>(size[d]) / static_cast<double>(outputSize[d]);
+  }
+  // The origin of the first output pixel's centre, in the image's own (index-aligned) frame.
+  DepthImageType::PointType       edge;
+  itk::ContinuousIndex<double, 2> corner;
+  corner[0] = -0.5;
+  corner[1] = -0.5;
+  image->TransformContinuousIndexToPhysicalPoint(corner, edge);
+  for (unsigned int d = 0; d < 2; ++d)
+  {
+    origin[d] = edge[d];
+    for (unsigned int e = 0; e < 2; ++e)
+    {
+      origin[d] += image->GetDirection()[d][e] * 0.5 * spacing[e];
+    }
+  }
+  using Resample = itk::ResampleImageFilter<DepthImageType, DepthImageType>;
+  auto resample = Resample::New();
+  resample->SetInput(image);
+  resample->SetSize(outputSize);
+  resample->SetOutputSpacing(spacing);
+  resample->SetOutputOrigin(origin);
+  resample->SetOutputDirection(image->GetDirection());
+  resample->SetInterpolator(itk::LinearInterpolateImageFunction<DepthImageType, double>::New());
+  // The outer half pixel lies beyond the last pixel centre: the edge's value, not black.
+  resample->SetExtrapolator(itk::NearestNeighborExtrapolateImageFunction<DepthImageType, double>::New());
+  resample->SetDefaultPixelValue(0.0f);
+  resample->Update();
+  DepthImageType::Pointer scaled = resample->GetOutput();
+  scaled->DisconnectPipeline();
+  return scaled;
+}
+
 RotationSeriesResult
 RotationSeriesExport::Write(VesselReformationLogic & logic, const RotationSeriesProgress & progress)
 {
@@ -393,10 +456,10 @@ RotationSeriesExport::Write(VesselReformationLogic & logic, const RotationSeries
       throw Cancelled("the rotation series was cancelled at view " + std::to_string(view + 1) + " of " +
                       std::to_string(count));
     }
-    const DepthImageType::Pointer cpr = ConvertVolumeNodeToDepthImage(outputs.CPR);
-    self.Staged.Write(self.PNG[view],
-                      [&](const std::string & path) { WriteWindowedPNG(cpr, result.Window, result.Level, path); });
-
+    // The picture a reader gets: the CPR at the display size, through window/level, its labels burned in; the PNG and
+    // the DICOM file hold the same pixels.
+    const DepthImageType::Pointer cpr =
+      ScaleForDisplay(ConvertVolumeNodeToDepthImage(outputs.CPR), settings.DisplayLongSide);
     auto grey = MaskImageType::New();
     grey->CopyInformation(cpr);
     grey->SetRegions(cpr->GetLargestPossibleRegion());
@@ -406,6 +469,11 @@ RotationSeriesExport::Write(VesselReformationLogic & logic, const RotationSeries
     {
       grey->GetBufferPointer()[k] = WindowLevelToByte(cpr->GetBufferPointer()[k], result.Window, result.Level);
     }
+    if (settings.BurnInLabels)
+    {
+      BurnInViewLabels(grey, outputs.View.GetU(), outputs.View.GetUp(), angle);
+    }
+    self.Staged.Write(self.PNG[view], [&](const std::string & path) { WriteGreyPNG(grey, path); });
     fields.SOPInstanceUID = NewDICOMUID();
     fields.InstanceNumber = static_cast<long long>(view) + 1;
     fields.ImageComments = "mpCPR view " + std::to_string(view + 1) + " of " + std::to_string(count) + " at angle " +

@@ -59,6 +59,15 @@ struct RotationSeriesSettings
   double Level{ 0.0 };
   /** Series Number (0020,0011): high, away from a scanner's own series. */
   long long SeriesNumber{ 9000 };
+  /** The pictures' long side at least this many pixels (docs/viewer.md, "Rotation series"): a CPR whose long side is
+   * shorter is enlarged (linear interpolation, the aspect kept, the pixel spacing scaled to match); a longer one stays
+   * as computed. 0: every picture at the CPR's own size. A reading room shows a 71 x 125 picture as a stamp. */
+  unsigned int                  DisplayLongSide{ DefaultDisplayLongSide };
+  static constexpr unsigned int DefaultDisplayLongSide = 512;
+  /** The largest long side accepted (a PACS's pictures, not a poster). */
+  static constexpr unsigned int MaximumDisplayLongSide = 8192;
+  /** Burn the view's angle and the screen edges' orientation letters into every picture (vr::BurnInViewLabels). */
+  bool BurnInLabels{ true };
 };
 
 /** What a rotation series wrote.
@@ -89,9 +98,11 @@ using RotationSeriesProgress = std::function<bool(std::size_t view, std::size_t 
 /** \class RotationSeriesExport
  * \brief A rotation series of the CPR (issue 24): the reformation at each of N angles, at the logic's current
  * settings, written into one folder as
- * - rotation-000.png, rotation-001.png, ...: 8-bit grey pictures of the relaxed CPR through window/level
- *   (vr::WriteWindowedPNG), numbered in angle order;
- * - rotation-000.dcm, ...: a DICOM Secondary Capture series (vr::WriteSecondaryCapture), one file per angle with
+ * - rotation-000.png, rotation-001.png, ...: 8-bit grey pictures of the relaxed CPR through window/level, at the
+ *   display size (RotationSeriesSettings::DisplayLongSide) with the angle and the screen edges' orientation letters
+ *   burned in (R/L, A/P, S/I as the view's axes have them), numbered in angle order;
+ * - rotation-000.dcm, ...: the same pictures, pixel for pixel (Rows and Columns the PNG's), as a DICOM Secondary
+ *   Capture series (vr::WriteSecondaryCapture), one file per angle with
  *   Instance Number 1..N in angle order, one new Series Instance UID, a new SOP Instance UID per file, the angle in
  *   Image Comments and a Series Description such as "mpCPR rotation 0..350 deg step 10, bilateral J 3 mm". Patient
  *   and study come from the volume node's DICOM.* attributes (vr::DICOMAttribute, vrDICOMIdentity.h; a DICOM
@@ -116,8 +127,8 @@ public:
   /** Validates the settings, creates the folder when missing and reserves every file.
    * \param settings the folder, angles and window.
    * \param flag how messages name the folder ("--rotationSeries", "the rotation series folder").
-   * Throws vr::InputError naming \a flag (bad angles or window, a folder whose parent is missing, a file that is no
-   * folder, a folder holding a series already, one that cannot be written). */
+   * Throws vr::InputError naming \a flag (bad angles, window or display size, a folder whose parent is missing, a file
+   * that is no folder, a folder holding a series already, one that cannot be written). */
   RotationSeriesExport(const RotationSeriesSettings & settings, const std::string & flag);
   /** Without Commit(): removes the staged files, and the folder when the constructor created it. */
   ~RotationSeriesExport();
@@ -137,6 +148,12 @@ public:
   /** Publishes the files Write() staged (vr::StagedOutputs::CommitAll). Throws vr::InputError naming the path. */
   void
   Commit();
+
+  /** The CPR \a image enlarged so that its long side is at least \a longSide pixels (linear interpolation; the
+   * physical extent and the aspect kept, the spacing scaled), or \a image itself when it is that long already or
+   * \a longSide is 0. */
+  static DepthImageType::Pointer
+  ScaleForDisplay(const DepthImageType * image, unsigned int longSide);
 
   /** \return the Series Description for \a angles and the logic's \a parameters, at most 64 characters. */
   static std::string

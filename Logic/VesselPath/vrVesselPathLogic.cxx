@@ -99,7 +99,11 @@ struct VesselPathLogic::Internals
   bool                       MeasurementValid{ false };
   ImageStamp                 MeasuredMask;
   std::vector<double>        MeasuredReferences;
-  itk::VesselReferenceMethod MeasuredMethod{ itk::VesselReferenceMethod::Interpolated };
+  vr::VesselReferenceMethod  MeasuredMethod{ vr::VesselReferenceMethod::Interpolated };
+  StenosisScale              MeasuredScale{ StenosisScale::Automatic };
+  /** Whether the range cut the path at its start or its end: such an end is no vessel end. */
+  bool CutAtStart{ false };
+  bool CutAtEnd{ false };
 
   CPRFilterType::Pointer   CPRFilter = CPRFilterType::New();
   StackFilterType::Pointer StackFilter = StackFilterType::New();
@@ -131,6 +135,16 @@ struct VesselPathLogic::Internals
   void
   RunMeasurement();
 };
+
+std::string
+DescribePath(const VesselPathResults & results)
+{
+  std::ostringstream text;
+  text.setf(std::ios::fixed);
+  text.precision(1);
+  text << results.Path.GetLength() << " mm: " << results.PathName;
+  return text.str();
+}
 
 VesselPathLogic::VesselPathLogic()
   : m(std::make_unique<Internals>())
@@ -210,8 +224,11 @@ VesselPathLogic::Internals::RunPath()
   {
     throw InputError(Describe(error), p.BranchId > 0 ? ParameterName::Branch : "");
   }
+  CutAtStart = CutAtEnd = false;
   if (p.HasRange)
   {
+    CutAtStart = p.RangeStart > 0.0;
+    CutAtEnd = p.RangeEnd < path.GetLength();
     if (p.RangeEnd > path.GetLength())
     {
       std::ostringstream message;
@@ -229,6 +246,21 @@ VesselPathLogic::Internals::RunPath()
     }
   }
   Results.Path = path;
+  std::vector<std::string> names;
+  for (const int id : path.GetBranchChain())
+  {
+    std::string name = "branch " + std::to_string(id);
+    for (const auto & branch : Tree.GetBranches())
+    {
+      if (branch.Id == id && !branch.Name.empty())
+      {
+        name = branch.Name;
+      }
+    }
+    names.push_back(name);
+  }
+  Results.PathName = JoinPathNames(names);
+  Results.Layout = FindPathLayout(Tree, path, CutAtStart, CutAtEnd);
   PathTree = Tree;
   PathParameters = p;
   PathValid = true;
@@ -288,7 +320,8 @@ VesselPathLogic::Internals::RunResampling()
   CPRFilter->SetComputePointImage(PointImageEnabled);
   try
   {
-    CPRFilter->Update();
+    // The largest region: a narrower width than the last run's must not keep the last requested region.
+    CPRFilter->UpdateLargestPossibleRegion();
   }
   catch (const itk::ExceptionObject & error)
   {
@@ -326,7 +359,7 @@ VesselPathLogic::Internals::RunResampling()
     StackFilter->SetSlabMode(p.SlabMode);
     try
     {
-      StackFilter->Update();
+      StackFilter->UpdateLargestPossibleRegion();
     }
     catch (const itk::ExceptionObject & error)
     {
@@ -354,12 +387,14 @@ VesselPathLogic::Internals::RunMeasurement()
   MeasurementValid = false;
   Results.HasLumen = false;
   Results.Lumen = itk::VesselLumenProfile();
-  Results.Stenosis = itk::VesselStenosisSummary();
+  Results.Stenosis = vr::VesselStenosisSummary();
   if (Mask || Results.Path.HasRadii())
   {
     LumenMeasurementParameters measurement;
     measurement.ReferenceArcLengths = Parameters.ReferencePoints;
     measurement.ReferenceMethod = Parameters.ReferenceMethod;
+    measurement.Layout = Results.Layout;
+    measurement.Scale = Parameters.GradingScale;
     LumenMeasurement lumen = MeasureLumen(FrameSections, Mask, MaskName, measurement);
     Results.Lumen = std::move(lumen.Profile);
     Results.Stenosis = lumen.Summary;
@@ -374,6 +409,7 @@ VesselPathLogic::Internals::RunMeasurement()
   MeasuredMask = ImageStamp::Of(Mask.GetPointer());
   MeasuredReferences = Parameters.ReferencePoints;
   MeasuredMethod = Parameters.ReferenceMethod;
+  MeasuredScale = Parameters.GradingScale;
   MeasurementValid = true;
   ++Counts.Measurement;
 }
@@ -420,7 +456,8 @@ VesselPathLogic::Update()
     m->RunResampling();
   }
   if (!m->MeasurementValid || m->MeasuredMask != ImageStamp::Of(m->Mask.GetPointer()) ||
-      m->MeasuredReferences != p.ReferencePoints || m->MeasuredMethod != p.ReferenceMethod)
+      m->MeasuredReferences != p.ReferencePoints || m->MeasuredMethod != p.ReferenceMethod ||
+      m->MeasuredScale != p.GradingScale)
   {
     m->RunMeasurement();
   }

@@ -6,8 +6,9 @@
 #include "itkVesselLumenMeasurement.h"
 #include "itkVesselPath.h"
 #include "itkVesselPathSection.h"
-#include "itkVesselStenosis.h"
 #include "itkCPRIntensityRescale.h"
+#include "vrPathSegments.h"
+#include "vrVesselStenosis.h"
 #include "vrImageTypes.h"
 #include "vrVesselPathParameters.h"
 
@@ -29,7 +30,7 @@ struct VesselPathStageCounts
   unsigned int Frame{ 0 };
   /** The CPR image (with its point image and fold mask) and the cross-section stack. */
   unsigned int Resampling{ 0 };
-  /** The lumen profile and the stenosis grading. */
+  /** The lumen profile and the stenosis grading (docs/lumen-measurement.md). */
   unsigned int Measurement{ 0 };
 };
 
@@ -44,6 +45,11 @@ struct VesselPathResults
 
   /** The path read (after the range's cut), arc length from its start. */
   itk::VesselPath Path;
+  /** Its branches' names joined, each repeated name once ("ascending aorta → celiac trunk"; "branch N" for a branch
+   * without a name). */
+  std::string PathName;
+  /** Its junctions and the segments between them (what the grading takes its references within). */
+  PathLayout Layout;
   /** The cross-sections every section spacing, their frame turned by the roll. */
   itk::VesselPathSectionList Sections;
   /** The straightened or stretched CPR: x across the vessel (mm), y along the path (mm). */
@@ -57,10 +63,10 @@ struct VesselPathResults
   double FoldFreeHalfWidth{ 0.0 };
   /** The stack of cross-sections (u, v, s); null unless asked for. */
   VolumeImageType::Pointer CrossSections;
-  /** The lumen along the path, and its stenosis grading when the lumen was measured. */
-  itk::VesselLumenProfile    Lumen;
-  bool                       HasLumen{ false };
-  itk::VesselStenosisSummary Stenosis;
+  /** The lumen along the path, and its stenosis grading (segment by segment) when the lumen was measured. */
+  itk::VesselLumenProfile   Lumen;
+  bool                      HasLumen{ false };
+  vr::VesselStenosisSummary Stenosis;
   /** The pixel spacing and section spacing used (the defaults resolved). */
   double PixelSpacing{ 0.0 };
   double SectionSpacing{ 0.0 };
@@ -68,14 +74,18 @@ struct VesselPathResults
   std::vector<std::string> Warnings;
 };
 
+/** "395.7 mm: ascending aorta → celiac trunk": the path's length and names, as the lumen table and the panel open. */
+std::string
+DescribePath(const VesselPathResults & results);
+
 /** \class VesselPathLogic
  * \brief The single-vessel reading of the module (docs/vessel-path.md): one path of the centerline tree, its
  * straightened or stretched CPR, its cross-sections and its lumen, recomputing only what a change invalidates.
  *
  * A roll, a width, a spacing of the image or a sampling change reruns the resampling alone; a change of the path
  * (branch, range), the section spacing or the tree view reruns the frame, the resampling and the measurement; a
- * change of the segmentation or of the reference points reruns the measurement alone. The lumen comes from the
- * segmentation when one is set, else from the centerline radii, else it is not measured.
+ * change of the segmentation, the reference points or method, or the grading scale reruns the measurement alone. The
+ * lumen comes from the segmentation when one is set, else from the centerline radii, else it is not measured.
  *
  * Errors are vr::InputError naming the parameter by its meaning (vr::ParameterName) or the segmentation.
  * \sa VesselPathParameters, itk::StraightenedCPRImageFilter, itk::CrossSectionStackImageFilter

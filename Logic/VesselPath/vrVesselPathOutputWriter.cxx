@@ -2,6 +2,7 @@
 #include "vrVesselPathOutputWriter.h"
 
 #include "vrImageIO.h"
+#include "vrLumenMeasurement.h"
 #include "vrLumenTableIO.h"
 #include "vrVolumeIO.h"
 
@@ -55,7 +56,8 @@ VesselPathOutputWriter::Write(const VesselPathResults & results)
           WriteImage2D(results.FoldMask.GetPointer(), path);
           break;
         case VesselPathOutput::LumenTable:
-          WriteLumenTable(results.Lumen, path);
+          WriteLumenTable(
+            results.Lumen, path, LumenTableNotesOf({ results.Lumen, results.Stenosis }, DescribePath(results)));
           break;
       }
     });

@@ -95,6 +95,7 @@ VesselPathParameters::operator==(const VesselPathParameters & other) const
          AutomaticUp == other.AutomaticUp && (AutomaticUp || Up == other.Up) &&
          ViewAngleInDegrees == other.ViewAngleInDegrees && Interpolation == other.Interpolation &&
          SlabThickness == other.SlabThickness && SlabMode == other.SlabMode &&
-         ReferencePoints == other.ReferencePoints && ReferenceMethod == other.ReferenceMethod;
+         ReferencePoints == other.ReferencePoints && ReferenceMethod == other.ReferenceMethod &&
+         GradingScale == other.GradingScale;
 }
 } // namespace vr

@@ -3,7 +3,7 @@
 #define vrVesselPathParameters_h
 
 #include "itkCPRResampleImageFilter.h"
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 #include "itkVector.h"
 #include "vrParameterName.h"
 
@@ -63,11 +63,15 @@ struct VesselPathParameters
   double           SlabThickness{ 0.0 };
   itk::CPRSlabMode SlabMode{ itk::CPRSlabMode::MIP };
 
-  /** Arc lengths (mm, on the path read) of the reference points; empty: 5 % and 95 % of the path. */
+  /** Arc lengths (mm, on the path read) of the user's reference points, one reference through them over the whole
+   * path; empty: each segment between junctions has its own (docs/lumen-measurement.md, "Reference"). */
   std::vector<double> ReferencePoints;
   /** How the reference diameter is found: interpolated between the reference points, or a robust fit to the profile
    * (docs/lumen-measurement.md). */
-  itk::VesselReferenceMethod ReferenceMethod{ itk::VesselReferenceMethod::Interpolated };
+  vr::VesselReferenceMethod ReferenceMethod{ vr::VesselReferenceMethod::Interpolated };
+  /** The clinical scale the stenosis is graded on; Automatic: per segment, from the vessel's name (CAD-RADS for a
+   * coronary artery only; docs/lumen-measurement.md, "Grading scales"). */
+  StenosisScale GradingScale{ StenosisScale::Automatic };
 
   /** Throws vr::InputError naming the parameter and its value when one is out of range or not finite. Whether
    * the range and the reference points lie on the path is known only once the path is: the logic checks that. */

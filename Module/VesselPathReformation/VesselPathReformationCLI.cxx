@@ -106,8 +106,14 @@ ParametersFrom(const vr::CLIArguments & arguments)
     parameters.ReferencePoints = Numbers(arguments, "referencePoints");
   }
   parameters.ReferenceMethod = arguments.String("referenceMethod") == "robust"
-                                 ? itk::VesselReferenceMethod::RobustFit
-                                 : itk::VesselReferenceMethod::Interpolated;
+                                 ? vr::VesselReferenceMethod::RobustFit
+                                 : vr::VesselReferenceMethod::Interpolated;
+  if (!vr::ParseStenosisScale(arguments.String("gradingScale"), parameters.GradingScale))
+  {
+    throw vr::InputError(arguments.Spelling("gradingScale") + " = " + arguments.String("gradingScale") +
+                           ": use automatic, cad-rads, peripheral, carotid or aorta",
+                         vr::ParameterName::GradingScale);
+  }
   parameters.Validate();
   return parameters;
 }
@@ -235,28 +241,29 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   std::ostringstream summary;
   const auto &       chain = results.Path.GetBranchChain();
   summary << "VesselPathReformation: path of " << std::fixed << std::setprecision(1) << results.Path.GetLength()
-          << " mm through branches";
+          << " mm, " << results.PathName << " (branches";
   for (const int id : chain)
   {
     summary << " " << id;
   }
+  summary << ")";
   summary << " (" << source << "); CPR " << results.CPR->GetLargestPossibleRegion().GetSize()[0] << " x "
           << results.CPR->GetLargestPossibleRegion().GetSize()[1] << " pixels of " << std::setprecision(3)
           << results.PixelSpacing << " mm, " << results.Sections.size() << " sections every " << results.SectionSpacing
           << " mm";
-  if (results.HasLumen)
-  {
-    summary << "; lumen from the " << itk::ToString(results.Lumen.Source) << ": MLD " << std::setprecision(2)
-            << stenosis.MinimalLumenDiameter << " mm at " << std::setprecision(1)
-            << stenosis.MinimalLumenDiameterArcLength << " mm, " << std::setprecision(0)
-            << stenosis.DiameterStenosisPercent << " % diameter stenosis (CAD-RADS " << stenosis.CADRADS << ", "
-            << itk::ToString(stenosis.Method) << " reference)";
-  }
-  else
+  if (!results.HasLumen)
   {
     summary << "; lumen not measured";
   }
   progress.Print(std::cout, summary.str());
+  if (results.HasLumen)
+  {
+    // The grading segment by segment, as the lumen table's comment lines state it.
+    for (const std::string & line : vr::LumenSummaryLines({ results.Lumen, stenosis }))
+    {
+      progress.Print(std::cout, "  " + line);
+    }
+  }
 }
 } // namespace
 

@@ -127,6 +127,14 @@ RunVesselReformation(const vr::CLIArguments & arguments, vr::CLIProgress & progr
     settings.Angles = vr::ParseRotationAngles(arguments.String("rotationAngles"), arguments.Spelling("rotationAngles"));
     settings.Window = parameters.Window;
     settings.Level = parameters.Level;
+    const long long size = arguments.Integer("rotationSeriesSize");
+    if (size < 0 || size > vr::RotationSeriesSettings::MaximumDisplayLongSide)
+    {
+      throw vr::InputError(arguments.Spelling("rotationSeriesSize") + " = " + std::to_string(size) +
+                           ": give 0 (the CPR's own size) to " +
+                           std::to_string(vr::RotationSeriesSettings::MaximumDisplayLongSide) + " pixels");
+    }
+    settings.DisplayLongSide = static_cast<unsigned int>(size);
     series = std::make_unique<vr::RotationSeriesExport>(settings, arguments.Spelling("rotationSeries"));
     views += static_cast<double>(settings.Angles.Count);
   }

@@ -54,6 +54,10 @@ LumenColumns(const itk::VesselLumenProfile & profile)
   std::size_t      c = 0;
   for (const char * name : LumenTableColumns)
   {
+    if (c == LumenTableProfileColumns)
+    {
+      break; // the grading's marks are the summary's, not the profile's
+    }
     if (c == LumenTableSourceColumn)
     {
       columns[name] = py::module_::import("numpy").attr("array")(std::vector<std::string>(table.Rows, table.Source));

@@ -5,7 +5,7 @@
 // cores.
 #include "vrTestLumenTubes.h"
 
-#include "itkVesselStenosis.h"
+#include "vrVesselStenosis.h"
 #include "vrLumenTableIO.h"
 
 #include <benchmark/benchmark.h>
@@ -29,7 +29,7 @@ LumenTable(benchmark::State & state)
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
     auto       profile = itk::MeasureVesselLumen(scene.Mask, scene.Sections, options);
-    const auto summary = itk::AnalyseVesselStenosis(profile);
+    const auto summary = vr::AnalyseVesselStenosis(profile);
     vr::WriteLumenTable(profile, path);
     benchmark::DoNotOptimize(summary.DiameterStenosisPercent);
   }

@@ -1,12 +1,11 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The lumen along a path (docs/lumen-measurement.md) on tubes of known cross-section in a rotated, anisotropic mask
 // (0.6 x 0.8 x 1.1 mm voxels, direction rotated 30 degrees, the tube oblique to every axis): areas and diameters
-// against the analytic ones, MLD, MLA and % stenosis of the 50 % concentric stenosis, from the mask and from
-// the radii; sections outside the segmentation and clipped regions.
+// against the analytic ones; sections outside the segmentation and clipped regions. Their grading is the one-vessel
+// logic's (Testing/Logic/VesselStenosisGTest.cxx).
 #include "vrTestLumenTubes.h"
 
 #include "itkVesselLumenMeasurement.h"
-#include "itkVesselStenosis.h"
 
 #include "gtest/gtest.h"
 
@@ -62,70 +61,6 @@ TEST(VesselLumenMeasurement, StenosisDiameterWithinAQuarterMillimetreOfTheTruth)
     largestError = std::max(largestError, std::abs(section.EquivalentDiameter - truth));
   }
   std::cout << "largest error of the equivalent diameter: " << largestError << " mm" << std::endl;
-}
-
-TEST(VesselLumenMeasurement, StenosisGradedFromTheMask)
-{
-  auto                       profile = itk::MeasureVesselLumen(StenosisScene().Mask, StenosisScene().Sections);
-  auto                       robust = profile;
-  const auto                 summary = itk::AnalyseVesselStenosis(profile);
-  itk::VesselStenosisOptions options;
-  options.Method = itk::VesselReferenceMethod::RobustFit;
-  const auto robustSummary = itk::AnalyseVesselStenosis(robust, options);
-  for (const auto * s : { &summary, &robustSummary })
-  {
-    std::cout << itk::ToString(s->Method) << ": MLD " << s->MinimalLumenDiameter << " mm at "
-              << s->MinimalLumenDiameterArcLength << " mm, RVD " << s->ReferenceDiameter << " mm, DS "
-              << s->DiameterStenosisPercent << " %, MLA " << s->MinimalLumenArea << " mm2 at "
-              << s->MinimalLumenAreaArcLength << " mm, AS " << s->AreaStenosisPercent << " %, CAD-RADS " << s->CADRADS
-              << std::endl;
-    EXPECT_NEAR(s->MinimalLumenDiameter, 4.0, 0.2);
-    EXPECT_NEAR(s->MinimalLumenDiameterArcLength, 40.0, 1.0);
-    EXPECT_NEAR(s->ReferenceDiameter, 8.0, 0.25);
-    EXPECT_NEAR(s->DiameterStenosisPercent, 50.0, 3.0);
-    // Area stenosis 1 - (2/4)^2 = 75 %; 3 points of diameter stenosis are 3 of area stenosis here.
-    EXPECT_NEAR(s->MinimalLumenArea, M_PI * 4.0, M_PI * 4.0 * 0.1);
-    EXPECT_NEAR(s->AreaStenosisPercent, 75.0, 3.0);
-    EXPECT_EQ(s->CADRADS, itk::CADRADSClass(s->DiameterStenosisPercent));
-    EXPECT_TRUE(s->CADRADS == 2 || s->CADRADS == 3);
-    EXPECT_DOUBLE_EQ(s->PathLength, 80.0);
-    EXPECT_EQ(s->Source, itk::VesselLumenSource::Segmentation);
-  }
-  // The robust line is flat on the healthy tube: the dip has no weight.
-  EXPECT_NEAR(robust.Sections.front().ReferenceDiameter, 8.0, 0.1);
-  EXPECT_NEAR(robust.Sections.back().ReferenceDiameter, 8.0, 0.1);
-}
-
-TEST(VesselLumenMeasurement, StenosisGradedFromTheRadiiAlone)
-{
-  auto profile = itk::VesselLumenFromRadii(StenosisScene().Sections);
-  EXPECT_EQ(profile.Source, itk::VesselLumenSource::CenterlineRadius);
-  EXPECT_EQ(profile.SectionsWithoutRadius, 0u);
-  for (const auto & section : profile.Sections)
-  {
-    EXPECT_TRUE(std::isnan(section.Area));
-    EXPECT_TRUE(std::isnan(section.EquivalentDiameter));
-    EXPECT_TRUE(std::isnan(section.MinimumDiameter));
-    EXPECT_DOUBLE_EQ(section.Diameter, 2.0 * StenosisRadius(section.ArcLength));
-  }
-  for (const auto method : { itk::VesselReferenceMethod::Interpolated, itk::VesselReferenceMethod::RobustFit })
-  {
-    auto                       copy = profile;
-    itk::VesselStenosisOptions options;
-    options.Method = method;
-    const auto summary = itk::AnalyseVesselStenosis(copy, options);
-    // Exact for the interpolated reference (8 mm at 4 and 76 mm); the robust line gives the dip's flanks, close to
-    // 8 mm, a little weight.
-    const double tolerance = method == itk::VesselReferenceMethod::Interpolated ? 1e-9 : 0.01;
-    EXPECT_NEAR(summary.MinimalLumenDiameter, 4.0, 1e-9);
-    EXPECT_NEAR(summary.MinimalLumenDiameterArcLength, 40.0, 1e-9);
-    EXPECT_NEAR(summary.ReferenceDiameter, 8.0, tolerance);
-    EXPECT_NEAR(summary.DiameterStenosisPercent, 50.0, 100.0 * tolerance);
-    EXPECT_NEAR(summary.MinimalLumenArea, M_PI * 4.0, 1e-9);
-    EXPECT_NEAR(summary.AreaStenosisPercent, 75.0, 100.0 * tolerance);
-    EXPECT_EQ(summary.CADRADS, 3);
-    EXPECT_EQ(summary.Source, itk::VesselLumenSource::CenterlineRadius);
-  }
 }
 
 TEST(VesselLumenMeasurement, EllipseCalipersAreItsAxes)

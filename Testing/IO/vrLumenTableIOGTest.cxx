@@ -1,6 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The lumen table (docs/lumen-measurement.md): its columns, the centre in RAS, empty cells, CSV or TSV by the
-// extension, and nothing written for an unknown one.
+// extension, the grading's comment lines and row marks, and nothing written for an unknown one.
 #include "vrLumenTableIO.h"
 #include "vrTestFiles.h"
 
@@ -63,15 +63,15 @@ TEST(LumenTableIO, ColumnsAndRASSigns)
   vr::WriteLumenTable(TwoSections(), path);
   const auto lines = Lines(vr::test::ReadTextFile(path));
   ASSERT_EQ(lines.size(), 3u);
-  EXPECT_EQ(lines[0].rfind("arc_length_mm,r_mm,a_mm,s_mm,area_mm2,equivalent_diameter_mm,min_diameter_mm,"
-                           "max_diameter_mm,reference_diameter_mm,",
-                           0),
-            0u)
-    << lines[0];
-  // r = -L, a = -P, s = S; local stenosis 100 (1 - 4 / 8) = 50.
-  EXPECT_EQ(lines[1], "0.5,-10,20,30,12.5,4,3.5,4.5,8,4,,50.25,50,segmentation,1,0,3");
+  EXPECT_EQ(lines[0],
+            "arc_length_mm,ras_r_mm,ras_a_mm,ras_s_mm,area_mm2,equivalent_diameter_mm,min_diameter_mm,"
+            "max_diameter_mm,reference_diameter_mm,diameter_mm,inscribed_diameter_mm,reference_area_mm2,"
+            "diameter_stenosis_percent,source,in_segmentation,region_clipped,branch_id,segment,mld_candidate,"
+            "excluded_because");
+  // ras_r = -L, ras_a = -P, ras_s = S; local stenosis 100 (1 - 4 / 8) = 50; no marks without notes.
+  EXPECT_EQ(lines[1], "0.5,-10,20,30,12.5,4,3.5,4.5,8,4,,50.25,50,segmentation,1,0,3,,,");
   // Outside the segmentation: nothing measured, empty cells; its 2r and reference stay.
-  EXPECT_EQ(lines[2], "1.5,1,-2,-3,,,,,7,,6,,,segmentation,0,,3");
+  EXPECT_EQ(lines[2], "1.5,1,-2,-3,,,,,7,,6,,,segmentation,0,,3,,,");
   EXPECT_EQ(vr::SplitAndTrim(lines[0], ',').size(), std::size(vr::LumenTableColumns));
 }
 
@@ -86,8 +86,32 @@ TEST(LumenTableIO, TabSeparatedByExtensionAndRadiusSourceLeavesInSegmentationEmp
   vr::WriteLumenTable(profile, path);
   const auto lines = Lines(vr::test::ReadTextFile(path));
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[0].rfind("arc_length_mm\tr_mm\ta_mm\ts_mm\tarea_mm2\t", 0), 0u);
-  EXPECT_EQ(lines[1], "0.5\t-10\t20\t30\t\t4\t3.5\t4.5\t8\t4\t\t50.25\t50\tcenterline radius\t\t\t3");
+  EXPECT_EQ(lines[0].rfind("arc_length_mm\tras_r_mm\tras_a_mm\tras_s_mm\tarea_mm2\t", 0), 0u);
+  EXPECT_EQ(lines[1], "0.5\t-10\t20\t30\t\t4\t3.5\t4.5\t8\t4\t\t50.25\t50\tcenterline radius\t\t\t3\t\t\t");
+}
+
+TEST(LumenTableIO, NotesAreCommentsBeforeTheHeaderAndMarksAtTheEnd)
+{
+  vr::test::ScopedTemporaryFolder folder;
+  const std::string               path = folder.File("lumen.csv");
+  vr::LumenTableNotes             notes;
+  notes.Comments = { "reference: interpolated within each segment", "two\nlines" };
+  notes.Rows = { { 1, true, "" }, { 2, false, "origin of branch 4, and more" } };
+  vr::WriteLumenTable(TwoSections(), path, notes);
+  const auto lines = Lines(vr::test::ReadTextFile(path));
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0], "# reference: interpolated within each segment");
+  EXPECT_EQ(lines[1], "# two lines"); // a line break would end the comment
+  EXPECT_EQ(lines[2].rfind("arc_length_mm,", 0), 0u);
+  EXPECT_EQ(lines[3].substr(lines[3].size() - 5), ",1,1,");
+  // The separator inside a reason would shift the columns: it becomes a semicolon.
+  EXPECT_EQ(lines[4].substr(lines[4].rfind(",3,") + 3), "2,0,origin of branch 4; and more");
+  // Marks for another number of rows: refused, nothing written.
+  notes.Rows.pop_back();
+  const std::string other = folder.File("other.csv");
+  const std::string message = vr::test::InputErrorOf([&] { vr::WriteLumenTable(TwoSections(), other, notes); });
+  EXPECT_TRUE(vr::test::Contains(message, "1 rows of marks for 2 sections")) << message;
+  EXPECT_EQ(folder.Entries(), std::vector<std::string>{ "lumen.csv" });
 }
 
 TEST(LumenTableIO, UnknownExtensionWritesNothing)

@@ -62,19 +62,43 @@ TEST(LumenMeasurement, SummaryAsReturnedValues)
     ADD_FAILURE() << "no " << name;
     return std::string();
   };
-  ASSERT_EQ(values.size(), 15u);
+  ASSERT_EQ(values.size(), 24u);
   EXPECT_EQ(values.front().first, "pathLength");
   EXPECT_EQ(value("pathLength"), "80");
   EXPECT_EQ(value("lumenSource"), "centerline radius");
   EXPECT_EQ(value("referenceMethod"), "interpolated");
-  EXPECT_EQ(value("referencePoints"), "4,76");
+  // The first and last candidate: the tube's 4 mm radius is the margin at both ends (sections every 0.2 mm, the
+  // 21 of [0, 4] mm and the 21 of [76, 80] mm excluded).
+  EXPECT_EQ(value("referencePoints"), "4.2,75.8");
+  EXPECT_EQ(value("excludedSections"), "42");
+  EXPECT_EQ(value("referenceScope"), "each segment");
   EXPECT_EQ(value("minimalLumenDiameter"), "4");
   EXPECT_EQ(value("minimalLumenDiameterArcLength"), "40");
   EXPECT_EQ(value("referenceDiameter"), "8");
   EXPECT_EQ(value("diameterStenosis"), "50");
   EXPECT_EQ(value("areaStenosis"), "75");
-  EXPECT_EQ(value("cadRads"), "3");
+  // An unnamed 8 mm tube is a peripheral artery: its category, no CAD-RADS class.
+  EXPECT_EQ(value("cadRads"), "");
+  EXPECT_EQ(value("gradingScale"), "peripheral");
+  EXPECT_EQ(value("grade"), "50–99 % (peripheral)");
+  EXPECT_EQ(value("gradedSegment"), "1: 0.0–80.0 mm");
+  EXPECT_EQ(value("notGradedBecause"), "");
+  EXPECT_EQ(value("maximumDiameter"), ""); // no aorta
   EXPECT_EQ(value("sectionsOutsideSegmentation"), "0");
+  EXPECT_NE(value("segments").find("segment 1 (0.0–80.0 mm), scale peripheral (unnamed, median diameter 8.0 mm"),
+            std::string::npos)
+    << value("segments");
+  // As a coronary artery (the user's choice): CAD-RADS 3.
+  vr::LumenMeasurementParameters coronary;
+  coronary.Scale = vr::StenosisScale::CADRADS;
+  for (const auto & [name, text] :
+       vr::LumenSummaryValues(vr::MeasureLumen(StenosisScene().Sections, nullptr, "", coronary)))
+  {
+    if (name == "cadRads" || name == "grade")
+    {
+      EXPECT_EQ(text, name == "cadRads" ? "3" : "CAD-RADS 3 (50–69 %)");
+    }
+  }
   // The MLD's centre in RAS: the section at 40 mm, x and y negated.
   const auto &       center = StenosisScene().Sections[200].Center;
   std::ostringstream expected;
@@ -119,7 +143,7 @@ TEST(LumenMeasurement, ReferencePointsOutsideThePathAreNamed)
     EXPECT_EQ(error.Parameter(), vr::ParameterName::ReferencePoints);
   }
   parameters.ReferenceArcLengths = { 12.0 };
-  parameters.ReferenceMethod = itk::VesselReferenceMethod::RobustFit;
+  parameters.ReferenceMethod = vr::VesselReferenceMethod::RobustFit;
   EXPECT_TRUE(vr::test::Contains(
     vr::test::InputErrorOf([&] { vr::MeasureLumen(StenosisScene().Sections, nullptr, "", parameters); }),
     "two reference points"));

@@ -5,6 +5,7 @@
 
 #include "itkCTAPhantom.h"
 #include "vrCenterlineIO.h"
+#include "vrBurnedInLabels.h"
 #include "vrInputError.h"
 #include "vrIntensityWindow.h"
 #include "vrNodeConversion.h"
@@ -27,9 +28,11 @@
 #include <sys/mount.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -38,6 +41,17 @@
 
 namespace
 {
+/** An LPS direction. */
+itk::Vector<double, 3>
+Lps(double x, double y, double z)
+{
+  itk::Vector<double, 3> v;
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
 namespace fs = std::filesystem;
 
 fs::path
@@ -160,6 +174,9 @@ TEST_F(RotationSeriesTest, FromNRRDWritesPNGsAndASecondaryCaptureSeriesWithAMade
   vr::RotationSeriesSettings settings;
   settings.Folder = (m_Folder / "series").string(); // missing: created
   settings.Angles = { 15.0, 90.0, 4 };
+  // The CPR's own pixels (the display size and the labels: PicturesAtTheDisplaySizeWithTheirLabelsBurnedIn).
+  settings.DisplayLongSide = 0;
+  settings.BurnInLabels = false;
   std::vector<std::size_t>       viewsReported;
   const vr::RotationSeriesResult result =
     vr::ExportRotationSeries(logic,
@@ -286,6 +303,180 @@ TEST_F(RotationSeriesTest, FromNRRDWritesPNGsAndASecondaryCaptureSeriesWithAMade
   EXPECT_NE(second.SeriesInstanceUID, result.SeriesInstanceUID);
   EXPECT_NE(second.StudyInstanceUID, result.StudyInstanceUID);
   EXPECT_EQ(second.SeriesDescription, "mpCPR rotation 0..0 deg step 10, bilateral J 3 mm");
+}
+
+/** The grey of the CPR \a cpr enlarged to \a width x \a height pixels at pixel (i, j), computed here: bilinear in the
+ * CPR's pixels at the centre of the output pixel (the same extent), clamped to the edge pixels, through the window. */
+unsigned int
+ScaledGrey(const vr::DepthImageType * cpr, long width, long height, long i, long j, double window, double level)
+{
+  const auto   size = cpr->GetLargestPossibleRegion().GetSize();
+  const double x = std::clamp((i + 0.5) * size[0] / width - 0.5, 0.0, size[0] - 1.0);
+  const double y = std::clamp((j + 0.5) * size[1] / height - 0.5, 0.0, size[1] - 1.0);
+  const long   x0 = std::min(static_cast<long>(x), static_cast<long>(size[0]) - 2);
+  const long   y0 = std::min(static_cast<long>(y), static_cast<long>(size[1]) - 2);
+  const double fx = x - x0;
+  const double fy = y - y0;
+  const auto   at = [&](long a, long b) { return cpr->GetPixel({ { a, b } }); };
+  const double value = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x0 + 1, y0)) +
+                       fy * ((1 - fx) * at(x0, y0 + 1) + fx * at(x0 + 1, y0 + 1));
+  return Grey(static_cast<float>(value), window, level);
+}
+
+TEST_F(RotationSeriesTest, PicturesAtTheDisplaySizeWithTheirLabelsBurnedIn)
+{
+  vr::VesselReformationLogic logic;
+  Configure(logic);
+  vr::RotationSeriesSettings settings;
+  settings.Folder = (m_Folder / "display").string();
+  settings.Angles = { 0.0, 90.0, 2 };
+  settings.Window = 900.0;
+  settings.Level = 200.0;
+  const vr::RotationSeriesResult result = vr::ExportRotationSeries(logic, settings);
+  // The same series without labels: what lies under them.
+  settings.Folder = (m_Folder / "plain").string();
+  settings.BurnInLabels = false;
+  const vr::RotationSeriesResult plain = vr::ExportRotationSeries(logic, settings);
+
+  vr::VesselReformationLogic reference;
+  Configure(reference);
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    SCOPED_TRACE("view " + std::to_string(k));
+    vr::ReformationParameters parameters = reference.GetParameters();
+    parameters.AngleInDegrees = 90.0 * static_cast<double>(k);
+    reference.SetParameters(parameters);
+    const auto   cpr = vr::ConvertVolumeNodeToDepthImage(reference.Update().CPR);
+    const auto   cprSize = cpr->GetLargestPossibleRegion().GetSize();
+    const auto   png = ReadPNG(result.PNGFiles[k]);
+    const auto   bare = ReadPNG(plain.PNGFiles[k]);
+    const auto   dicom = ReadDICOM(result.DICOMFiles[k]);
+    const auto   size = png->GetLargestPossibleRegion().GetSize();
+    const double longest = static_cast<double>(std::max(cprSize[0], cprSize[1]));
+    ASSERT_LT(longest, 512.0) << "the phantom's CPR is small: it is enlarged";
+    // The long side 512 pixels, the aspect kept; the DICOM's Rows and Columns are the PNG's, its pixels too.
+    EXPECT_EQ(std::max(size[0], size[1]), 512u);
+    EXPECT_EQ(size[0], static_cast<unsigned long>(std::lround(cprSize[0] * 512.0 / longest)));
+    EXPECT_EQ(size[1], static_cast<unsigned long>(std::lround(cprSize[1] * 512.0 / longest)));
+    EXPECT_EQ(dicom.Image->GetLargestPossibleRegion().GetSize(), size);
+    EXPECT_EQ(dicom.Get("0028|0010"), std::to_string(size[1])) << "Rows";
+    EXPECT_EQ(dicom.Get("0028|0011"), std::to_string(size[0])) << "Columns";
+    EXPECT_TRUE(std::equal(png->GetBufferPointer(),
+                           png->GetBufferPointer() + png->GetLargestPossibleRegion().GetNumberOfPixels(),
+                           dicom.Image->GetBufferPointer()));
+    // The pixel spacing scaled with the size: the same millimetres.
+    EXPECT_NEAR(dicom.Image->GetSpacing()[0] * size[0], cpr->GetSpacing()[0] * cprSize[0], 1e-3);
+    // Without labels: the CPR enlarged by bilinear interpolation, within a grey level (rounding of the weights).
+    std::size_t farOff = 0;
+    for (long j = 0; j < static_cast<long>(size[1]); ++j)
+    {
+      for (long i = 0; i < static_cast<long>(size[0]); ++i)
+      {
+        const int expected = static_cast<int>(ScaledGrey(cpr, size[0], size[1], i, j, 900.0, 200.0));
+        farOff += std::abs(static_cast<int>(bare->GetPixel({ { i, j } })) - expected) > 1;
+      }
+    }
+    EXPECT_EQ(farOff, 0u);
+    // With labels: the labelled picture is the bare one with the labels burned in by vr::BurnInViewLabels, at the
+    // view's axes (docs/design.md, "View geometry"): up = S; at 0 degrees v = P and u = v x up = L; at 90 degrees v
+    // is turned about up to R, and u = P.
+    auto labelled = vr::MaskImageType::New();
+    labelled->SetRegions(bare->GetLargestPossibleRegion());
+    labelled->Allocate();
+    std::copy(bare->GetBufferPointer(),
+              bare->GetBufferPointer() + bare->GetLargestPossibleRegion().GetNumberOfPixels(),
+              labelled->GetBufferPointer());
+    itk::Vector<double, 3> u;
+    u.Fill(0.0);
+    u[k == 0 ? 0 : 1] = 1.0;
+    itk::Vector<double, 3> up;
+    up.Fill(0.0);
+    up[2] = 1.0;
+    vr::BurnInViewLabels(labelled, u, up, 90.0 * static_cast<double>(k));
+    EXPECT_TRUE(std::equal(png->GetBufferPointer(),
+                           png->GetBufferPointer() + png->GetLargestPossibleRegion().GetNumberOfPixels(),
+                           labelled->GetBufferPointer()))
+      << "the labels at the view's axes";
+    std::size_t changed = 0;
+    for (std::size_t p = 0; p < png->GetLargestPossibleRegion().GetNumberOfPixels(); ++p)
+    {
+      changed += png->GetBufferPointer()[p] != bare->GetBufferPointer()[p];
+    }
+    EXPECT_GT(changed, 200u) << "labels are burned in";
+    EXPECT_LT(changed, size[0] * size[1] / 10) << "and cover little of the picture";
+  }
+  // The letters of each edge, and the angle's text.
+  EXPECT_EQ(vr::OrientationLetters(Lps(1.0, 0.0, 0.0)), "L");
+  EXPECT_EQ(vr::OrientationLetters(Lps(-1.0, 0.0, 0.0)), "R");
+  EXPECT_EQ(vr::OrientationLetters(Lps(0.0, -1.0, 0.0)), "A");
+  EXPECT_EQ(vr::OrientationLetters(Lps(0.0, 0.0, -1.0)), "I");
+  EXPECT_EQ(vr::OrientationLetters(Lps(0.7071, -0.7071, 0.0)), "LA");
+  EXPECT_EQ(vr::OrientationLetters(Lps(0.2, 0.95, 0.0)), "P");
+  EXPECT_EQ(vr::OrientationLetters(Lps(0.5, 0.0, -0.8)), "IL");
+  // Refused sizes name the flag; 0 keeps the CPR's own size.
+  settings.DisplayLongSide = vr::RotationSeriesSettings::MaximumDisplayLongSide + 1;
+  settings.Folder = (m_Folder / "huge").string();
+  EXPECT_THROW(vr::RotationSeriesExport(settings, "--rotationSeriesSize"), vr::InputError);
+}
+
+TEST(RotationSeriesOfThePhantom, TheThoraxAtItsRealSizeReadsOnAReadingRoomScreen)
+{
+  // The thoracic phantom as the viewer opens it (1.5 mm voxels), its default view (169 x 264 pixels): every picture
+  // 512 pixels high, the DICOM the PNG's size, the labels burned in. The pictures stay in the test's output folder
+  // (RotationSeries/<this test>/series) for a person to look at.
+  const fs::path  folder = TestFolder();
+  itk::CTAPhantom phantom = itk::MakeCTAPhantom(itk::CTAPhantomKind::Thorax, 1.5);
+  phantom.Source->Update();
+  vr::VesselReformationLogic logic;
+  logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(phantom.Source->GetOutput(), "thorax phantom"));
+  logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(phantom.Tree, "thorax phantom"));
+  vr::RotationSeriesSettings settings;
+  settings.Folder = (folder / "series").string();
+  settings.Angles = { 0.0, 90.0, 4 };
+  const vr::RotationSeriesResult result = vr::ExportRotationSeries(logic, settings);
+  ASSERT_EQ(result.PNGFiles.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k)
+  {
+    const auto png = ReadPNG(result.PNGFiles[k]);
+    const auto dicom = ReadDICOM(result.DICOMFiles[k]);
+    const auto size = png->GetLargestPossibleRegion().GetSize();
+    std::cout << result.PNGFiles[k] << ": " << size[0] << " x " << size[1] << " pixels, DICOM Rows "
+              << dicom.Get("0028|0010") << ", Columns " << dicom.Get("0028|0011") << std::endl;
+    EXPECT_EQ(std::max(size[0], size[1]), 512u);
+    EXPECT_EQ(dicom.Image->GetLargestPossibleRegion().GetSize(), size);
+    EXPECT_EQ(dicom.Get("0028|0010"), std::to_string(size[1]));
+    EXPECT_EQ(dicom.Get("0028|0011"), std::to_string(size[0]));
+    EXPECT_TRUE(std::equal(png->GetBufferPointer(),
+                           png->GetBufferPointer() + png->GetLargestPossibleRegion().GetNumberOfPixels(),
+                           dicom.Image->GetBufferPointer()));
+  }
+}
+
+TEST(BurnedInLabels, GlyphsAreWhiteOnABlackOutlineAndClippedAtTheEdges)
+{
+  auto                        image = vr::MaskImageType::New();
+  vr::MaskImageType::SizeType size = { { 40, 20 } };
+  image->SetRegions(size);
+  image->Allocate();
+  image->FillBuffer(128);
+  // "1" at scale 2 from (4, 3): its stem is font column 2, rows 0-6 -> image columns 8-9, rows 3-16.
+  vr::BurnInText(image, "1", 4, 3, 2);
+  EXPECT_EQ(image->GetPixel({ { 8, 10 } }), 255);
+  EXPECT_EQ(image->GetPixel({ { 9, 16 } }), 255);
+  // The outline one pixel around the stem's side (column 7 is left of the stem, beside its middle rows).
+  EXPECT_EQ(image->GetPixel({ { 7, 10 } }), 0);
+  // Away from the glyph: untouched.
+  EXPECT_EQ(image->GetPixel({ { 30, 10 } }), 128);
+  long width = 0;
+  long height = 0;
+  vr::BurnedInTextSize("30\xC2\xB0", 3, width, height);
+  EXPECT_EQ(width, (3 * 6 - 1) * 3) << "three characters: the degree sign is one";
+  EXPECT_EQ(height, 21);
+  // Text running off the image is clipped: the part inside is drawn ("L"'s stem, font column 0, at columns 36-37).
+  vr::BurnInText(image, "LLLL", 36, 2, 2);
+  EXPECT_EQ(image->GetPixel({ { 36, 10 } }), 255);
+  EXPECT_EQ(image->GetPixel({ { 37, 10 } }), 255);
+  EXPECT_EQ(image->GetLargestPossibleRegion().GetSize(), size);
 }
 
 TEST_F(RotationSeriesTest, ADICOMVolumeGivesItsPatientAndStudy)

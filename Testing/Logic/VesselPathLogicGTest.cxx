@@ -124,11 +124,11 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 5);
   // The reference method: the measurement alone.
-  parameters.ReferenceMethod = itk::VesselReferenceMethod::RobustFit;
+  parameters.ReferenceMethod = vr::VesselReferenceMethod::RobustFit;
   logic.SetParameters(parameters);
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 6);
-  EXPECT_EQ(logic.GetResults().Stenosis.Method, itk::VesselReferenceMethod::RobustFit);
+  EXPECT_EQ(logic.GetResults().Stenosis.Method, vr::VesselReferenceMethod::RobustFit);
   // The section spacing: the frame, the resampling and the measurement.
   parameters.SectionSpacing = 1.0;
   logic.SetParameters(parameters);
@@ -224,5 +224,34 @@ TEST(VesselPathLogic, ErrorsNameTheParameter)
   EXPECT_EQ(parameterOf(parameters), vr::ParameterName::ReferencePoints);
   parameters = Defaults();
   EXPECT_EQ(parameterOf(parameters), "(no error)");
+}
+} // namespace
+
+namespace
+{
+TEST(VesselPathLogic, ANarrowerWidthAfterAWiderOneIsResampledWhole)
+{
+  // The viewer's fold warning offers a narrower width: the filters must not keep the wider run's requested region
+  // (it failed with "Requested region is (at least partially) outside the largest possible region").
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  logic.SetVolume(scene.Volume);
+  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetCrossSectionsEnabled(true);
+  vr::VesselPathParameters parameters = Defaults();
+  parameters.Width = 40.0;
+  logic.SetParameters(parameters);
+  EXPECT_EQ(logic.Update().CPR->GetLargestPossibleRegion().GetSize()[0], 81u);
+  for (const double width : { 17.2, 6.0, 30.0 })
+  {
+    parameters.Width = width;
+    logic.SetParameters(parameters);
+    const auto & results = logic.Update();
+    const auto   columns = static_cast<unsigned long>(2 * std::lround(width / (2 * 0.5)) + 1);
+    EXPECT_EQ(results.CPR->GetLargestPossibleRegion().GetSize()[0], columns) << width;
+    EXPECT_EQ(results.CrossSections->GetLargestPossibleRegion().GetSize()[0],
+              static_cast<unsigned long>(std::lround(width / 0.5)) | 1u)
+      << width;
+  }
 }
 } // namespace

@@ -4,6 +4,7 @@
 
 #include "itkCTAPhantom.h"
 #include "vrCenterlineIO.h"
+#include "vrBurnedInLabels.h"
 #include "vrImageIO.h"
 #include "vrModuleRuns.h"
 #include "vrTestFiles.h"
@@ -25,6 +26,17 @@
 
 namespace
 {
+/** An LPS direction. */
+itk::Vector<double, 3>
+Lps(double x, double y, double z)
+{
+  itk::Vector<double, 3> v;
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
 namespace fs = std::filesystem;
 using vr::test::Contains;
 using vr::test::FolderEntries;
@@ -104,7 +116,8 @@ protected:
 TEST_F(RotationSeriesCLI, WritesPNGsAndADICOMSeriesBesideTheRunsOutputs)
 {
   const fs::path series = m_Folder / "series";
-  const auto     result = Run({ "--rotationSeries", series.string(), "--rotationAngles", "0,120,3" });
+  const auto     result =
+    Run({ "--rotationSeries", series.string(), "--rotationAngles", "0,120,3", "--rotationSeriesSize", "0" });
   ASSERT_EQ(result.ExitCode, 0) << result.Err;
   EXPECT_TRUE(Contains(result.Out,
                        "rotation series of 3 views (\"mpCPR rotation 0..240 deg step 120, bilateral J 3 mm\", "
@@ -120,18 +133,27 @@ TEST_F(RotationSeriesCLI, WritesPNGsAndADICOMSeriesBesideTheRunsOutputs)
                                     "rotation-002.dcm",
                                     "rotation-angles.csv" }));
 
-  // View 0 is at the run's own angle (0): its pixels are the run's CPR through the CTA window (W 900, L 200; the
-  // phantom is a CT), computed here.
+  // View 0 is at the run's own angle (0): at --rotationSeriesSize 0 its pixels are the run's CPR through the CTA window
+  // (W 900, L 200; the phantom is a CT), computed here, with the labels of the view at 0 degrees burned in: u = L,
+  // up = S (docs/design.md, "View geometry").
   const auto cpr = vr::ReadDepthImage((m_Folder / "cpr.nrrd").string());
   const auto png = ReadGrey((series / "rotation-000.png").string(), itk::PNGImageIO::New());
   ASSERT_EQ(png->GetLargestPossibleRegion().GetSize(), cpr->GetLargestPossibleRegion().GetSize());
-  std::size_t mismatches = 0;
+  auto expected = vr::MaskImageType::New();
+  expected->SetRegions(cpr->GetLargestPossibleRegion());
+  expected->Allocate();
   for (std::size_t p = 0; p < cpr->GetLargestPossibleRegion().GetNumberOfPixels(); ++p)
   {
     const double value = cpr->GetBufferPointer()[p];
     const double grey =
       std::isnan(value) ? 0.0 : std::min(255.0, std::max(0.0, std::floor(255.0 * (value + 250.0) / 900.0 + 0.5)));
-    mismatches += png->GetBufferPointer()[p] != static_cast<unsigned char>(grey);
+    expected->GetBufferPointer()[p] = static_cast<unsigned char>(grey);
+  }
+  vr::BurnInViewLabels(expected, Lps(1.0, 0.0, 0.0), Lps(0.0, 0.0, 1.0), 0.0);
+  std::size_t mismatches = 0;
+  for (std::size_t p = 0; p < cpr->GetLargestPossibleRegion().GetNumberOfPixels(); ++p)
+  {
+    mismatches += png->GetBufferPointer()[p] != expected->GetBufferPointer()[p];
   }
   EXPECT_EQ(mismatches, 0u);
 
@@ -171,6 +193,9 @@ TEST_F(RotationSeriesCLI, BadValuesExit1NamingTheFlagAndWriteNothing)
     SCOPED_TRACE(angles);
     ExpectRejected({ "--rotationSeries", series, "--rotationAngles", angles }, "--rotationAngles");
   }
+  // A display size beyond a PACS's pictures (the XML's constraint is a hint; the module checks it).
+  ExpectRejected({ "--rotationSeries", series, "--rotationSeriesSize", "9000" }, "--rotationSeriesSize");
+  ExpectRejected({ "--rotationSeries", series, "--rotationSeriesSize", "-1" }, "--rotationSeriesSize");
   // Without a folder the angles are still checked; good ones only warn, as 3D Slicer passes the default every time.
   ExpectRejected({ "--rotationAngles", "0,10,0" }, "--rotationAngles");
   const auto withoutFolder = Run({ "--rotationAngles", "0,10,3" });

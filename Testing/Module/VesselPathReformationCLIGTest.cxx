@@ -191,11 +191,15 @@ TEST(VesselPathReformationModule, MeasuresAKnownStenosisFromTheSegmentation)
                                     points.string(),
                                     "--outputFoldMask",
                                     folds.string(),
+                                    "--gradingScale",
+                                    "cad-rads",
                                     "--returnparameterfile",
                                     returned.string() });
   ASSERT_EQ(run.ExitCode, 0) << run.Err;
   auto values = ReturnedValues(returned);
   EXPECT_NEAR(std::stod(values.at("pathLength")), TubeLength, 0.01);
+  // CAD-RADS because the user said so (the tube has no name).
+  EXPECT_EQ(values.at("gradingScale"), "CAD-RADS");
   EXPECT_EQ(values.at("lumenSource"), "segmentation");
   EXPECT_NEAR(std::stod(values.at("minimalLumenDiameter")), 2.0 * NarrowRadius, 0.2);
   EXPECT_NEAR(std::stod(values.at("minimalLumenDiameterArcLength")), 30.0, 1.0);
@@ -214,11 +218,18 @@ TEST(VesselPathReformationModule, MeasuresAKnownStenosisFromTheSegmentation)
     EXPECT_GT(image->GetPixel({ { 30, row } }), 200.0f) << "row " << row;
     EXPECT_LT(image->GetPixel({ { 0, row } }), 200.0f) << "row " << row;
   }
-  // The table: a header starting with the columns, one row per section, RAS centres on the axis.
+  // The table: comment lines stating the grading, a header starting with the columns, one row per section,
+  // RAS centres on the axis.
   std::ifstream tableStream(table);
   std::string   header;
-  std::getline(tableStream, header);
-  EXPECT_EQ(header.rfind("arc_length_mm,r_mm,a_mm,s_mm,area_mm2,equivalent_diameter_mm,min_diameter_mm,"
+  std::string   comments;
+  while (std::getline(tableStream, header) && header.rfind("# ", 0) == 0)
+  {
+    comments += header + "\n";
+  }
+  EXPECT_TRUE(Contains(comments, "reference: interpolated within each segment")) << comments;
+  EXPECT_TRUE(Contains(comments, "scale CAD-RADS (chosen by the user)")) << comments;
+  EXPECT_EQ(header.rfind("arc_length_mm,ras_r_mm,ras_a_mm,ras_s_mm,area_mm2,equivalent_diameter_mm,min_diameter_mm,"
                          "max_diameter_mm,reference_diameter_mm",
                          0),
             0u)
@@ -247,6 +258,7 @@ TEST(VesselPathReformationModule, MeasuresAKnownStenosisFromTheSegmentation)
   {
     EXPECT_TRUE(fs::exists(path)) << path;
   }
+  EXPECT_TRUE(Contains(run.Out, "headline: ")) << run.Out;
   EXPECT_TRUE(Contains(run.Out, "CAD-RADS")) << run.Out;
 }
 
@@ -265,6 +277,14 @@ TEST(VesselPathReformationModule, MeasuresTheSameStenosisFromTheRadiiAlone)
   EXPECT_NEAR(std::stod(values.at("minimalLumenDiameter")), 2.0 * NarrowRadius, 0.2);
   EXPECT_NEAR(std::stod(values.at("minimalLumenDiameterArcLength")), 30.0, 1.0);
   EXPECT_NEAR(std::stod(values.at("diameterStenosis")), 50.0, 3.0);
+  // Without a name and without --gradingScale: a peripheral artery's category, no CAD-RADS class.
+  EXPECT_EQ(values.at("cadRads"), "");
+  EXPECT_EQ(values.at("gradingScale"), "peripheral");
+  EXPECT_TRUE(values.at("grade") == "50–99 % (peripheral)" || values.at("grade") == "20–49 % (peripheral)")
+    << values.at("grade");
+  EXPECT_TRUE(Contains(values.at("segments"), "segment 1")) << values.at("segments");
+  EXPECT_EQ(values.at("referenceScope"), "each segment");
+  EXPECT_NE(values.at("excludedSections"), "0");
 }
 
 TEST(VesselPathReformationModule, WithoutCenterlinesThePathComesFromTheSegmentation)
@@ -342,6 +362,7 @@ TEST(VesselPathReformationModule, RefusesBadInputNamingTheFlagOrFile)
   ExpectRefused(files, { "--spacing", "-1" }, "--spacing");
   ExpectRefused(files, { "--spacing", "nan" }, "--spacing");
   ExpectRefused(files, { "--referencePoints", "5,400" }, "--referencePoints");
+  ExpectRefused(files, { "--gradingScale", "coronary" }, "--gradingScale");
 
   // A segmentation that misses the path: a mask of a blob far from the tube.
   const auto mask = vr::test::MakeLabelMap(itk::Size<3>{ { 20, 20, 20 } },

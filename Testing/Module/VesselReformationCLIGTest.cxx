@@ -328,7 +328,8 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
                                  "window",
                                  "level",
                                  "rotationSeries",
-                                 "rotationAngles" });
+                                 "rotationAngles",
+                                 "rotationSeriesSize" });
 }
 
 TEST(ModuleFlags, BilateralDepthRelaxAcceptsExactlyItsXMLFlags)

@@ -167,7 +167,11 @@ ReadTableColumns(const std::string & path, const std::vector<std::string> & name
     }
     return cells;
   };
-  if (!std::getline(in, line))
+  // The comment lines stating the grading come first (docs/lumen-measurement.md, "The table").
+  while (std::getline(in, line) && line.rfind('#', 0) == 0)
+  {
+  }
+  if (line.empty())
   {
     return rows;
   }
@@ -376,13 +380,15 @@ TEST_F(VesselPathPanelTest, ThePlotsMinimalLumenDiameterIsTheExportedTables)
   const fs::path folder = FreshFolderForThisTest(fs::temp_directory_path(), "vr-");
   const fs::path table = folder / "lumen.csv";
   ASSERT_TRUE(Window().ExportLumenTable(QString::fromStdString(table.string())));
-  const auto rows = ReadTableColumns(table.string(), { "arc_length_mm", "diameter_mm" });
+  const auto rows = ReadTableColumns(table.string(), { "arc_length_mm", "diameter_mm", "segment", "mld_candidate" });
   ASSERT_EQ(rows.size(), results.Lumen.Sections.size());
+  // The MLD is the narrowest candidate of the headline segment (docs/lumen-measurement.md).
+  ASSERT_GE(results.Stenosis.HeadlineSegment, 0);
   double minimum = std::numeric_limits<double>::infinity();
   double where = std::numeric_limits<double>::quiet_NaN();
   for (const auto & row : rows)
   {
-    if (std::isfinite(row[1]) && row[1] < minimum)
+    if (std::isfinite(row[1]) && row[1] < minimum && row[2] == results.Stenosis.HeadlineSegment + 1 && row[3] == 1.0)
     {
       minimum = row[1];
       where = row[0];

@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The viewer window's panel and outputs, driven as a user would under a virtual X server: parameters and filter
 // settings reaching the logic, the file menu, saving and exporting, tooltips, the cut surface and its preview.
+#include "vrBurnedInLabels.h"
 #include "vrWidgetsTestSupport.h"
 #include "vrWindowTestFixture.h"
 
@@ -236,7 +237,8 @@ TEST_F(WidgetsTest, ExportsARotationSeriesOfTheImageOnScreen)
   const double level = Window().GetPanel()->GetLevelSpinBox()->value();
   ASSERT_GT(window, 0.0);
   const double angle = shown->Outputs.View.GetAngleInDegrees();
-  EXPECT_EQ(Window().ExportRotationSeries(QString::fromStdString(series), RotationAngles{ angle, 120.0, 3 }), 3);
+  // At the CPR's own size (0), so that the pixels compare one for one.
+  EXPECT_EQ(Window().ExportRotationSeries(QString::fromStdString(series), RotationAngles{ angle, 120.0, 3 }, 0), 3);
   const std::set<std::string> expected = { "rotation-000.png",   "rotation-001.png", "rotation-002.png",
                                            "rotation-000.dcm",   "rotation-001.dcm", "rotation-002.dcm",
                                            "rotation-angles.csv" };
@@ -246,22 +248,31 @@ TEST_F(WidgetsTest, ExportsARotationSeriesOfTheImageOnScreen)
     written.insert(entry.path().filename().string());
   }
   EXPECT_EQ(written, expected);
-  // View 0 is at the angle on screen: the image on screen through the panel's window and level, computed here.
+  // View 0 is at the angle on screen: the image on screen through the panel's window and level, computed here, with
+  // the view's labels burned in (vr::BurnInViewLabels at the view's own axes).
   const QImage png(QString::fromStdString(series + "/rotation-000.png"));
   const auto   pixels = NodePixels(shown->Outputs.CPR);
   ASSERT_EQ(static_cast<std::size_t>(png.width()) * static_cast<std::size_t>(png.height()), pixels.size());
+  auto labelled = MaskImageType::New();
+  labelled->SetRegions(MaskImageType::SizeType{
+    { static_cast<itk::SizeValueType>(png.width()), static_cast<itk::SizeValueType>(png.height()) } });
+  labelled->Allocate();
+  for (std::size_t p = 0; p < pixels.size(); ++p)
+  {
+    const float  value = pixels[p];
+    const double grey =
+      std::isnan(value)
+        ? 0.0
+        : std::min(255.0, std::max(0.0, std::floor(255.0 * (value - level + window / 2) / window + 0.5)));
+    labelled->GetBufferPointer()[p] = static_cast<unsigned char>(grey);
+  }
+  BurnInViewLabels(labelled, shown->Outputs.View.GetU(), shown->Outputs.View.GetUp(), angle);
   std::size_t mismatches = 0;
   for (int y = 0; y < png.height(); ++y)
   {
     for (int x = 0; x < png.width(); ++x)
     {
-      const float value =
-        pixels[static_cast<std::size_t>(y) * static_cast<std::size_t>(png.width()) + static_cast<std::size_t>(x)];
-      const double grey =
-        std::isnan(value)
-          ? 0.0
-          : std::min(255.0, std::max(0.0, std::floor(255.0 * (value - level + window / 2) / window + 0.5)));
-      mismatches += qGray(png.pixel(x, y)) != static_cast<int>(grey);
+      mismatches += qGray(png.pixel(x, y)) != labelled->GetPixel({ { x, y } });
     }
   }
   EXPECT_EQ(mismatches, 0u);

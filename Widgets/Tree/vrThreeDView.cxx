@@ -376,6 +376,49 @@ ThreeDView::UpdateViewDirection()
 void
 ThreeDView::ResetCamera()
 {
+  // Look along the view direction (anterior to posterior before a result).
+  std::array<double, 3> v = { 0.0, 1.0, 0.0 };
+  std::array<double, 3> up = { 0.0, 0.0, 1.0 };
+  if (m_Result)
+  {
+    v = DirectionToRAS(m_Result->Outputs.View.GetV());
+    up = DirectionToRAS(m_Result->Outputs.View.GetUp());
+    m_CameraSet = true;
+  }
+  ResetCameraAlong(v, up);
+}
+
+void
+ThreeDView::ResetCameraForAngle(double angleInDegrees)
+{
+  if (!m_Result)
+  {
+    ResetCamera();
+    return;
+  }
+  // The view direction at that angle: the shown view's v turned about up by the difference (docs/design.md, "View
+  // geometry": the angle turns u and v about up by the right-hand rule), before the view at that angle is computed.
+  const auto & view = m_Result->Outputs.View;
+  const auto   v = view.GetV();
+  const auto   up = view.GetUp();
+  const double turn = (angleInDegrees - view.GetAngleInDegrees()) * 3.14159265358979323846 / 180.0;
+  const auto   across = itk::CrossProduct(up, v);
+  const auto   turned = v * std::cos(turn) + across * std::sin(turn) + up * ((up * v) * (1.0 - std::cos(turn)));
+  m_CameraSet = true;
+  ResetCameraAlong(DirectionToRAS(turned), DirectionToRAS(up));
+}
+
+std::array<double, 3>
+ThreeDView::GetCameraDirection() const
+{
+  std::array<double, 3> direction{};
+  m_Renderer->GetActiveCamera()->GetDirectionOfProjection(direction.data());
+  return direction;
+}
+
+void
+ThreeDView::ResetCameraAlong(const std::array<double, 3> & v, const std::array<double, 3> & up)
+{
   if (!m_Inputs)
   {
     return;
@@ -385,16 +428,7 @@ ThreeDView::ResetCamera()
   const double center[3] = { 0.5 * (bounds[0] + bounds[1]),
                              0.5 * (bounds[2] + bounds[3]),
                              0.5 * (bounds[4] + bounds[5]) };
-  // Look along the view direction (anterior to posterior before a result), turned 30 degrees about up, so that the
-  // cut surface's relief shows.
-  std::array<double, 3> v = { 0.0, 1.0, 0.0 };
-  std::array<double, 3> up = { 0.0, 0.0, 1.0 };
-  if (m_Result)
-  {
-    v = DirectionToRAS(m_Result->Outputs.View.GetV());
-    up = DirectionToRAS(m_Result->Outputs.View.GetUp());
-    m_CameraSet = true;
-  }
+  // Turned 30 degrees about up and raised 10, so that the cut surface's relief shows.
   vtkCamera * camera = m_Renderer->GetActiveCamera();
   camera->SetFocalPoint(center);
   camera->SetPosition(center[0] - v[0], center[1] - v[1], center[2] - v[2]);

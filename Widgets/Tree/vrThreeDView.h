@@ -102,9 +102,17 @@ public:
   {
     return m_LastRenderedPoints;
   }
-  /** Fits the camera to the outline, looking along the view direction from 30 degrees aside. */
+  /** Fits the camera to the outline, looking along the view direction from 30 degrees aside (azimuth 30 degrees about
+   * up, elevation 10). */
   void
   ResetCamera();
+  /** As ResetCamera, along the view direction of the view at \a angleInDegrees about up (the shown view turned by
+   * the difference), before that view is computed: Home resets the angle and the camera together. */
+  void
+  ResetCameraForAngle(double angleInDegrees);
+  /** The camera's direction of projection (RAS, unit). */
+  std::array<double, 3>
+  GetCameraDirection() const;
   /** \return the widget that renders. */
   QVTKOpenGLNativeWidget *
   GetRenderWidget() const
@@ -126,6 +134,8 @@ signals:
 private:
   void
   ChooseSurface();
+  void
+  ResetCameraAlong(const std::array<double, 3> & v, const std::array<double, 3> & up);
   void
   UpdateViewDirection();
 

@@ -15,7 +15,7 @@ CrossSectionView::CrossSectionView(QWidget * parent)
   : QWidget(parent)
 {
   setFocusPolicy(Qt::StrongFocus);
-  setMinimumSize(160, 160);
+  setMinimumSize(110, 110);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setToolTip(tr("The cross-section perpendicular to the path at the position shown on the straightened CPR; the "
                 "circle has the section's lumen diameter; %1.")

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 namespace vr
 {
@@ -59,10 +60,12 @@ Polyline(const std::vector<QPointF> & points, const std::function<QPointF(const 
 LumenProfilePlot::LumenProfilePlot(QWidget * parent)
   : QWidget(parent)
 {
-  setMinimumSize(300, 150);
+  setMinimumSize(200, 100);
   setAttribute(Qt::WA_OpaquePaintEvent);
-  setToolTip(tr("The lumen diameter along the path (mm against mm of arc length), the reference diameter (dashed) "
-                "and the minimal lumen diameter (MLD, red). Click or drag to move the cross-section."));
+  setToolTip(tr("The lumen diameter along the path (mm against mm of arc length), each segment's reference diameter "
+                "(dashed; junctions dotted), the sections no MLD is taken from (shaded: near the path's ends and "
+                "branch origins), the minimal lumen diameter (MLD, red) and the aorta's maximum diameter (orange). "
+                "Click or drag to move the cross-section."));
 }
 
 void
@@ -72,21 +75,47 @@ LumenProfilePlot::Clear()
   m_Inscribed.clear();
   m_Reference.clear();
   m_Minimum.reset();
+  m_Maximum.reset();
+  m_Excluded.clear();
+  m_Junctions.clear();
   m_Position = -1.0;
   update();
 }
 
 void
-LumenProfilePlot::SetProfile(const itk::VesselLumenProfile & profile, const itk::VesselStenosisSummary & summary)
+LumenProfilePlot::SetProfile(const itk::VesselLumenProfile & profile, const vr::VesselStenosisSummary & summary)
 {
   Clear();
   const bool fromSegmentation = profile.Source == itk::VesselLumenSource::Segmentation;
   m_DiameterLabel = fromSegmentation ? tr("diameter 2\u221a(A/\u03c0)") : tr("diameter 2r (centerline)");
-  double top = 0.0;
-  for (const auto & section : profile.Sections)
+  double       top = 0.0;
+  const auto & marks = summary.Sections;
+  for (std::size_t k = 0; k < profile.Sections.size(); ++k)
   {
+    const auto & section = profile.Sections[k];
     m_Diameter.emplace_back(section.ArcLength, section.Diameter);
+    // Each segment's reference on its own: a break where the segment changes.
+    if (k > 0 && k < marks.size() && marks[k].Segment != marks[k - 1].Segment)
+    {
+      m_Reference.emplace_back(section.ArcLength, std::numeric_limits<double>::quiet_NaN());
+    }
     m_Reference.emplace_back(section.ArcLength, section.ReferenceDiameter);
+    // The margins' stretches (a section not measured is no margin: the gap in the curve shows it).
+    const bool excluded = k < marks.size() && !marks[k].Candidate && marks[k].ExcludedBecause != "not measured";
+    if (excluded)
+    {
+      const double half =
+        0.5 * (k + 1 < profile.Sections.size() ? profile.Sections[k + 1].ArcLength - section.ArcLength
+                                               : section.ArcLength - profile.Sections[k - 1].ArcLength);
+      if (!m_Excluded.empty() && std::abs(m_Excluded.back().second - (section.ArcLength - half)) < 1e-6)
+      {
+        m_Excluded.back().second = section.ArcLength + half;
+      }
+      else
+      {
+        m_Excluded.emplace_back(section.ArcLength - half, section.ArcLength + half);
+      }
+    }
     if (fromSegmentation)
     {
       m_Inscribed.emplace_back(section.ArcLength, section.InscribedDiameter);
@@ -99,9 +128,19 @@ LumenProfilePlot::SetProfile(const itk::VesselLumenProfile & profile, const itk:
       }
     }
   }
-  if (std::isfinite(summary.MinimalLumenDiameter) && std::isfinite(summary.MinimalLumenDiameterArcLength))
+  for (std::size_t g = 1; g < summary.Segments.size(); ++g)
+  {
+    m_Junctions.push_back(summary.Segments[g].Segment.Begin);
+  }
+  // The MLD of a graded stenosis; the aorta's maximum diameter.
+  if (!summary.Grade.empty() && std::isfinite(summary.MinimalLumenDiameter) &&
+      std::isfinite(summary.MinimalLumenDiameterArcLength))
   {
     m_Minimum = QPointF(summary.MinimalLumenDiameterArcLength, summary.MinimalLumenDiameter);
+  }
+  if (std::isfinite(summary.MaximumDiameter) && std::isfinite(summary.MaximumDiameterArcLength))
+  {
+    m_Maximum = QPointF(summary.MaximumDiameterArcLength, summary.MaximumDiameter);
   }
   m_Range[0] = profile.Sections.empty() ? 0.0 : profile.Sections.front().ArcLength;
   m_Range[1] = profile.Sections.empty() ? 1.0 : std::max(profile.Sections.back().ArcLength, m_Range[0] + 1e-3);
@@ -176,6 +215,20 @@ LumenProfilePlot::paintEvent(QPaintEvent *)
   painter.drawText(QPointF(area.left(), height() - 4.0), tr("arc length (mm)"));
   painter.drawText(QPointF(4.0, 14.0), tr("diameter (mm)"));
 
+  // The margins' stretches shaded, the junctions dotted.
+  for (const auto & [begin, end] : m_Excluded)
+  {
+    const double left = std::max(area.left(), WidgetPoint(begin, 0.0).x());
+    const double right = std::min(area.right(), WidgetPoint(end, 0.0).x());
+    painter.fillRect(QRectF(QPointF(left, area.top() + 1.0), QPointF(right, area.bottom())), QColor(232, 232, 232));
+  }
+  painter.setPen(QPen(QColor(110, 110, 110), 1.0, Qt::DotLine));
+  for (const double s : m_Junctions)
+  {
+    const double x = WidgetPoint(s, 0.0).x();
+    painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
+  }
+
   painter.setRenderHint(QPainter::Antialiasing);
   const auto toWidget = [this](const QPointF & point) { return WidgetPoint(point.x(), point.y()); };
   painter.setClipRect(area.adjusted(-1.0, -1.0, 1.0, 1.0));
@@ -190,6 +243,21 @@ LumenProfilePlot::paintEvent(QPaintEvent *)
     const double x = WidgetPoint(m_Position, 0.0).x();
     painter.setPen(QPen(QColor(220, 40, 220), 1.5));
     painter.drawLine(QPointF(x, area.top()), QPointF(x, area.bottom()));
+  }
+  if (m_Maximum)
+  {
+    // The aorta's maximum diameter: an orange triangle pointing down at it, its value beside.
+    const QPointF at = toWidget(*m_Maximum);
+    painter.setPen(QPen(QColor(220, 120, 0), 1.5));
+    painter.setBrush(QColor(220, 120, 0));
+    const QPointF triangle[] = { at, at + QPointF(-5.0, -8.0), at + QPointF(5.0, -8.0) };
+    painter.drawPolygon(triangle, 3);
+    painter.setClipping(false);
+    const QString label = tr("max %1 mm").arg(m_Maximum->y(), 0, 'f', 1);
+    const double  labelWidth = metrics.horizontalAdvance(label);
+    const double  x = at.x() + 8.0 + labelWidth < width() - 2.0 ? at.x() + 8.0 : at.x() - 8.0 - labelWidth;
+    painter.drawText(QPointF(x, at.y() - 2.0), label);
+    painter.setClipRect(area.adjusted(-1.0, -1.0, 1.0, 1.0));
   }
   if (m_Minimum)
   {
@@ -209,12 +277,23 @@ LumenProfilePlot::paintEvent(QPaintEvent *)
   double x = area.left() + 100.0;
   auto   legend = [&](const QString & text, const QColor & color)
   {
+    // An entry that does not fit whole is left out rather than cut (the tooltip names them all).
+    const double advance = metrics.horizontalAdvance(text);
+    if (x + advance > width() - 4.0)
+    {
+      x = width();
+      return;
+    }
     painter.setPen(color);
     painter.drawText(QPointF(x, 14.0), text);
-    x += metrics.horizontalAdvance(text) + 16.0;
+    x += advance + 16.0;
   };
   legend(m_DiameterLabel, QColor(20, 20, 20));
   legend(tr("reference"), QColor(30, 110, 200));
+  if (!m_Excluded.empty())
+  {
+    legend(tr("excluded (margins)"), QColor(150, 150, 150));
+  }
   if (!m_Inscribed.empty())
   {
     legend(tr("2r (centerline)"), QColor(130, 130, 130));

@@ -15,7 +15,7 @@ StraightenedCPRView::StraightenedCPRView(QWidget * parent)
   : QWidget(parent)
 {
   setFocusPolicy(Qt::StrongFocus);
-  setMinimumSize(120, 200);
+  setMinimumSize(100, 120);
   setAttribute(Qt::WA_OpaquePaintEvent);
   setToolTip(tr("The straightened CPR of the vessel path: left-drag rolls it about the path, right-click puts the "
                 "cross-section at that row, %1.")

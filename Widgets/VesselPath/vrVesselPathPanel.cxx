@@ -3,47 +3,35 @@
 
 #include "vrCrossSectionView.h"
 #include "vrLumenProfilePlot.h"
-#include "vrLumenTableIO.h"
+#include "vrLumenMeasurement.h"
 #include "vrNodeConversion.h"
 #include "vrSegmentationIO.h"
 #include "vrStraightenedCPRView.h"
+#include "vrVesselPathReport.h"
+#include "vrVesselPathSettings.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalBlocker>
-#include <QSplitter>
+#include <QTabWidget>
+#include <QTextBrowser>
 #include <QVBoxLayout>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace vr
 {
 namespace
 {
-QString
-Number(double value, int decimals)
-{
-  return std::isfinite(value) ? QString::number(value, 'f', decimals) : QStringLiteral("–");
-}
-
-/** The CAD-RADS class with its range of % diameter stenosis. */
-QString
-CADRADSText(int grade)
-{
-  static const char * const ranges[] = { "0 %", "1–24 %", "25–49 %", "50–69 %", "70–99 %", "100 %" };
-  if (grade < 0 || grade > 5)
-  {
-    return QStringLiteral("–");
-  }
-  return QStringLiteral("%1 (%2)").arg(grade).arg(QString::fromUtf8(ranges[grade]));
-}
-
 double
 WrapDegrees(double degrees)
 {
@@ -64,11 +52,12 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
   : QWidget(parent)
   , m_Logic(std::make_unique<VesselPathLogic>())
 {
-  m_Title = new QLabel(tr("<b>Vessel path</b>"));
   m_Branches = new QComboBox;
   m_Branches->setToolTip(tr("The path shown: from the tree's root to this branch's far end. Ctrl+click a vessel in the "
                             "CPR view opens its path too."));
-  m_Branches->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+  // Long vessel names must not widen the panel beyond the window: the list shows them whole when it opens.
+  m_Branches->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+  m_Branches->setMinimumContentsLength(12);
   m_Stretched = new QCheckBox(tr("Stretched"));
   m_Stretched->setToolTip(tr("Stretched CPR: sampling lines along the tree view's horizontal, distances along the "
                              "projected path kept; off: straightened, the path as the middle column."));
@@ -79,34 +68,47 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
   m_Roll->setWrapping(true);
   m_Roll->setKeyboardTracking(false);
   m_Roll->setToolTip(tr("Rotation of the image about the path, degrees (left-drag on the image rolls it)."));
-  auto * header = new QHBoxLayout;
-  header->addWidget(m_Title);
-  header->addWidget(m_Branches, 1);
-  header->addWidget(m_Stretched);
-  header->addWidget(new QLabel(tr("Roll")));
-  header->addWidget(m_Roll);
+  auto * title = new QHBoxLayout;
+  title->addWidget(new QLabel(tr("<b>Vessel path</b>")));
+  title->addWidget(m_Branches, 1);
+  auto * view = new QHBoxLayout;
+  view->addWidget(m_Stretched);
+  view->addStretch(1);
+  view->addWidget(new QLabel(tr("Roll")));
+  view->addWidget(m_Roll);
 
   m_CPR = new StraightenedCPRView;
   m_CrossSection = new CrossSectionView;
   m_Plot = new LumenProfilePlot;
-  m_Measurements = new QLabel;
-  m_Measurements->setWordWrap(true);
-  m_Measurements->setTextInteractionFlags(Qt::TextSelectableByMouse);
-  m_Measurements->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-  m_Measurements->setMinimumWidth(200);
+  // The report in an area of its own that scrolls: never drawn over an image, whatever the panel's size.
+  m_Measurements = new QTextBrowser;
+  m_Measurements->setObjectName(QStringLiteral("vesselPathReport"));
+  m_Measurements->setOpenLinks(false);
+  m_Measurements->setMinimumSize(120, 60);
+  m_Settings = new VesselPathSettings;
+  auto * settings = new QScrollArea;
+  settings->setWidget(m_Settings);
+  settings->setWidgetResizable(true);
+  settings->setMinimumSize(120, 60);
+  m_Tabs = new QTabWidget;
+  m_Tabs->addTab(m_Measurements, tr("Report"));
+  m_Tabs->addTab(settings, tr("Settings"));
 
   auto * right = new QVBoxLayout;
-  right->addWidget(m_CrossSection, 3);
-  right->addWidget(m_Measurements, 2);
+  right->addWidget(m_CrossSection, 2);
+  right->addWidget(m_Tabs, 3);
   auto * images = new QHBoxLayout;
   images->addWidget(m_CPR, 2);
   images->addLayout(right, 3);
   auto * layout = new QVBoxLayout(this);
   layout->setContentsMargins(4, 4, 4, 4);
-  layout->addLayout(header);
+  layout->addLayout(title);
+  layout->addLayout(view);
   layout->addLayout(images, 3);
   layout->addWidget(m_Plot, 2);
 
+  connect(m_Settings, &VesselPathSettings::edited, this, [this] { ApplySettings(); });
+  connect(m_Measurements, &QTextBrowser::anchorClicked, this, [this](const QUrl & link) { FollowReportLink(link); });
   connect(m_Branches,
           QOverload<int>::of(&QComboBox::activated),
           this,
@@ -184,6 +186,7 @@ VesselPathPanel::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
   m_CrossSection->SetSlice(nullptr, 0, m_Window, m_Level);
   m_Plot->Clear();
   m_Measurements->clear();
+  m_ReportHTML.clear();
   if (!m_Inputs)
   {
     setEnabled(false);
@@ -297,11 +300,18 @@ VesselPathPanel::OpenBranch(int branchId)
   }
   const QSignalBlocker block(m_Branches);
   m_Branches->setCurrentIndex(std::max(0, m_Branches->findData(branchId)));
-  // Open on the MLD when there is one, else in the middle of the path.
+  // Open on the headline: the MLD of a graded stenosis, the aorta's maximum diameter; else the path's middle.
   const auto & results = m_Logic->GetResults();
-  if (results.HasLumen && std::isfinite(results.Stenosis.MinimalLumenDiameterArcLength))
+  m_PathLength = results.Path.GetLength();
+  m_Settings->Show(m_Parameters, m_PathLength);
+  const auto & stenosis = results.Stenosis;
+  if (results.HasLumen && !stenosis.Grade.empty() && std::isfinite(stenosis.MinimalLumenDiameterArcLength))
   {
-    SetArcLength(results.Stenosis.MinimalLumenDiameterArcLength);
+    SetArcLength(stenosis.MinimalLumenDiameterArcLength);
+  }
+  else if (results.HasLumen && std::isfinite(stenosis.MaximumDiameterArcLength))
+  {
+    SetArcLength(stenosis.MaximumDiameterArcLength);
   }
   else
   {
@@ -309,6 +319,77 @@ VesselPathPanel::OpenBranch(int branchId)
   }
   emit pathOpened(branchId);
   return true;
+}
+
+bool
+VesselPathPanel::RunWith(const VesselPathParameters & parameters)
+{
+  const VesselPathParameters previous = m_Parameters;
+  const double               s = GetArcLength() + m_Logic->GetResults().Path.GetArcLengthOffset();
+  m_Parameters = parameters;
+  if (!Run())
+  {
+    m_Parameters = previous;
+    Run(false);
+    m_Settings->Show(m_Parameters, m_PathLength);
+    return false;
+  }
+  m_Settings->Show(m_Parameters, m_PathLength);
+  // The cross-section stays at the same place of the vessel when a range moves the path's start.
+  SetArcLength(s - m_Logic->GetResults().Path.GetArcLengthOffset());
+  return true;
+}
+
+bool
+VesselPathPanel::ApplySettings()
+{
+  if (!m_HasPath)
+  {
+    return false;
+  }
+  VesselPathParameters parameters = m_Parameters;
+  const QString        problem = m_Settings->Apply(parameters);
+  if (!problem.isEmpty())
+  {
+    m_LastError = problem;
+    emit errorOccurred(problem);
+    m_Settings->Show(m_Parameters, m_PathLength);
+    return false;
+  }
+  return parameters == m_Parameters || RunWith(parameters);
+}
+
+void
+VesselPathPanel::SetWidth(double width)
+{
+  VesselPathParameters parameters = m_Parameters;
+  parameters.Width = width;
+  if (!m_HasPath)
+  {
+    m_Parameters = parameters;
+    m_Settings->Show(m_Parameters, m_PathLength);
+    return;
+  }
+  RunWith(parameters);
+}
+
+void
+VesselPathPanel::FollowReportLink(const QUrl & link)
+{
+  const QString text = link.toString();
+  if (text.startsWith(QString::fromLatin1(ReportLink::Width)))
+  {
+    bool         number = false;
+    const double width = text.mid(static_cast<int>(std::strlen(ReportLink::Width))).toDouble(&number);
+    if (number && width > 0.0)
+    {
+      SetWidth(width);
+    }
+  }
+  else if (text == QString::fromLatin1(ReportLink::Stretched))
+  {
+    SetStretched(true);
+  }
 }
 
 bool
@@ -491,64 +572,28 @@ VesselPathPanel::ShowPosition()
 void
 VesselPathPanel::ShowMeasurements()
 {
-  const auto & results = m_Logic->GetResults();
-  const auto & stenosis = results.Stenosis;
-  QStringList  chain;
-  for (const int id : results.Path.GetBranchChain())
+  const auto &  results = m_Logic->GetResults();
+  const QString html = VesselPathReportHTML(results, static_cast<std::size_t>(m_Section), m_Parameters.Width);
+  // Laid out again only when it changed (a roll changes nothing in it), and where it was scrolled to.
+  if (html != m_ReportHTML)
   {
-    chain << (m_Inputs ? QString::fromStdString(m_Inputs->BranchName(id)) : QString::number(id));
+    m_ReportHTML = html;
+    const int scrolled = m_Measurements->verticalScrollBar()->value();
+    m_Measurements->setHtml(html);
+    m_Measurements->verticalScrollBar()->setValue(scrolled);
   }
-  QString text =
-    tr("<b>Path</b> %1 mm: %2").arg(Number(results.Path.GetLength(), 1), chain.join(QStringLiteral(" → ")));
-  if (results.HasLumen)
+  std::string all;
+  for (const auto & warning : results.Warnings)
   {
-    text += tr("<br>lumen from the %1").arg(QString::fromStdString(itk::ToString(results.Lumen.Source)));
-    text += tr("<br><b>MLD</b> %1 mm at %2 mm")
-              .arg(Number(stenosis.MinimalLumenDiameter, 2), Number(stenosis.MinimalLumenDiameterArcLength, 1));
-    text += tr("<br><b>MLA</b> %1 mm² at %2 mm")
-              .arg(Number(stenosis.MinimalLumenArea, 1), Number(stenosis.MinimalLumenAreaArcLength, 1));
-    text += tr("<br>reference %1 mm (%2)")
-              .arg(Number(stenosis.ReferenceDiameter, 2), QString::fromStdString(itk::ToString(stenosis.Method)));
-    text += tr("<br><b>stenosis</b> %1 % diameter, %2 % area")
-              .arg(Number(stenosis.DiameterStenosisPercent, 0), Number(stenosis.AreaStenosisPercent, 0));
-    text += tr("<br><b>CAD-RADS</b> %1").arg(CADRADSText(stenosis.CADRADS));
-    if (static_cast<std::size_t>(m_Section) < results.Lumen.Sections.size())
-    {
-      const auto & here = results.Lumen.Sections[static_cast<std::size_t>(m_Section)];
-      text += tr("<br>here: %1 mm, area %2 mm², min %3 / max %4 mm")
-                .arg(Number(here.Diameter, 2),
-                     Number(here.Area, 1),
-                     Number(here.MinimumDiameter, 2),
-                     Number(here.MaximumDiameter, 2));
-    }
+    all += (all.empty() ? "" : "\n") + warning;
   }
-  else
-  {
-    text += tr("<br>lumen not measured (no segmentation, no radii)");
-  }
-  if (results.FoldedPixels > 0)
-  {
-    text += tr("<br><span style='color:#b00000'>%1 pixels fold over: a width of %2 mm avoids it</span>")
-              .arg(results.FoldedPixels)
-              .arg(Number(2.0 * results.FoldFreeHalfWidth, 1));
-  }
-  m_Measurements->setText(text);
-  m_Measurements->setToolTip(QString::fromStdString(
-    [&]
-    {
-      std::string all;
-      for (const auto & warning : results.Warnings)
-      {
-        all += (all.empty() ? "" : "\n") + warning;
-      }
-      return all;
-    }()));
+  m_Measurements->setToolTip(QString::fromStdString(all));
 }
 
 QString
 VesselPathPanel::GetMeasurementText() const
 {
-  return m_Measurements->text();
+  return m_Measurements->toPlainText();
 }
 
 void
@@ -569,7 +614,9 @@ VesselPathPanel::WriteLumenTable(const QString & path) const
   }
   try
   {
-    vr::WriteLumenTable(m_Logic->GetResults().Lumen, path.toStdString());
+    const auto & results = m_Logic->GetResults();
+    vr::WriteLumenTable(
+      results.Lumen, path.toStdString(), LumenTableNotesOf({ results.Lumen, results.Stenosis }, DescribePath(results)));
   }
   catch (const std::exception & error)
   {

@@ -8,6 +8,7 @@
 #include "vrVesselPathLogic.h"
 
 #include <QString>
+#include <QUrl>
 #include <QWidget>
 
 #include <memory>
@@ -15,20 +16,24 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
-class QLabel;
+class QTabWidget;
+class QTextBrowser;
 
 namespace vr
 {
 class CrossSectionView;
 class LumenProfilePlot;
 class StraightenedCPRView;
+class VesselPathSettings;
 
 /** \class VesselPathPanel
  * \brief The single-vessel reading in the viewer (docs/viewer.md): one path of the centerline tree as a
  * straightened (or stretched) CPR that left-drag rolls, the cross-section at a position along it that the mouse
- * and the arrow keys move, the lumen profile as a plot and the measurements (MLD, MLA, % stenosis, CAD-RADS,
- * reference, path length, folds). vr::VesselPathLogic computes everything; the panel holds one, sets its inputs and
- * parameters and shows its results.
+ * and the arrow keys move, the lumen profile as a plot, and beside the cross-section two tabs: the report (the
+ * grading by segment with its headline, the reference, the section shown, the fold warning with a width that does not
+ * fold) and the settings (width, range, slab, reference, scale; vr::VesselPathSettings). Every text has its own area:
+ * the panel's minimum size holds all its parts, and the report scrolls. vr::VesselPathLogic computes everything; the
+ * panel holds one, sets its inputs and parameters and shows its results.
  *
  * The logic runs on the GUI thread: a roll reruns its resampling alone, which takes milliseconds at a vessel's size
  * (the viewer benchmark "VesselPathRoll" measures roll to picture on screen), so a worker thread would only add
@@ -81,6 +86,13 @@ public:
   SetStretched(bool stretched);
   bool
   IsStretched() const;
+  /** The image's width across the vessel, mm (the Width setting). */
+  void
+  SetWidth(double width);
+  /** Applies the settings tab's values (what its edits do). \return false, with the error shown, when the logic
+   * refuses them; the settings then show the parameters in use again. */
+  bool
+  ApplySettings();
 
   /** The cross-section position: a section of the logic's list (clamped), or the section nearest an arc length. */
   void
@@ -136,9 +148,26 @@ public:
   {
     return m_Branches;
   }
-  /** \return the measurements as shown. */
+  /** \return the report as shown, as plain text. */
   QString
   GetMeasurementText() const;
+  /** The report's area (a read-only text browser; its links are the fold warning's offers). */
+  QTextBrowser *
+  GetReportView() const
+  {
+    return m_Measurements;
+  }
+  VesselPathSettings *
+  GetSettings() const
+  {
+    return m_Settings;
+  }
+  /** The tabs beside the cross-section: the report and the settings. */
+  QTabWidget *
+  GetTabs() const
+  {
+    return m_Tabs;
+  }
   /** \return seconds the latest logic update took. */
   double
   GetLastUpdateSeconds() const
@@ -168,6 +197,11 @@ private:
   ShowMeasurements();
   bool
   PrepareLogic();
+  /** Runs the logic with \a parameters; on a refusal puts the previous parameters back (and their results). */
+  bool
+  RunWith(const VesselPathParameters & parameters);
+  void
+  FollowReportLink(const QUrl & link);
 
   std::unique_ptr<VesselPathLogic>         m_Logic;
   std::shared_ptr<const ReformationInputs> m_Inputs;
@@ -183,13 +217,17 @@ private:
   double                                   m_Window{ 400.0 };
   double                                   m_Level{ 200.0 };
   double                                   m_LastUpdateSeconds{ 0.0 };
-  QString                                  m_LastError;
+  /** The whole path's length (without a range), the range's limit. */
+  double  m_PathLength{ 0.0 };
+  QString m_LastError;
 
   QComboBox *           m_Branches{ nullptr };
   QCheckBox *           m_Stretched{ nullptr };
   QDoubleSpinBox *      m_Roll{ nullptr };
-  QLabel *              m_Title{ nullptr };
-  QLabel *              m_Measurements{ nullptr };
+  QTabWidget *          m_Tabs{ nullptr };
+  QTextBrowser *        m_Measurements{ nullptr };
+  QString               m_ReportHTML;
+  VesselPathSettings *  m_Settings{ nullptr };
   StraightenedCPRView * m_CPR{ nullptr };
   CrossSectionView *    m_CrossSection{ nullptr };
   LumenProfilePlot *    m_Plot{ nullptr };

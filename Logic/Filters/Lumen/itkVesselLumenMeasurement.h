@@ -56,7 +56,8 @@ struct VesselLumenSection
   /** The profile's diameter, which the reference and the stenosis use: EquivalentDiameter for the segmentation
    * source, InscribedDiameter for the centerline-radius source. */
   double Diameter{ std::numeric_limits<double>::quiet_NaN() };
-  /** The reference (healthy) diameter and area here, once AnalyseVesselStenosis has run (itkVesselStenosis.h). */
+  /** The reference (healthy) diameter and area here, once AnalyseVesselStenosis has run (vrVesselStenosis.h, the
+   * one-vessel logic). */
   double ReferenceDiameter{ std::numeric_limits<double>::quiet_NaN() };
   double ReferenceArea{ std::numeric_limits<double>::quiet_NaN() };
 
