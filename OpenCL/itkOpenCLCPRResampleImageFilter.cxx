@@ -48,6 +48,35 @@ VoxelTypeName()
   }
 }
 
+/** A volume's voxels as the device takes them: where they are, the bytes of one, and the OpenCL C type. */
+struct VolumeVoxels
+{
+  const void * Pointer;
+  std::size_t  VoxelBytes;
+  const char * TypeName;
+};
+
+/** The voxels of \a volume: of its pixel type, or, for an itk::ImageBase<3> (the logic's stored volume), of the type
+ * it holds at run time (itk::detail::VisitStoredVolume). */
+template<typename TVolumeImage>
+VolumeVoxels
+VoxelsOf(const TVolumeImage * volume)
+{
+  const auto describe = [](auto * image)
+  {
+    using PixelType = typename std::remove_const_t<std::remove_pointer_t<decltype(image)>>::PixelType;
+    return VolumeVoxels{ image->GetBufferPointer(), sizeof(PixelType), VoxelTypeName<PixelType>() };
+  };
+  if constexpr (std::is_same_v<TVolumeImage, ImageBase<3>>)
+  {
+    return detail::VisitStoredVolume(volume, describe);
+  }
+  else
+  {
+    return describe(volume);
+  }
+}
+
 std::size_t
 RoundUp(std::size_t value, std::size_t multiple)
 {
@@ -67,6 +96,8 @@ template<typename TVolumeImage>
 struct OpenCLCPRResampleImageFilter<TVolumeImage>::DeviceState
 {
   std::shared_ptr<vr::OpenCLSession> Session;
+  /** The kernel is built for one voxel type (VOXEL_TYPE); a volume of another type builds it again. */
+  std::string                        KernelVoxelType;
   cl::Program                        Program;
   cl::Kernel                         Kernel;
   cl::NDRange                        Local;
@@ -126,13 +157,31 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::GetKernelSource()
 
 template<typename TVolumeImage>
 void
-OpenCLCPRResampleImageFilter<TVolumeImage>::VerifyPreconditions() ITKv5_CONST
+OpenCLCPRResampleImageFilter<TVolumeImage>::BuildKernel(const char * voxelType)
 {
-  Superclass::VerifyPreconditions();
-  if (!std::isfinite(m_RescaleSlope) || !std::isfinite(m_RescaleIntercept))
+  DeviceState & state = *m_DeviceState;
+  if (state.KernelVoxelType == voxelType)
   {
-    itkExceptionMacro(<< "the rescale " << m_RescaleSlope << " x stored + " << m_RescaleIntercept
-                      << " is invalid: slope and intercept must be finite");
+    return;
+  }
+  vr::OpenCLSessionState & device = state.Device();
+  try
+  {
+    const std::string options = std::string("-D VOXEL_TYPE=") + voxelType;
+    try
+    {
+      state.Program = device.Program(vr::opencl_sources::CPRResampleFileName, GetKernelSource(), options);
+    }
+    catch (const vr::OpenCLBuildFailure & failure)
+    {
+      itkExceptionMacro(<< failure.what() << "; the compiler's log:\n" << failure.Log());
+    }
+    state.Kernel = cl::Kernel(state.Program, "ResampleAlongDepth");
+    state.KernelVoxelType = voxelType;
+  }
+  catch (const cl::Error & error)
+  {
+    itkExceptionMacro(<< "preparing OpenCL device " << device.Info.Label() << ": " << vr::DescribeOpenCLError(error));
   }
 }
 
@@ -168,16 +217,6 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::PrepareDevice()
   {
     try
     {
-      const std::string options = std::string("-D VOXEL_TYPE=") + VoxelTypeName<typename TVolumeImage::PixelType>();
-      try
-      {
-        state->Program = device.Program(vr::opencl_sources::CPRResampleFileName, GetKernelSource(), options);
-      }
-      catch (const vr::OpenCLBuildFailure & failure)
-      {
-        itkExceptionMacro(<< failure.what() << "; the compiler's log:\n" << failure.Log());
-      }
-      state->Kernel = cl::Kernel(state->Program, "ResampleAlongDepth");
       const std::size_t maximumGroup = device.Device.getInfo<CL_DEVICE_MAX_WORK_GROUP_SIZE>();
       std::size_t       localWidth = 32;
       std::size_t       localHeight = 4;
@@ -193,6 +232,12 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::PrepareDevice()
     }
   }
   m_DeviceState = std::move(state);
+  if (device.DoublePrecision)
+  {
+    // The kernel for the volume's voxel type now (float before a volume is set), so that a build failure shows here.
+    const TVolumeImage * volume = this->GetVolume();
+    this->BuildKernel(volume != nullptr ? VoxelsOf(volume).TypeName : "float");
+  }
 }
 
 template<typename TVolumeImage>
@@ -210,7 +255,7 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::WhyHost() const
            " lacks: the CPU samples the volume";
   }
   const TVolumeImage * volume = this->GetVolume();
-  const std::size_t bytes = volume->GetBufferedRegion().GetNumberOfPixels() * sizeof(typename TVolumeImage::PixelType);
+  const std::size_t    bytes = volume->GetBufferedRegion().GetNumberOfPixels() * VoxelsOf(volume).VoxelBytes;
   if (!device.Info.IsCPU && bytes > device.MaximumAllocationBytes)
   {
     std::ostringstream why;
@@ -237,40 +282,28 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::GenerateData()
       return;
     }
   }
-  if (m_RescaleSlope != 1.0 || m_RescaleIntercept != 0.0)
-  {
-    itkExceptionMacro(<< "the CPU resampling knows no rescale (" << m_RescaleSlope << " x stored + "
-                      << m_RescaleIntercept << "), and the device cannot sample: " << m_HostReason);
-  }
-  Superclass::GenerateData();
+  Superclass::GenerateData(); // the CPU applies the same rescale
+
 }
 
 template<typename TVolumeImage>
 std::string
 OpenCLCPRResampleImageFilter<TVolumeImage>::SampleOnDevice()
 {
-  using PixelType = typename TVolumeImage::PixelType;
   const TVolumeImage *     volume = this->GetVolume();
+  const VolumeVoxels       voxels = VoxelsOf(volume);
   const DepthImageType *   depth = this->GetDepth();
   OutputImageType *        output = this->GetOutput();
   DeviceState &            state = *m_DeviceState;
   vr::OpenCLSessionState & device = state.Device();
-  this->PrepareIndexMapping();
-
-  // The outside value, when it is the volume's minimum, rescaled as the samples are.
-  double outside = static_cast<double>(this->GetOutsideValue());
-  if (this->GetUseVolumeMinimumAsDefault() && (m_RescaleSlope != 1.0 || m_RescaleIntercept != 0.0))
-  {
-    const PixelType * voxels = volume->GetBufferPointer();
-    const std::size_t count = volume->GetBufferedRegion().GetNumberOfPixels();
-    const PixelType   stored = m_RescaleSlope >= 0.0 ? static_cast<PixelType>(this->GetOutsideValue())
-                                                     : *std::max_element(voxels, voxels + count);
-    outside = static_cast<double>(stored) * m_RescaleSlope + m_RescaleIntercept;
-  }
+  this->PrepareIndexMapping(); // the outside value too: the volume's smallest intensity (rescaled) or the default
+  this->BuildKernel(voxels.TypeName);
+  const double                outside = static_cast<double>(this->GetOutsideValue());
+  const CPRIntensityRescale & rescale = this->GetIntensityRescale();
 
   const auto &      volumeRegion = volume->GetBufferedRegion();
   const std::size_t voxelSize[3] = { volumeRegion.GetSize()[0], volumeRegion.GetSize()[1], volumeRegion.GetSize()[2] };
-  const std::size_t volumeBytes = volumeRegion.GetNumberOfPixels() * sizeof(PixelType);
+  const std::size_t volumeBytes = volumeRegion.GetNumberOfPixels() * voxels.VoxelBytes;
   const auto &      region = output->GetBufferedRegion();
   const std::size_t columns = region.GetSize()[0];
   const std::size_t rows = region.GetSize()[1];
@@ -281,9 +314,9 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::SampleOnDevice()
   try
   {
     onDevice = &device.Volume(volume,
-                              volume->GetBufferPointer(),
+                              voxels.Pointer,
                               std::max(volume->GetMTime(), volume->GetUpdateMTime()),
-                              VoxelTypeName<PixelType>(),
+                              voxels.TypeName,
                               voxelSize,
                               volumeBytes);
   }
@@ -389,8 +422,8 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::SampleOnDevice()
     {
       kernel.setArg(argument++, static_cast<cl_long>(start[k]));
     }
-    kernel.setArg(argument++, static_cast<cl_double>(m_RescaleSlope));
-    kernel.setArg(argument++, static_cast<cl_double>(m_RescaleIntercept));
+    kernel.setArg(argument++, static_cast<cl_double>(rescale.Slope));
+    kernel.setArg(argument++, static_cast<cl_double>(rescale.Intercept));
     if (columns > 0 && rows > 0)
     {
       const cl::NDRange global(RoundUp(columns, state.Local[0]), RoundUp(rows, state.Local[1]));
@@ -423,8 +456,6 @@ OpenCLCPRResampleImageFilter<TVolumeImage>::PrintSelf(std::ostream & os, Indent 
   os << indent << "DeviceRequest: \"" << m_DeviceRequest << "\"" << std::endl;
   os << indent << "Session: " << (m_Session ? "shared, set by the caller" : "the filter's own") << std::endl;
   os << indent << "Device: " << (m_DeviceState ? this->GetDeviceLabel() : std::string("(not chosen yet)")) << std::endl;
-  os << indent << "RescaleSlope: " << m_RescaleSlope << std::endl;
-  os << indent << "RescaleIntercept: " << m_RescaleIntercept << std::endl;
   os << indent << "HostReason: \"" << m_HostReason << "\"" << std::endl;
 }
 
@@ -434,4 +465,5 @@ template class OpenCLCPRResampleImageFilter<Image<signed char, 3>>;
 template class OpenCLCPRResampleImageFilter<Image<unsigned char, 3>>;
 template class OpenCLCPRResampleImageFilter<Image<float, 3>>;
 template class OpenCLCPRResampleImageFilter<Image<double, 3>>;
+template class OpenCLCPRResampleImageFilter<ImageBase<3>>;
 } // namespace itk

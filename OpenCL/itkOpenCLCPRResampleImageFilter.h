@@ -23,17 +23,18 @@ namespace itk
  * depth image is read from the device when a filter of the same session produced it (the relaxation, the depth
  * map), else uploaded; the image is downloaded once per update.
  *
- * RescaleSlope and RescaleIntercept turn stored values into intensities per voxel read (slope x stored +
- * intercept, in double: DICOM's rescale, for a volume held in its stored type); the defaults 1 and 0 read the
- * stored values, as the CPU filter does. The outside value, when it is the volume's minimum, is the minimum's
- * rescaled value.
+ * The base class's IntensityRescale turns stored values into intensities per voxel read (slope x stored +
+ * intercept, in double: DICOM's rescale, for a volume held in its stored type), on the device as on the CPU. The
+ * outside value, when it is the volume's minimum, is the minimum's rescaled value.
  *
  * Cubic interpolation has no kernel, a device without double precision (cl_khr_fp64) cannot reproduce the CPU's
  * sampling, and a volume larger than the device's largest buffer (or its free memory) does not fit: then the CPU
- * filter samples (Superclass's data generation), and GetHostReason() says why. The CPU filter knows no rescale, so
- * a rescale other than 1 and 0 is an error there. Only GenerateData() differs from the CPU filter.
+ * filter samples (Superclass's data generation, with the same rescale), and GetHostReason() says why. Only
+ * GenerateData() differs from the CPU filter.
  *
- * Instantiated for volumes of short, unsigned short, signed char, unsigned char, float and double voxels.
+ * Instantiated for volumes of short, unsigned short, signed char, unsigned char, float and double voxels, and for
+ * itk::ImageBase<3>, the logic's volume in whichever of those types its file stored (the kernel is built for the
+ * type the volume holds at run time).
  *
  * \sa CPRResampleImageFilter, OpenCLCPRDepthImageFilter, OpenCLBilateralDepthRelaxFilter, vr::OpenCLSession
  * \ingroup VesselReformation
@@ -70,11 +71,6 @@ public:
   void
   PrepareDevice();
 
-  /** Intensity = RescaleSlope x stored value + RescaleIntercept, per voxel read (defaults 1 and 0). */
-  itkSetMacro(RescaleSlope, double);
-  itkGetConstMacro(RescaleSlope, double);
-  itkSetMacro(RescaleIntercept, double);
-  itkGetConstMacro(RescaleIntercept, double);
 
   /** "" when the last update sampled on the device; otherwise why the CPU sampled. */
   const std::string &
@@ -101,9 +97,6 @@ protected:
   OpenCLCPRResampleImageFilter();
   ~OpenCLCPRResampleImageFilter() override;
 
-  /** Also checks the rescale. */
-  void
-  VerifyPreconditions() ITKv5_CONST override;
 
   void
   GenerateData() override;
@@ -115,6 +108,9 @@ private:
   /** The program, kernel and buffers (defined in the .cxx, which includes OpenCL's headers). */
   struct DeviceState;
 
+  /** Builds the kernel for volumes of \a voxelType (OpenCL C) unless it is built for that type already. */
+  void
+  BuildKernel(const char * voxelType);
   /** Why this update cannot sample on the device, or "". */
   std::string
   WhyHost() const;
@@ -125,8 +121,6 @@ private:
 
   std::string                        m_DeviceRequest;
   std::shared_ptr<vr::OpenCLSession> m_Session;
-  double                             m_RescaleSlope{ 1.0 };
-  double                             m_RescaleIntercept{ 0.0 };
   std::string                        m_HostReason;
   bool                               m_DepthWasOnDevice{ false };
   std::unique_ptr<DeviceState>       m_DeviceState;
@@ -139,6 +133,7 @@ extern template class OpenCLCPRResampleImageFilter<Image<signed char, 3>>;
 extern template class OpenCLCPRResampleImageFilter<Image<unsigned char, 3>>;
 extern template class OpenCLCPRResampleImageFilter<Image<float, 3>>;
 extern template class OpenCLCPRResampleImageFilter<Image<double, 3>>;
+extern template class OpenCLCPRResampleImageFilter<ImageBase<3>>;
 
 } // namespace itk
 

@@ -280,9 +280,6 @@ private:
                     const std::vector<DICOMSeriesSummary> &      series,
                     const QString &                              reason,
                     const std::function<void(const QString &)> & again);
-  /** The folder file dialogs start in. */
-  QString
-  StartFolder() const;
   /** Remembers the folder of \a path (a file or folder opened) for the dialogs, and in the settings. */
   void
   RememberDataFolder(const QString & path);

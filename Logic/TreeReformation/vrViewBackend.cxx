@@ -13,7 +13,7 @@ namespace vr
 namespace
 {
 using OpenCLDepthFilterType = itk::OpenCLCPRDepthImageFilter;
-using OpenCLResampleFilterType = itk::OpenCLCPRResampleImageFilter<VolumeImageType>;
+using OpenCLResampleFilterType = itk::OpenCLCPRResampleImageFilter<itk::ImageBase<3>>;
 } // namespace
 #endif
 

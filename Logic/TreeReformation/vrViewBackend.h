@@ -12,7 +12,8 @@
 namespace vr
 {
 using ViewDepthFilterType = itk::CPRDepthImageFilter<DepthImageType>;
-using ViewResampleFilterType = itk::CPRResampleImageFilter<VolumeImageType, DepthImageType, DepthImageType>;
+/** The logic's resampling: a volume in its stored pixel type (vr::StoredVolume), whichever it is. */
+using ViewResampleFilterType = itk::CPRResampleImageFilter<itk::ImageBase<3>, DepthImageType, DepthImageType>;
 
 /** The depth and resampling filters of a view on the OpenCL device that relaxes it (docs/opencl.md "The whole view
  * on the device"), sharing that relax filter's session, so that the depth map, the relaxed depth and the volume

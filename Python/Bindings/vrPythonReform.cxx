@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // vesselreformation.reform: the whole-tree reformation through vr::VesselReformationLogic, as the VesselReformation
 // module runs it, on a volume the logic reads without a copy of its own.
+#include "itkCPRVolumeSampler.h"
 #include "vrCoordinateFrames.h"
 #include "vrNodeConversion.h"
 #include "vrOutputWriter.h"
@@ -292,8 +293,9 @@ Reform(const py::object & volumeArgument, const py::object & centerlinesArgument
                    { "relax", outputs.Times.Relax },
                    { "resample", outputs.Times.Resample },
                    { "surface", outputs.Times.Surface } };
-  result.EngineVolumeAddress =
-    reinterpret_cast<std::uintptr_t>(logic.GetResampleFilter()->GetVolume()->GetBufferPointer());
+  result.EngineVolumeAddress = itk::detail::VisitStoredVolume(logic.GetResampleFilter()->GetVolume(),
+                                                                [](const auto * image)
+                                                                { return reinterpret_cast<std::uintptr_t>(image->GetBufferPointer()); });
   return result;
 }
 } // namespace

@@ -159,7 +159,7 @@ VesselPath(const py::object & volumeArgument, const py::object & centerlinesArgu
         RaiseValueError("reference_method: \"" + method + "\": use interpolated or robust");
       }
       parameters.ReferenceMethod =
-        method == "robust" ? itk::VesselReferenceMethod::RobustFit : itk::VesselReferenceMethod::Interpolated;
+        method == "robust" ? VesselReferenceMethod::RobustFit : VesselReferenceMethod::Interpolated;
       parameters.Validate();
     });
   const bool        crossSections = read.Flag("cross_sections", true);
