@@ -606,11 +606,12 @@ TEST_F(ReturnValues, CTKHostsGetFilterResultLinesAndTheirTrailingValueIsAccepted
   EXPECT_EQ(results["numberOfBranches"], "2");
   EXPECT_EQ(results["imageSize"], "21,31");
 
-  // Anything else after the positional arguments is still refused.
-  const ModuleRun extra =
-    vr::test::RunProgram(Arguments(Executable("VesselReformation"), {}, { m_Folder.File("cpr.nrrd"), "extra.nrrd" }));
+  // More after the positional arguments than the one returned value a host appends is still refused. (One token alone
+  // is taken for it: inputWarnings is text, which any token is, and a host passes back what it showed last.)
+  const ModuleRun extra = vr::test::RunProgram(
+    Arguments(Executable("VesselReformation"), {}, { m_Folder.File("cpr.nrrd"), "none", "extra.nrrd" }));
   EXPECT_EQ(extra.ExitCode, 1);
-  EXPECT_TRUE(Contains(extra.Err, "unexpected argument \"extra.nrrd\"")) << extra.Err;
+  EXPECT_TRUE(Contains(extra.Err, "unexpected argument")) << extra.Err;
   EXPECT_FALSE(fs::exists(m_Folder.File("extra.nrrd")));
 }
 

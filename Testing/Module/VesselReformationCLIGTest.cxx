@@ -314,6 +314,7 @@ TEST(ModuleFlags, VesselReformationAcceptsExactlyItsXMLFlags)
                                  "slabThickness",
                                  "slabMode",
                                  "centerlineSpace",
+                                 "series",
                                  "segmentation",
                                  "outputDepth",
                                  "outputRelaxedDepth",

@@ -157,7 +157,7 @@ TEST(VesselReformationLogicOpenCL, TurningTheViewUploadsTheVolumeOnce)
     logic.Update();
   }
   const auto * resample =
-    dynamic_cast<itk::OpenCLCPRResampleImageFilter<vr::VolumeImageType> *>(logic.GetResampleFilter());
+    dynamic_cast<itk::OpenCLCPRResampleImageFilter<itk::ImageBase<3>> *>(logic.GetResampleFilter());
   ASSERT_NE(resample, nullptr);
   EXPECT_TRUE(resample->GetDepthWasOnDevice());
   EXPECT_EQ(resample->GetSession()->GetVolumeUploads(), 1u);

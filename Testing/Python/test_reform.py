@@ -198,7 +198,7 @@ def test_bad_arguments_raise_value_error_naming_them(thorax, output):
         vr.reform(volume, centerlines, relaxation=1.5)
     with pytest.raises(ValueError, match=r"^jump_threshold: "):
         vr.reform(volume, centerlines, jump_threshold=float("nan"))
-    with pytest.raises(ValueError, match=r"^mode \"curved\": use scanline or nearest"):
+    with pytest.raises(ValueError, match=r"^mode \"curved\": use scanline, nearest or visibility"):
         vr.reform(volume, centerlines, mode="curved")
     with pytest.raises(ValueError, match=r"^size: expected 2 whole numbers"):
         vr.reform(volume, centerlines, size=(0, 10))

@@ -5,9 +5,9 @@ import pytest
 
 import vesselreformation as vr
 
-COLUMNS = ["arc_length_mm", "r_mm", "a_mm", "s_mm", "area_mm2", "equivalent_diameter_mm", "min_diameter_mm",
-           "max_diameter_mm", "reference_diameter_mm", "diameter_mm", "inscribed_diameter_mm", "reference_area_mm2",
-           "diameter_stenosis_percent", "source", "in_segmentation", "region_clipped", "branch_id"]
+COLUMNS = ["arc_length_mm", "ras_r_mm", "ras_a_mm", "ras_s_mm", "area_mm2", "equivalent_diameter_mm",
+           "min_diameter_mm", "max_diameter_mm", "reference_diameter_mm", "diameter_mm", "inscribed_diameter_mm",
+           "reference_area_mm2", "diameter_stenosis_percent", "source", "in_segmentation", "region_clipped", "branch_id"]
 
 
 def test_the_longest_path_of_the_phantom_with_radii():

@@ -50,7 +50,13 @@ namespace fs = std::filesystem;
 QSplitter *
 MainSplitter(ViewerWindow & window)
 {
-  return qobject_cast<QSplitter *>(window.GetCPRView()->parentWidget());
+  // The splitter that holds the CPR view's part of the window (the view sits in a column with the occlusion strip).
+  QWidget * widget = window.GetCPRView();
+  while (widget != nullptr && qobject_cast<QSplitter *>(widget->parentWidget()) == nullptr)
+  {
+    widget = widget->parentWidget();
+  }
+  return widget != nullptr ? qobject_cast<QSplitter *>(widget->parentWidget()) : nullptr;
 }
 
 /** A split as QSplitter::saveState writes it, with \a sizes. */
