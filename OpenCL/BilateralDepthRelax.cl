@@ -1,6 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// One Jacobi iteration of the bilateral depth relaxation (docs/design.md 3.5; Kretschmer et al., EuroVis 2014, Eq. 1-2),
-// the equation of BilateralDepthRelaxFilter::RelaxOnHost() in its difference form
+// One Jacobi iteration of the bilateral depth relaxation (docs/design.md "Relaxation"; Kretschmer et al., EuroVis 2014,
+// Eq. 1-2), the equation of BilateralDepthRelaxFilter::RelaxOnHost() in its difference form
 //   D'_p = D_p + w sum R (D_q - D_p) / ((1 - w)|Omega| + w sum R),   R(x) = exp(-a x^2),
 // R = 0 when a x^2 > -ln(FLT_MIN), a zero denominator keeps D_p, fixed pixels keep their value.
 // R is computed as 2^u, u = -a log2(e) x^2, with the CPU kernel's polynomial (itkBilateralDepthRelaxRows.hxx): the

@@ -15,10 +15,10 @@ namespace vr
 constexpr std::uintmax_t MaximumCenterlineFileBytes = std::uintmax_t{ 256 } << 20;
 
 /** Reads a centerline tree in LPS mm from .vtp, .vtk (VMTK or 3D Slicer), .mrk.json (3D Slicer markups
- * curves), .tre (TubeTK) or .csv (docs/design.md 3.3). \a space overrides the file's own coordinate system (Auto: the
- * file's, else RAS for VTK files). Throws vr::InputError naming the file and the field on any bad input: the
- * readers check counts, offsets, sizes and nesting against the file and sane limits before a library reads it (see
- * each format's reader), refuse named pipes, devices and files over MaximumCenterlineFileBytes, and treat VTK's
+ * curves), .tre (TubeTK) or .csv (docs/design.md "Centerline tree"). \a space overrides the file's own coordinate
+ * system (Auto: the file's, else RAS for VTK files). Throws vr::InputError naming the file and the field on any bad
+ * input: the readers check counts, offsets, sizes and nesting against the file and sane limits before a library reads
+ * it (see each format's reader), refuse named pipes, devices and files over MaximumCenterlineFileBytes, and treat VTK's
  * warnings as failures. */
 itk::CenterlineTree
 ReadCenterlines(const std::string &    path,

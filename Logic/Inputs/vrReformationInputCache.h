@@ -20,9 +20,9 @@
 namespace vr
 {
 /** \class ReformationInputCache
- * \brief The inputs of a reformation as ITK sees them (docs/design.md 3.7): the volume node as an LPS image with its
- * minimum, the centerline node as a tree, the segmentation node as a vessel mask; each converted again only when its
- * node changed (another node, or the node's modified time).
+ * \brief The inputs of a reformation as ITK sees them (docs/design.md "Module logic"): the volume node as an LPS image
+ * with its minimum, the centerline node as a tree, the segmentation node as a vessel mask; each converted again only
+ * when its node changed (another node, or the node's modified time).
  *
  * Each Get returns the converted value, shared: the same object as long as the node is unchanged, a new one after a
  * conversion, so that a user tells a change by comparing it with the object it used last. Several users on the same

@@ -26,10 +26,10 @@ enum class Stage : unsigned int
 };
 constexpr std::size_t NumberOfStages = 5;
 
-/** Watches the filters of the module logic's pipeline (docs/design.md 3.7): counts and times each stage's runs, maps
- * each filter's progress into its stage's share of the whole update, and raises a filter's abort flag from within
- * the filter's own progress report once RequestAbort() was called (on the filter's thread, so no race on ITK's flag).
- * It calls back only the progress callback it is given; the logic reads counts and times from it. */
+/** Watches the filters of the module logic's pipeline (docs/design.md "Module logic"): counts and times each stage's
+ * runs, maps each filter's progress into its stage's share of the whole update, and raises a filter's abort flag from
+ * within the filter's own progress report once RequestAbort() was called (on the filter's thread, so no race on ITK's
+ * flag). It calls back only the progress callback it is given; the logic reads counts and times from it. */
 class StageMonitor
 {
 public:

@@ -27,7 +27,7 @@ namespace vr
  * labels, relaxed depth, both CPRs, the output nodes; measured per view pixel), the relaxation's workspace as its
  * filter reports it, and the surface. A test counts what updates allocate: with the workspace of the path a solve
  * takes, within 10 % (measured: 0.2 %); CheckViewFitsInMemory() counts the most a steady solve allocates (its
- * coarser grids), 14 to 21 % above an update whose solve needs none (docs/design.md 3.7).
+ * coarser grids), 14 to 21 % above an update whose solve needs none (docs/design.md "Module logic").
  * \param volumeSamplingBytes what sampling the volume allocates besides it (EstimateVolumeSamplingBytes()). */
 double
 EstimateReformationBytes(const itk::Size<2> & size,

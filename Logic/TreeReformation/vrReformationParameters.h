@@ -21,9 +21,9 @@ namespace vr
  * mode, the relaxation, the backend, the lumen fixing, the sampling and the display window.
  *
  * Geometry is in LPS millimetres, like the views stored in the outputs. Zero sizes and spacings mean "fit the
- * centerline tree" (docs/design.md 3.2). Validate() names the parameter by its meaning (vr::ParameterName) and the bad
- * value. The module logic compares the parameters of successive runs to recompute only what a
- * change invalidates (docs/design.md 3.7).
+ * centerline tree" (docs/design.md "View"). Validate() names the parameter by its meaning (vr::ParameterName) and the
+ * bad value. The module logic compares the parameters of successive runs to recompute only what a change invalidates
+ * (docs/design.md "Module logic").
  *
  * \sa VesselReformationLogic
  * \ingroup VesselReformation

@@ -9,7 +9,7 @@
 
 namespace vr
 {
-/** Where BilateralDepthRelaxFilter runs (docs/design.md 3.7). */
+/** Where BilateralDepthRelaxFilter runs (docs/design.md "Module logic"). */
 enum class RelaxBackend
 {
   /** OpenCL when the device it would use is a GPU or an accelerator and works; on a CPU device (PoCL) the native
@@ -88,8 +88,8 @@ struct RelaxFilterChoice
   std::string Notice;
 };
 
-/** The one backend decision of the project (docs/design.md 3.7): cpu gives the CPU; the steady solver, which has no
- * OpenCL kernel, gives the CPU (with a notice when OpenCL was asked for by name); auto applies
+/** The one backend decision of the project (docs/design.md "Module logic"): cpu gives the CPU; the steady solver, which
+ * has no OpenCL kernel, gives the CPU (with a notice when OpenCL was asked for by name); auto applies
  * DecideAutoRelaxBackend(), asking \a query, and takes OpenCL only when \a openCL then makes a filter, else the CPU
  * with a notice saying why; opencl takes the filter \a openCL makes or throws vr::InputError naming why there is
  * none. */

@@ -47,9 +47,8 @@ struct StageTimes
   double OcclusionProfile{ 0.0 };
 };
 
-/** How many times each stage has run since the logic was made (docs/design.md 3.7's recompute rules are tested on
- * these).
- * \ingroup VesselReformation
+/** How many times each stage has run since the logic was made (docs/design.md "Module logic"'s recompute rules are
+ * tested on these). \ingroup VesselReformation
  */
 struct StageCounts
 {
@@ -112,8 +111,8 @@ struct ReformationOutputs
 };
 
 /** \class VesselReformationLogic
- * \brief The module logic of the multipath vessel reformation (docs/design.md 3.7), shaped like a 3D Slicer loadable
- * module's logic.
+ * \brief The module logic of the multipath vessel reformation (docs/design.md "Module logic"), shaped like a 3D Slicer
+ * loadable module's logic.
  *
  * It takes a volume node, the centerlines (a centerline node, or a segmentation node whose centerlines it extracts)
  * and a parameter object, converts the nodes to ITK through a vr::ReformationInputCache (vrNodeConversion.h, the one

@@ -1,7 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // CenterlineExtraction/N: itk::CenterlineExtractionFilter on an N^3 mask of a branching tree (1 mm voxels, five
 // generations of tubes: 63 sections); CenterlineExtraction_Plain/N: the plain reference (the same TEASAR on the
-// whole grid, see PlainCenterlineExtraction.h) on the same mask, for the ratio. docs/design.md 4: 256^3 in <= 2 s.
+// whole grid, see PlainCenterlineExtraction.h) on the same mask, for the ratio. docs/design.md "Numbers": 256^3 in <= 2
+// s.
 #include "PlainCenterlineExtraction.h"
 #include "vrTestSegmentations.h"
 

@@ -22,7 +22,7 @@ using vr::test::DepthImage;
 using vr::test::MaskImage;
 using RelaxFilter = itk::BilateralDepthRelaxFilter<DepthImage>;
 
-constexpr double Tolerance = 1e-4; // mm, docs/design.md 3.5
+constexpr double Tolerance = 1e-4; // mm, docs/design.md "Relaxation"
 
 using DepthMap = vr::test::PhantomDepthMap;
 

@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// BilateralDepthRelaxFilter against answers worked out by hand from docs/design.md 3.5 (Eq. 1):
+// BilateralDepthRelaxFilter against answers worked out by hand from docs/design.md "Relaxation" (Eq. 1):
 //   D'_p = ((1-w)|Omega| D_p + w sum R(D_p - D_q) D_q) / ((1-w)|Omega| + w sum R(D_p - D_q)), R(x) = exp(-a x^2).
 
 #include "itkBilateralDepthRelaxFilter.h"

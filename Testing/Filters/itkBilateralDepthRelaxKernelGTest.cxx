@@ -372,7 +372,7 @@ TEST(BilateralDepthRelaxKernel, PassesBetweenSynchronizationsChangeNoBitWithEver
   Kernel::SetInstructionSet("");
 }
 
-// The kernel's choice (docs/design.md 3.5): teams of up to 4 threads meet after every pass whatever the height
+// The kernel's choice (docs/design.md "Relaxation"): teams of up to 4 threads meet after every pass whatever the height
 // (measured on 2 cores: the blocks' row-by-row wavefront costs more there than the barriers it saves); larger teams
 // take band height / 16 passes, at least 1 and at most 16. References worked by hand from the rule.
 TEST(BilateralDepthRelaxKernel, KernelChoosesOnePassForSmallTeamsAndBlocksForLargeOnes)

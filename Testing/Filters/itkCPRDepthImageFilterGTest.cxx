@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// CPRDepthImageFilter against analytic cases (docs/design.md 3.2 and 3.4). Unless a test says otherwise the view looks
-// along v = LPS +y (theta = 0, up = +z), so a point (x, y, z) lands in column x + (W-1)/2 and row -z + (H-1)/2
-// at depth y, with C at the origin and 1 mm pixels.
+// CPRDepthImageFilter against analytic cases (docs/design.md "View" and "Depth"). Unless a test says otherwise the view
+// looks along v = LPS +y (theta = 0, up = +z), so a point (x, y, z) lands in column x + (W-1)/2 and row -z + (H-1)/2 at
+// depth y, with C at the origin and 1 mm pixels.
 
 #include "itkCPRCenterlineRasterizer.h"
 #include "itkCPRDepthImageFilter.h"
@@ -173,7 +173,7 @@ TEST(CPRDepthImageFilter, WhereVesselsCrossInProjectionTheNearerOneOwnsThePixel)
 TEST(CPRDepthImageFilter, NearestModeEqualsABruteForceVoronoiAssignment)
 {
   // Random polylines on a small anisotropic grid; the brute force compares every pixel with every centerline
-  // pixel in mm, ties to the smaller depth, then the smaller branch id (docs/design.md 3.4).
+  // pixel in mm, ties to the smaller depth, then the smaller branch id (docs/design.md "Depth").
   std::mt19937                           generator(5);
   std::uniform_real_distribution<double> coordinate(-14.0, 14.0);
   std::uniform_real_distribution<double> radius(0.5, 3.0);

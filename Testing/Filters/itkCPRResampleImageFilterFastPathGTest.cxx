@@ -23,8 +23,8 @@ using vr::test::DepthImage;
 using vr::test::VolumeImage;
 using ResampleFilter = itk::CPRResampleImageFilter<VolumeImage, DepthImage>;
 
-/** The CPR image as docs/design.md 3.6 defines it, one pixel and one slab sample at a time through ITK's interpolator;
- * outside the volume, its minimum. */
+/** The CPR image as docs/design.md "Resampling" defines it, one pixel and one slab sample at a time through ITK's
+ * interpolator; outside the volume, its minimum. */
 std::vector<float>
 ReferenceCPR(const VolumeImage *          volume,
              const DepthImage *           depth,

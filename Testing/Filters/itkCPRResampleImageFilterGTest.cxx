@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// CPRResampleImageFilter against analytic cases (docs/design.md 3.6): X = B(i, j) + d(i, j) v.
+// CPRResampleImageFilter against analytic cases (docs/design.md "Resampling"): X = B(i, j) + d(i, j) v.
 
 #include "itkCPRVectorHelpers.h"
 #include "itkCPRResampleImageFilter.h"

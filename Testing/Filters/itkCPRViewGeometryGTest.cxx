@@ -1,5 +1,5 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// CPRViewGeometry against docs/design.md 3.2, by hand.
+// CPRViewGeometry against docs/design.md "View", by hand.
 
 #include "itkCPRVectorHelpers.h"
 #include "itkCPRViewGeometry.h"
@@ -91,8 +91,8 @@ TEST(CPRViewGeometry, ZeroAngleLooksAlongPosteriorMadeOrthogonalToUp)
 
 TEST(CPRViewGeometry, UpNearThePosteriorAxisLooksAlongInferior)
 {
-  // docs/design.md 3.2: theta = 0 looks along P made orthogonal to up, or along I when up is within 10 degrees of the
-  // P axis. The two rules give different directions for an up with an x component, so both are checked.
+  // docs/design.md "View": theta = 0 looks along P made orthogonal to up, or along I when up is within 10 degrees of
+  // the P axis. The two rules give different directions for an up with an x component, so both are checked.
   auto orthogonalTo = [](const VectorType & axis, VectorType up)
   {
     up.Normalize();

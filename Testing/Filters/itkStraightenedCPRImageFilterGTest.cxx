@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// StraightenedCPRImageFilter and CrossSectionStackImageFilter against analytic tubes (docs/vessel-path.md 3-7): a
-// straight tube with a stenosis in a rotated, anisotropic volume, a helix and an S-curve, a tight U-turn that folds.
+// StraightenedCPRImageFilter and CrossSectionStackImageFilter against analytic tubes (docs/vessel-path.md,
+// "Straightened CPR" to "Folds"): a straight tube with a stenosis in a rotated, anisotropic volume, a helix and an
+// S-curve, a tight U-turn that folds.
 
 #include "itkCrossSectionStackImageFilter.h"
 #include "itkLinearInterpolateImageFunction.h"

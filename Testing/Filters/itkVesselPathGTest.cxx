@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// VesselPath and RotationMinimizingFrame (docs/vessel-path.md 1-2): topology from geometry on a hand-made tree,
-// the run-off phantom and VMTK's aorta; the frame against the rotation-minimising condition, a helix's analytic
-// frame, and a Frenet frame (computed here only) that flips at an inflection where ours does not.
+// VesselPath and RotationMinimizingFrame (docs/vessel-path.md "Path" and "Frame"): topology from geometry on a
+// hand-made tree, the run-off phantom and VMTK's aorta; the frame against the rotation-minimising condition, a helix's
+// analytic frame, and a Frenet frame (computed here only) that flips at an inflection where ours does not.
 
 #include "itkRotationMinimizingFrame.h"
 #include "itkRunoffPhantomImageSource.h"

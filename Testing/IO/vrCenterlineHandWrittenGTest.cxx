@@ -1,6 +1,6 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// Centerline files written by hand (issue 3, docs/design.md 3.3): each coordinate convention and format, then the bad
-// inputs, each a vr::InputError naming the file and what is wrong in it.
+// Centerline files written by hand (issue 3, docs/design.md "Centerline tree"): each coordinate convention and format,
+// then the bad inputs, each a vr::InputError naming the file and what is wrong in it.
 #include "vrCenterlineIOTestSupport.h"
 
 namespace

@@ -1,8 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// Centerline readers and writers (issue 3, docs/design.md 3.3): real VMTK data, round trips through every format,
-// hand-written files in each coordinate convention, and the bad inputs.
-// This file: real data and round trips. Hand-written files and bad input are in vrCenterlineHandWrittenGTest.cxx,
-// the logic's vtkPolyData path in vrCenterlinePolyDataGTest.cxx; what they share, in vrCenterlineIOTestSupport.h.
+// Centerline readers and writers (issue 3, docs/design.md "Centerline tree"): real VMTK data, round trips through every
+// format, hand-written files in each coordinate convention, and the bad inputs. This file: real data and round trips.
+// Hand-written files and bad input are in vrCenterlineHandWrittenGTest.cxx, the logic's vtkPolyData path in
+// vrCenterlinePolyDataGTest.cxx; what they share, in vrCenterlineIOTestSupport.h.
 #include "vrCenterlineIOTestSupport.h"
 
 namespace

@@ -1,8 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// The module logic: nodes to ITK (RAS <-> LPS), the recompute rules of docs/design.md 3.7, warnings, parameter checks.
-// This file: the recompute rules, abort, progress, the fit of the centerlines in the volume. The backend choice and
-// the parameters are in VesselReformationLogicParametersGTest.cxx, node conversion and the cut surface in
-// VesselReformationLogicConversionGTest.cxx; what they share, in vrLogicTestFixture.h.
+// The module logic: nodes to ITK (RAS <-> LPS), the recompute rules of docs/design.md "Module logic", warnings,
+// parameter checks. This file: the recompute rules, abort, progress, the fit of the centerlines in the volume. The
+// backend choice and the parameters are in VesselReformationLogicParametersGTest.cxx, node conversion and the cut
+// surface in VesselReformationLogicConversionGTest.cxx; what they share, in vrLogicTestFixture.h.
 #include "vrLogicTestFixture.h"
 
 namespace

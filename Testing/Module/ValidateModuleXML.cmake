@@ -1,7 +1,8 @@
 # Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 # Validates a command-line module's --xml description against CTK's schema with xmllint, as MITK's command-line
 # module support (CTK's ctkCmdLineModuleXmlValidator) would, and checks that the validation can fail: the same
-# description with one parameter's description and label in docs/design.md 3.8's old order must be rejected.
+# description with one parameter's description and label in the old order (docs/design.md, "Command-line modules")
+# must be rejected.
 # Run by CTest: cmake -DMODULE=<executable> -DSCHEMA=<ctkCmdLineModule.xsd> -DXMLLINT=<xmllint> -DWORK_DIR=<dir> -P this
 # An empty SCHEMA takes the environment's VR_CTK_SCHEMA. Without a schema the check prints "SKIPPED: no CTK schema"
 # with the reason, which CTest reports as skipped (SKIP_REGULAR_EXPRESSION): the project does not ship CTK's schema.

@@ -168,9 +168,9 @@ TEST_P(ModuleXMLTest, IsWellFormedAndFollowsTheElementOrder)
   EXPECT_FALSE(std::string(vr::ModuleDescription::Contributors).empty());
 
   // Inside a parameter, CTK's schema (paramType and its extensions) fixes the order: name, longflag or index,
-  // description, label, default, channel, then the type's own elements or constraints. docs/design.md 3.8 had label
-  // before description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the whole schema with
-  // xmllint.
+  // description, label, default, channel, then the type's own elements or constraints. docs/design.md "Command-line
+  // modules" had label before description; the schema wins (issue 12). ModuleXMLValidatesAgainstCTKSchema checks the
+  // whole schema with xmllint.
   const std::map<std::string, int> rank = { { "name", 0 },        { "longflag", 1 }, { "index", 1 },
                                             { "description", 2 }, { "label", 3 },    { "default", 4 },
                                             { "channel", 5 },     { "element", 6 },  { "constraints", 6 } };

@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The OpenCL variant of BilateralDepthRelaxFilter against the CPU filter and against hand-worked answers
-// (docs/design.md 3.5, issue 4). Tests that need a device are skipped, with the reason, when no OpenCL device exists.
+// (docs/design.md "Relaxation", issue 4). Tests that need a device are skipped, with the reason, when no OpenCL device
+// exists.
 #include "itkBilateralDepthRelaxFilter.h"
 #include "itkCPRViewGeometry.h"
 #include "itkOpenCLBilateralDepthRelaxFilter.h"
@@ -30,7 +31,7 @@ using vr::test::PhantomDepthMap;
 using CPUFilter = itk::BilateralDepthRelaxFilter<DepthImage>;
 using OpenCLFilter = itk::OpenCLBilateralDepthRelaxFilter;
 
-constexpr double Tolerance = 1e-4; // mm, docs/design.md 3.5
+constexpr double Tolerance = 1e-4; // mm, docs/design.md "Relaxation"
 
 struct Parameters
 {

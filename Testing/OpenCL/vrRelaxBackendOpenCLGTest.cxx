@@ -1,6 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// The relax backend seam with OpenCL built in (docs/design.md 3.7): auto uses OpenCL when a device works and falls back
-// to the CPU with a notice saying why; an explicit opencl without a usable device is an error saying what exists.
+// The relax backend seam with OpenCL built in (docs/design.md "Module logic"): auto uses OpenCL when a device works and
+// falls back to the CPU with a notice saying why; an explicit opencl without a usable device is an error saying what
+// exists.
 #include "itkOpenCLBilateralDepthRelaxFilter.h"
 #include "vrInputError.h"
 #include "vrOpenCLDevices.h"

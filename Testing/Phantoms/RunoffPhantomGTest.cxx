@@ -142,8 +142,8 @@ TEST(RunoffPhantom, VolumeShowsLumenBoneTissueAndAir)
   EXPECT_LT(muscle, 150.0f);
 }
 
-// docs/design.md 4 / issue 2: at 512 x 1024 with 500 iterations, w = 1, a = 0.5, the small seams (steps below 2 mm
-// between free neighbours) shrink by at least 90 % (median) and the jumps above 20 mm keep at least 95 %; the
+// docs/design.md "Numbers" / issue 2: at 512 x 1024 with 500 iterations, w = 1, a = 0.5, the small seams (steps below 2
+// mm between free neighbours) shrink by at least 90 % (median) and the jumps above 20 mm keep at least 95 %; the
 // isotropic run (a = 0) smears the large jumps, so the range kernel is what keeps them.
 TEST(RunoffPhantom, BilateralRelaxationRemovesSmallSeamsAndKeepsLargeJumps)
 {

@@ -7,8 +7,9 @@
 
 namespace vr::test
 {
-/** The plain reference of BilateralDepthRelaxFilter: Eq. 1 of docs/design.md 3.5 evaluated exactly as written, in
- * double, one pixel and one neighbour at a time, written independently of the fast kernel to check it and to time it.
+/** The plain reference of BilateralDepthRelaxFilter: Eq. 1 of docs/design.md "Relaxation" evaluated exactly as written,
+ * in double, one pixel and one neighbour at a time, written independently of the fast kernel to check it and to time
+ * it.
  *
  *   D'_p = ((1 - w) |Omega| D_p + w sum_q R(D_p - D_q) D_q) / ((1 - w) |Omega| + w sum_q R(D_p - D_q)),
  *   R(x) = exp(-a x^2), and R = 0 when a x^2 > -ln(FLT_MIN) (the filter's underflow rule).

@@ -61,8 +61,8 @@ PixelsOf(const TImage * image)
   return std::vector<typename TImage::PixelType>(image->GetBufferPointer(), image->GetBufferPointer() + count);
 }
 
-/** Steps in a depth map between 4-neighbours that are both free (docs/design.md 3.5's seams). A pair (p, q) is a step
- * when |D_q - D_p| >= minimum and the differences of the pairs beside it in the same direction are at most a
+/** Steps in a depth map between 4-neighbours that are both free (docs/design.md "Relaxation"'s seams). A pair (p, q) is
+ * a step when |D_q - D_p| >= minimum and the differences of the pairs beside it in the same direction are at most a
  * quarter of it: a jump, not part of a slope. */
 struct DepthStep
 {

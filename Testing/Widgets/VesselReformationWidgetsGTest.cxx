@@ -385,8 +385,8 @@ TEST_F(WidgetsTest, TheHoverReadoutAtAPixelEqualsTheLogicsOutputsThere)
   pixels.emplace_back(width - 1, height - 1);
   pixels.emplace_back(63, 128);
 
-  // The independent reference for the position: docs/design.md 3.2's B(i, j) + d v from the view's C, u, v and up, in
-  // LPS, then RAS by negating x and y.
+  // The independent reference for the position: docs/design.md "View"'s B(i, j) + d v from the view's C, u, v and up,
+  // in LPS, then RAS by negating x and y.
   const itk::CPRViewGeometry & view = reference.View;
   QWidget *                    target = Window().GetCPRView()->GetRenderWidget();
   for (const auto & [i, j] : pixels)

@@ -149,7 +149,7 @@ TraverseSegmentCells(const CPRProjectedPoint & a,
 }
 
 /** \class CPRCenterlinePixels
- * \brief The centerline pixels of a view (docs/design.md 3.4, step 1), row-major W x H.
+ * \brief The centerline pixels of a view (docs/design.md "Depth", step 1), row-major W x H.
  *
  * Owner is the branch id (0 where no centerline passes), Depth the depth along v in mm and Radius the lumen
  * radius in mm (NaN when the tree has no radii), both interpolated along the projected segment.

@@ -33,8 +33,8 @@ struct CPRDepthResult
   const std::vector<CPRBranchOcclusion> * Occlusion;
 };
 
-/** Rasterises \a tree into \a view (centerline pixels, docs/design.md 3.4 step 1), then assigns every pixel its depth,
- * owner and fixed flag by \a mode; \a rasterized is called in between. Creates \a workspace when null. The
+/** Rasterises \a tree into \a view (centerline pixels, docs/design.md "Depth" step 1), then assigns every pixel its
+ * depth, owner and fixed flag by \a mode; \a rasterized is called in between. Creates \a workspace when null. The
  * non-template work of every CPRDepthImageFilter, compiled once. In Visibility mode \a fixLumen applies to the
  * branches with radii; the caller of the other modes passes it only when every branch has them. */
 CPRDepthResult

@@ -15,7 +15,7 @@
 namespace itk
 {
 /** \class CPRDepthImageFilter
- * \brief Computes the multipath CPR depth map of a centerline tree for a view (docs/design.md 3.4).
+ * \brief Computes the multipath CPR depth map of a centerline tree for a view (docs/design.md "Depth").
  *
  * Four outputs on the view's image grid: the depth along the view direction v in mm (output 0), the fixed
  * mask (output 1, 1 = fixed: centerline pixels and, with FixLumen, pixels within the owner's lumen radius), the

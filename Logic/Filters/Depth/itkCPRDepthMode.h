@@ -6,7 +6,7 @@
 
 namespace itk
 {
-/** How the pixels away from the centerlines take their depth (docs/design.md 3.4).
+/** How the pixels away from the centerlines take their depth (docs/design.md "Depth").
  * \ingroup VesselReformation */
 enum class CPRDepthMode
 {

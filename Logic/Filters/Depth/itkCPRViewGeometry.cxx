@@ -75,7 +75,7 @@ ReadNumbers(const MetaDataDictionary & dictionary, const char * key, unsigned in
 }
 
 /** The theta = 0 view direction for a given up: P made orthogonal to up, or I when up is within 10 degrees
- * of the P axis (docs/design.md 3.2). */
+ * of the P axis (docs/design.md "View"). */
 VectorType
 ZeroAngleViewDirection(const VectorType & up)
 {

@@ -102,7 +102,7 @@ public:
   itkGetConstMacro(NumberOfIterations, unsigned int);
 
   /** Jacobi passes each thread makes on its band of rows before the threads synchronize (temporal blocking,
-   * docs/design.md 3.5): the rows next to the neighbours' bands are computed again rather than exchanged after
+   * docs/design.md "Relaxation"): the rows next to the neighbours' bands are computed again rather than exchanged after
    * every pass. It changes the speed only, never a bit of the result. 0 (the default) leaves the choice to the
    * kernel (BilateralDepthRelaxKernel::ChoosePassesBetweenSynchronizations: 1 for teams of up to 4 threads, blocks
    * for larger teams); 1 synchronizes after every pass with the plain row sweep. Float images only (the generic

@@ -408,7 +408,7 @@ BilateralDepthRelaxKernel::Relax(const float *            depth,
   // One pass a block: each member sweeps a fixed band of rows; after the barrier every member sees the whole new
   // image. Member 0 is the calling thread and reports progress; a progress callback that throws stops every
   // member after the same barrier. The code of the kernel before blocks, kept as it was for small teams (2 cores:
-  // the blocked path's row-by-row wavefront costs more per row than it saves in barriers, docs/design.md 3.5).
+  // the blocked path's row-by-row wavefront costs more per row than it saves in barriers, docs/design.md "Relaxation").
   auto sweepEveryPass = [&](unsigned int member)
   {
     const std::size_t   rowBegin = height * member / team;

@@ -115,7 +115,7 @@ public:
   static constexpr unsigned int LargestTeamWithoutBlocks = 4;
 
   /** The kernel's choice of passes between synchronizations for a team of \a team threads on \a height rows
-   * (docs/design.md 3.5): 1 (a barrier after every pass, the plain row sweep) for teams of up to
+   * (docs/design.md "Relaxation"): 1 (a barrier after every pass, the plain row sweep) for teams of up to
    * LargestTeamWithoutBlocks, where the blocked row-by-row wavefront costs more than the barriers it saves (measured
    * on 2 cores); for larger teams the band height / 16, between 1 and 16. */
   static unsigned int

@@ -6,7 +6,7 @@
 
 namespace itk
 {
-/** How BilateralDepthRelaxFilter relaxes the depth map (docs/design.md 3.5).
+/** How BilateralDepthRelaxFilter relaxes the depth map (docs/design.md "Relaxation").
  * \ingroup VesselReformation */
 enum class BilateralDepthRelaxSolver
 {

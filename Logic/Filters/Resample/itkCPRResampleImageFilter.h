@@ -12,7 +12,7 @@ namespace itk
 {
 
 /** \class CPRResampleImageFilter
- * \brief Samples a volume along the cut surface of a CPR depth map (docs/design.md 3.6).
+ * \brief Samples a volume along the cut surface of a CPR depth map (docs/design.md "Resampling").
  *
  * Pixel (i, j) of the output is the volume at X = B(i, j) + d(i, j) v, with B, v from the view (CPRViewGeometry)
  * and d the depth image's value, interpolated linearly (default), nearest or with a cubic B-spline. Points

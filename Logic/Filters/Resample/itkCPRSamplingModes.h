@@ -7,8 +7,8 @@
 namespace itk
 {
 
-/** How the volume is interpolated at a sampled point (docs/design.md 3.6): the tree CPR and the path view's filters
- * take the same modes. */
+/** How the volume is interpolated at a sampled point (docs/design.md "Resampling"): the tree CPR and the path view's
+ * filters take the same modes. */
 enum class CPRInterpolationMode
 {
   Linear,

@@ -19,9 +19,9 @@ namespace itk::detail
 {
 
 /** \class CPRVolumeSampler
- * \brief The sampling every reformation filter shares (docs/design.md 3.6, docs/vessel-path.md 6): a volume read at
- * continuous indices, linearly (straight from the buffer), nearest or by cubic B-spline, and the samples of a slab
- * combined by MIP, MinIP or mean, samples outside the volume left out.
+ * \brief The sampling every reformation filter shares (docs/design.md "Resampling", docs/vessel-path.md "Sampling"): a
+ * volume read at continuous indices, linearly (straight from the buffer), nearest or by cubic B-spline, and the samples
+ * of a slab combined by MIP, MinIP or mean, samples outside the volume left out.
  *
  * Prepare() once per update (not thread-safe); then Sample() and Evaluate() from any thread.
  */
@@ -71,9 +71,9 @@ VisitStoredVolume(TImageBase * volume, TFunction && function)
 }
 
 /** \class CPRVolumeSampler
- * \brief The sampling every reformation filter shares (docs/design.md 3.6, docs/vessel-path.md 6): a volume read at
- * continuous indices, linearly (straight from the buffer), nearest or by cubic B-spline, and the samples of a slab
- * combined by MIP, MinIP or mean, samples outside the volume left out.
+ * \brief The sampling every reformation filter shares (docs/design.md "Resampling", docs/vessel-path.md "Sampling"): a
+ * volume read at continuous indices, linearly (straight from the buffer), nearest or by cubic B-spline, and the samples
+ * of a slab combined by MIP, MinIP or mean, samples outside the volume left out.
  *
  * The volume is read in its stored pixel type; an intensity rescale other than the identity (CPRIntensityRescale) is
  * applied to every value read: to each of the eight voxels of a linear sample before they are combined, to the voxel

@@ -16,7 +16,7 @@ namespace itk
 
 /** \class CrossSectionStackImageFilter
  * \brief The planes perpendicular to a vessel path every SectionStep mm, stacked into a 3D image (u, v, s): the
- * "straightened volume" (docs/vessel-path.md 5).
+ * "straightened volume" (docs/vessel-path.md "Cross-section stack").
  *
  * Voxel (i, j, k) samples C(s_k) + (i - (U-1)/2) su Lateral(s_k) + (j - (V-1)/2) sv Up(s_k), s_k = k SectionStep,
  * with the rotation-minimising frame (RotationMinimizingFrame) started from the view and turned by RollAngle degrees:

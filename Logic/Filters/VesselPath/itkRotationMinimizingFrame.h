@@ -10,7 +10,7 @@ namespace itk
 {
 
 /** \class RotationMinimizingFrame
- * \brief The sections of a vessel path every step mm with a rotation-minimising frame (docs/vessel-path.md 2).
+ * \brief The sections of a vessel path every step mm with a rotation-minimising frame (docs/vessel-path.md "Frame").
  *
  * The frame is carried along the path by double reflection (Wang, Juettler, Zheng, Liu, "Computation of rotation
  * minimizing frames", ACM TOG 27(1), 2008): it turns with the tangent and never about it, so it does not spin at an

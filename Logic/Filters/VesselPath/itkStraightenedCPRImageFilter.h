@@ -16,7 +16,7 @@
 namespace itk
 {
 
-/** How the rows of a single-vessel CPR follow the path (docs/vessel-path.md 3-4). */
+/** How the rows of a single-vessel CPR follow the path (docs/vessel-path.md "Straightened CPR" and "Stretched CPR"). */
 enum class VesselPathCPRMode
 {
   /** Rows along the rotation-minimising frame's Lateral, one every PixelSpacing mm of arc length. */
@@ -29,8 +29,8 @@ std::ostream &
 operator<<(std::ostream & os, VesselPathCPRMode mode);
 
 /** \class StraightenedCPRImageFilter
- * \brief The straightened or stretched CPR of one vessel path (docs/vessel-path.md 3-7): x = offset across the vessel
- * (mm, the path in the middle column), y = arc length (mm).
+ * \brief The straightened or stretched CPR of one vessel path (docs/vessel-path.md, "Straightened CPR" to "Folds"): x =
+ * offset across the vessel (mm, the path in the middle column), y = arc length (mm).
  *
  * Straightened: pixel (i, j) samples C(s_j) + x_i Lateral(s_j), s_j = j PixelSpacing, with the rotation-minimising
  * frame (RotationMinimizingFrame) started from the view and turned by RollAngle degrees. Stretched: pixel (i, j)

@@ -260,7 +260,7 @@ StraightenedCPRImageFilter<TVolumeImage, TOutputImage>::GenerateOutputInformatio
   }
   m_Columns = static_cast<SizeValueType>(columns);
 
-  // Folds: x (K . Lateral) >= 1 (docs/vessel-path.md 7). The radius of curvature bounds it at any roll.
+  // Folds: x (K . Lateral) >= 1 (docs/vessel-path.md "Folds"). The radius of curvature bounds it at any roll.
   const std::vector<VectorType> curvature = RotationMinimizingFrame::CurvatureVectors(m_Sections);
   m_LateralCurvature.assign(m_Sections.size(), 0.0);
   double largestCurvature = 0.0;

@@ -12,8 +12,8 @@ namespace itk
 {
 
 /** \class VesselPath
- * \brief One vessel read from the tree's root to a chosen branch's far end (docs/vessel-path.md 1), parametrised by
- * arc length s in mm, LPS.
+ * \brief One vessel read from the tree's root to a chosen branch's far end (docs/vessel-path.md "Path"), parametrised
+ * by arc length s in mm, LPS.
  *
  * The branches' topology comes from their geometry, not from their order or ids: a branch's parent is the other
  * branch whose polyline passes nearest to the branch's first point, when that distance is within
