@@ -14,7 +14,7 @@ through others. And each folder (a "room") may include only the rooms below it:
                                           Resample; Lumen on VesselPath and what it builds on
     Logic/Phantoms                        itself, the filters
     Logic/Nodes, OpenCL                   themselves, the filters, Common
-    Logic/IO, Logic/IO/DICOM              themselves, each other, Nodes, the filters, Common
+    Logic/IO and its subfolders           themselves, each other, Nodes, the filters, Common
     Logic/Shared, Logic/Display           themselves, IO and below
     Logic/Centerlines                     itself, Shared, IO and below
     Logic/Inputs                          itself, Centerlines, Display, Shared, Phantoms, IO and below
@@ -46,7 +46,8 @@ def _filters(*concerns):
 
 
 FILTERS = _filters('Threading', 'Centerlines', 'Depth', 'Relax', 'Relax/Steady', 'Resample', 'VesselPath', 'Lumen')
-BELOW_IO = {'Logic/IO', 'Logic/IO/DICOM', 'Logic/Nodes', 'Logic/Common'} | FILTERS
+IO = {'Logic/IO', 'Logic/IO/DICOM', 'Logic/IO/Volumes', 'Logic/IO/Centerlines', 'Logic/IO/Outputs'}
+BELOW_IO = IO | {'Logic/Nodes', 'Logic/Common'} | FILTERS
 LOGIC_BASE = {'Logic/Inputs', 'Logic/Centerlines', 'Logic/Display', 'Logic/Shared', 'Logic/Phantoms'} | BELOW_IO
 LOGIC = LOGIC_BASE | {'Logic/TreeReformation', 'Logic/VesselPath', 'OpenCL'}
 WIDGETS = {'Widgets/Common', 'Widgets/Tree', 'Widgets/VesselPath'}
@@ -63,8 +64,7 @@ ALLOWED = {
     'Logic/Phantoms': {'Logic/Phantoms'} | FILTERS,
     'Logic/Nodes': {'Logic/Nodes', 'Logic/Common'} | FILTERS,
     'OpenCL': {'OpenCL', 'Logic/Common'} | FILTERS,
-    'Logic/IO': BELOW_IO,
-    'Logic/IO/DICOM': BELOW_IO,
+    **{folder: BELOW_IO for folder in IO},
     'Logic/Shared': {'Logic/Shared'} | BELOW_IO,
     'Logic/Display': {'Logic/Display'} | BELOW_IO,
     'Logic/Centerlines': {'Logic/Centerlines', 'Logic/Shared'} | BELOW_IO,
