@@ -11,6 +11,7 @@
 #include "vrNodeConversion.h"
 #include "vrSecondaryCaptureIO.h"
 #include "vrStagedOutputs.h"
+#include "vrWindowLevel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,6 +6,7 @@
 #include "vrAtomicOutput.h"
 #include "vrImageIO.h"
 #include "vrInputError.h"
+#include "vrWindowLevel.h"
 
 #include <vtkImageData.h>
 #include <vtkNew.h>

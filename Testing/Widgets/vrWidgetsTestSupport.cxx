@@ -2,6 +2,7 @@
 #include "vrWidgetsTestSupport.h"
 
 #include "vrImageIO.h"
+#include "vrWindowLevel.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -1,8 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 #include "vrGreyImage.h"
 
-#include <algorithm>
-#include <cmath>
+#include "vrWindowLevel.h"
 
 namespace vr
 {
@@ -11,18 +10,10 @@ namespace
 QImage
 Grey(const float * pixels, int width, int height, double window, double level)
 {
-  QImage       image(width, height, QImage::Format_Grayscale8);
-  const double low = level - 0.5 * window;
-  const double scale = 255.0 / std::max(window, 1e-6);
+  QImage image(width, height, QImage::Format_Grayscale8);
   for (int row = 0; row < height; ++row)
   {
-    uchar *       line = image.scanLine(row);
-    const float * values = pixels + static_cast<std::size_t>(row) * width;
-    for (int column = 0; column < width; ++column)
-    {
-      const double value = std::isfinite(values[column]) ? (values[column] - low) * scale : 0.0;
-      line[column] = static_cast<uchar>(std::clamp(value, 0.0, 255.0));
-    }
+    WindowLevelToBytes(pixels + static_cast<std::size_t>(row) * width, width, window, level, image.scanLine(row));
   }
   return image;
 }

@@ -9,7 +9,7 @@
 namespace vr
 {
 /** The CPR image \a image through window and level as an 8-bit grey QImage, row 0 at the top (the logic's row 0):
- * display only, the values are the logic's.
+ * display only, the values are the logic's. Each grey is vr::WindowLevelToByte's, as in a saved PNG.
  * \ingroup VesselReformation
  */
 QImage

@@ -5,6 +5,7 @@
 #include "vrCenterlineOverlay.h"
 #include "vrFilterSettingsText.h"
 #include "vrOpenGLRenderer.h"
+#include "vrWindowLevel.h"
 
 #include <QEvent>
 #include <QKeyEvent>
@@ -17,6 +18,7 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkImageActor.h>
 #include <vtkImageData.h>
@@ -63,6 +65,35 @@ Wrap(vtkImageData * target, VolumeNode * node, const double spacing[2], const do
   target->SetSpacing(spacing[0], spacing[1], 1.0);
 }
 
+/** \a values through window/level into \a grey, on the same grid: the bytes vr::WindowLevelToByte makes, which a saved
+ * PNG holds too. The image actor shows them as they are (window 255, level 127.5), so that the screen and the PNG
+ * agree to the grey level; VTK's own window/level of the float image rounds otherwise. */
+void
+MapToGrey(vtkImageData * values, vtkImageData * grey, double window, double level)
+{
+  vtkDataArray * scalars = values->GetPointData() ? values->GetPointData()->GetScalars() : nullptr;
+  if (scalars == nullptr)
+  {
+    grey->Initialize();
+    return;
+  }
+  grey->SetExtent(values->GetExtent());
+  grey->SetOrigin(values->GetOrigin());
+  grey->SetSpacing(values->GetSpacing());
+  grey->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+  auto *          bytes = static_cast<unsigned char *>(grey->GetScalarPointer());
+  const vtkIdType count = scalars->GetNumberOfTuples();
+  if (auto * floats = vtkFloatArray::SafeDownCast(scalars))
+  {
+    WindowLevelToBytes(floats->GetPointer(0), static_cast<std::size_t>(count), window, level, bytes);
+    return;
+  }
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    bytes[k] = WindowLevelToByte(scalars->GetComponent(k, 0), window, level);
+  }
+}
+
 void
 ConfigureOverlay(vtkImageActor * actor, vtkLookupTable * table, double opacity)
 {
@@ -94,7 +125,9 @@ Format(double value, int decimals)
 /** One image of the comparison (filtered or unfiltered) with its overlays. */
 struct CPRView::Pane
 {
+  /** The logic's CPR (its float pixels) and what the image actor draws: those pixels through window/level. */
   vtkNew<vtkImageData>  Image;
+  vtkNew<vtkImageData>  Grey;
   vtkNew<vtkImageData>  Depth;
   vtkNew<vtkImageData>  Mask;
   vtkNew<vtkImageData>  Labels;
@@ -108,11 +141,14 @@ struct CPRView::Pane
 
   Pane()
   {
-    ImageActor->GetMapper()->SetInputData(Image);
+    ImageActor->GetMapper()->SetInputData(Grey);
     DepthActor->GetMapper()->SetInputData(Depth);
     MaskActor->GetMapper()->SetInputData(Mask);
     LabelActor->GetMapper()->SetInputData(Labels);
     ImageActor->GetProperty()->SetInterpolationTypeToNearest();
+    // The identity on bytes: the grey values are MapToGrey's.
+    ImageActor->GetProperty()->SetColorWindow(255.0);
+    ImageActor->GetProperty()->SetColorLevel(127.5);
     Caption->GetTextProperty()->SetFontSize(15);
     Caption->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
     Caption->GetTextProperty()->ShadowOn();
@@ -297,6 +333,7 @@ CPRView::SetResult(std::shared_ptr<const ReformationResult> result)
   Wrap(m_Unfiltered->Depth, outputs.Depth, m_Spacing, m_Origin);
   Wrap(m_Unfiltered->Mask, outputs.FixedMask, m_Spacing, m_Origin);
   Wrap(m_Unfiltered->Labels, outputs.OwnerLabels, m_Spacing, m_Origin);
+  UpdateGrey();
   if (newCenterlines)
   {
     UpdateCenterlines();
@@ -323,13 +360,18 @@ CPRView::SetWindowLevel(double window, double level)
   }
   m_Window = window;
   m_Level = level;
-  for (Pane * pane : { m_Filtered.get(), m_Unfiltered.get() })
-  {
-    pane->ImageActor->GetProperty()->SetColorWindow(window);
-    pane->ImageActor->GetProperty()->SetColorLevel(level);
-  }
+  UpdateGrey();
   UpdateAnnotation();
   Render();
+}
+
+void
+CPRView::UpdateGrey()
+{
+  for (Pane * pane : { m_Filtered.get(), m_Unfiltered.get() })
+  {
+    MapToGrey(pane->Image, pane->Grey, m_Window, m_Level);
+  }
 }
 
 void

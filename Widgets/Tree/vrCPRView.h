@@ -64,9 +64,9 @@ struct CPROverlays
 };
 
 /** \class CPRView
- * \brief The 2D view of a reformation: the CPR image through window/level (a VTK image actor), overlays, the
- * unfiltered/filtered comparison, and a readout of the pixel under the mouse. It displays the logic's outputs and
- * computes nothing.
+ * \brief The 2D view of a reformation: the CPR image through window/level (vr::WindowLevelToByte, the mapping of a
+ * saved PNG; a VTK image actor draws the bytes), overlays, the unfiltered/filtered comparison, and a readout of the
+ * pixel under the mouse. It displays the logic's outputs and computes nothing.
  *
  * Mouse:
  * - left-drag horizontally rotates the view about its up axis: rotationDragged() reports
@@ -153,7 +153,8 @@ public:
    * the unfiltered image. */
   QPointF
   WidgetPositionOfPixel(double column, double row, bool unfiltered) const;
-  /** \return the filtered (or unfiltered) image data the image actor draws: the logic's output's pixels. */
+  /** \return the filtered (or unfiltered) image data shown: the logic's output's pixels, which the image actor draws
+   * through window/level as vr::WindowLevelToByte maps them (the bytes a saved PNG holds). */
   vtkImageData *
   GetDisplayedImage(bool unfiltered) const;
   /** \return the widget that renders (mouse events go there). */
@@ -239,6 +240,9 @@ private:
 
   void
   UpdatePanes();
+  /** Maps both images through the window and level into the bytes their actors draw. */
+  void
+  UpdateGrey();
   void
   UpdateOverlays();
   void

@@ -7,16 +7,12 @@
 #include <QMouseEvent>
 #include <QPainter>
 
-#include <algorithm>
-
 namespace vr
 {
 StraightenedCPRView::StraightenedCPRView(QWidget * parent)
-  : QWidget(parent)
+  : GreyImageView(parent)
 {
-  setFocusPolicy(Qt::StrongFocus);
   setMinimumSize(100, 120);
-  setAttribute(Qt::WA_OpaquePaintEvent);
   setToolTip(tr("The straightened CPR of the vessel path: left-drag rolls it about the path, right-click puts the "
                 "cross-section at that row, %1.")
                .arg(SectionStepper::Help()));
@@ -27,20 +23,25 @@ void
 StraightenedCPRView::SetImage(DepthImageType::ConstPointer image, double window, double level)
 {
   m_Image = image;
-  m_Window = window;
-  m_Level = level;
-  m_Grey = GreyImage(m_Image.GetPointer(), m_Window, m_Level);
-  update();
+  Refresh(window, level);
 }
 
-void
-StraightenedCPRView::SetWindowLevel(double window, double level)
+QImage
+StraightenedCPRView::MakeGreyImage(double window, double level) const
 {
-  if (window == m_Window && level == m_Level)
+  return GreyImage(m_Image.GetPointer(), window, level);
+}
+
+QSizeF
+StraightenedCPRView::ImageExtent() const
+{
+  if (!m_Image)
   {
-    return;
+    return QSizeF();
   }
-  SetImage(m_Image, window, level);
+  const auto spacing = m_Image->GetSpacing();
+  const auto size = m_Image->GetLargestPossibleRegion().GetSize();
+  return QSizeF(size[0] * spacing[0], size[1] * spacing[1]);
 }
 
 void
@@ -50,64 +51,30 @@ StraightenedCPRView::SetPositionRow(double row)
   update();
 }
 
-void
-StraightenedCPRView::SetCaption(const QString & caption)
-{
-  m_Caption = caption;
-  update();
-}
-
-QRectF
-StraightenedCPRView::ImageRect() const
-{
-  if (!m_Image)
-  {
-    return QRectF();
-  }
-  // Square millimetres on screen: the image's own spacing sets the aspect.
-  const auto   spacing = m_Image->GetSpacing();
-  const double width = m_Grey.width() * spacing[0];
-  const double height = m_Grey.height() * spacing[1];
-  const double margin = 4.0;
-  const double top = 22.0;
-  const double scale = std::min((this->width() - 2.0 * margin) / width, (this->height() - top - margin) / height);
-  const QSizeF size(width * scale, height * scale);
-  return QRectF(QPointF(0.5 * (this->width() - size.width()), top), size);
-}
-
 double
 StraightenedCPRView::WidgetYOfRow(double row) const
 {
   const QRectF rect = ImageRect();
-  return m_Grey.height() > 0 ? rect.top() + (row + 0.5) * rect.height() / m_Grey.height() : 0.0;
+  const int    rows = GetDisplayedImage().height();
+  return rows > 0 ? rect.top() + (row + 0.5) * rect.height() / rows : 0.0;
 }
 
 double
 StraightenedCPRView::RowAtWidgetY(double y) const
 {
   const QRectF rect = ImageRect();
-  return rect.height() > 0.0 ? (y - rect.top()) * m_Grey.height() / rect.height() - 0.5 : 0.0;
+  return rect.height() > 0.0 ? (y - rect.top()) * GetDisplayedImage().height() / rect.height() - 0.5 : 0.0;
 }
 
 void
-StraightenedCPRView::paintEvent(QPaintEvent *)
+StraightenedCPRView::PaintOverlay(QPainter & painter, const QRectF & target)
 {
-  QPainter painter(this);
-  painter.fillRect(rect(), QColor(20, 20, 26));
-  if (m_Grey.isNull())
-  {
-    return;
-  }
-  const QRectF target = ImageRect();
-  painter.drawImage(target, m_Grey);
   if (m_PositionRow >= 0.0)
   {
     const double y = WidgetYOfRow(m_PositionRow);
     painter.setPen(QPen(QColor(255, 60, 255), 1.5));
     painter.drawLine(QPointF(target.left() - 3.0, y), QPointF(target.right() + 3.0, y));
   }
-  painter.setPen(Qt::white);
-  painter.drawText(QRectF(4.0, 2.0, width() - 8.0, 18.0), Qt::AlignLeft | Qt::AlignVCenter, m_Caption);
 }
 
 void

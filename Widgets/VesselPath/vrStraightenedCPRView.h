@@ -2,19 +2,18 @@
 #ifndef vrStraightenedCPRView_h
 #define vrStraightenedCPRView_h
 
+#include "vrGreyImageView.h"
 #include "vrImageTypes.h"
 
-#include <QImage>
 #include <QPointF>
-#include <QRectF>
-#include <QWidget>
 
 namespace vr
 {
 /** \class StraightenedCPRView
  * \brief One vessel's straightened (or stretched) CPR as the logic made it (x across the vessel, y along the path,
  * row 0 at the top), through window and level, with the cross-section position as a line across it. It displays
- * and computes nothing; QPainter draws it (a few hundred rows: cheaper than a GL context of its own under Mesa).
+ * and computes nothing; QPainter draws it (a few hundred rows: cheaper than a GL context of its own under Mesa), as
+ * vr::GreyImageView lays out its image, caption and window/level.
  *
  * - left-drag horizontally rolls the image about the path: rollDragged() reports DegreesPerPixel per pixel;
  * - right-click or right-drag puts the cross-section at the row under the mouse (rowPicked());
@@ -23,7 +22,7 @@ namespace vr
  * \sa VesselPathPanel
  * \ingroup VesselReformation
  */
-class StraightenedCPRView : public QWidget
+class StraightenedCPRView : public GreyImageView
 {
   Q_OBJECT
 
@@ -36,8 +35,6 @@ public:
   /** Shows \a image (may be null: empty view) through \a window and \a level. */
   void
   SetImage(DepthImageType::ConstPointer image, double window, double level);
-  void
-  SetWindowLevel(double window, double level);
   /** The cross-section's continuous row (the logic's RowOfArcLength), drawn as a line across the image. */
   void
   SetPositionRow(double row);
@@ -46,25 +43,12 @@ public:
   {
     return m_PositionRow;
   }
-  /** A caption in the upper left corner ("straightened, roll 30°"). */
-  void
-  SetCaption(const QString & caption);
 
-  /** \return where the image is drawn (widget pixels). */
-  QRectF
-  ImageRect() const;
   /** \return the widget y of the centre of continuous row \a row, and the row at widget y. */
   double
   WidgetYOfRow(double row) const;
   double
   RowAtWidgetY(double y) const;
-  /** \return the image drawn (8-bit grey). */
-  const QImage &
-  GetDisplayedImage() const
-  {
-    return m_Grey;
-  }
-
   QSize
   sizeHint() const override
   {
@@ -83,8 +67,13 @@ signals:
   stepped(int sections);
 
 protected:
+  QImage
+  MakeGreyImage(double window, double level) const override;
+  /** Millimetres: the image's own spacing sets the aspect. */
+  QSizeF
+  ImageExtent() const override;
   void
-  paintEvent(QPaintEvent * event) override;
+  PaintOverlay(QPainter & painter, const QRectF & target) override;
   void
   mousePressEvent(QMouseEvent * event) override;
   void
@@ -94,11 +83,7 @@ protected:
 
 private:
   DepthImageType::ConstPointer m_Image;
-  QImage                       m_Grey;
-  double                       m_Window{ 400.0 };
-  double                       m_Level{ 200.0 };
   double                       m_PositionRow{ -1.0 };
-  QString                      m_Caption;
   Qt::MouseButton              m_Drag{ Qt::NoButton };
   QPointF                      m_DragStart;
 };

@@ -7,6 +7,7 @@
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
 #include "vrURINames.h"
+#include "vrWindowLevel.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up.
 #include "itkImageFileReader.h"
@@ -220,17 +221,6 @@ ReadMaskImage(const std::string & path)
   return mask;
 }
 
-unsigned char
-WindowLevelToByte(double value, double window, double level)
-{
-  const double t = (value - (level - 0.5 * window)) / window;
-  if (std::isnan(t))
-  {
-    return 0;
-  }
-  return static_cast<unsigned char>(std::lround(255.0 * std::min(1.0, std::max(0.0, t))));
-}
-
 void
 WriteWindowedPNG(const DepthImageType * image, double window, double level, const std::string & path)
 {
@@ -258,10 +248,7 @@ WriteWindowedPNG(const DepthImageType * image, double window, double level, cons
   const std::size_t count = image->GetLargestPossibleRegion().GetNumberOfPixels();
   const float *     values = image->GetBufferPointer();
   unsigned char *   grey = bytes->GetBufferPointer();
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    grey[k] = WindowLevelToByte(values[k], window, level);
-  }
+  WindowLevelToBytes(values, count, window, level, grey);
   WriteGreyPNG(bytes, path);
 }
 

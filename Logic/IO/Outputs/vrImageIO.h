@@ -29,15 +29,7 @@ ReadDepthImage(const std::string & path);
 MaskImageType::Pointer
 ReadMaskImage(const std::string & path);
 
-/** Maps an intensity through window/level to 0..255: level - window/2 -> 0, level + window/2 -> 255, NaN -> 0.
- * \param value the intensity.
- * \param window the window width (> 0).
- * \param level the window's centre.
- * \return the grey value. */
-unsigned char
-WindowLevelToByte(double value, double window, double level);
-
-/** Writes an 8-bit PNG of \a image through window/level (intensities level -+ window/2 map to 0..255). */
+/** Writes an 8-bit PNG of \a image through window/level: vr::WindowLevelToByte, as the views show it. */
 void
 WriteWindowedPNG(const DepthImageType * image, double window, double level, const std::string & path);
 /** Writes an 8-bit grey image as a PNG, atomically, read back before it is published (a full disk leaves nothing).
