@@ -145,6 +145,11 @@ struct CPRView::Pane
     DepthActor->GetMapper()->SetInputData(Depth);
     MaskActor->GetMapper()->SetInputData(Mask);
     LabelActor->GetMapper()->SetInputData(Labels);
+    // Edge pixels whole, as in a saved PNG (VTK otherwise draws from the first pixel's centre to the last one's).
+    for (vtkImageActor * actor : { ImageActor.Get(), DepthActor.Get(), MaskActor.Get(), LabelActor.Get() })
+    {
+      actor->GetMapper()->BorderOn();
+    }
     ImageActor->GetProperty()->SetInterpolationTypeToNearest();
     // The identity on bytes: the grey values are MapToGrey's.
     ImageActor->GetProperty()->SetColorWindow(255.0);
