@@ -471,9 +471,10 @@ TEST(DICOMSeriesModule, AFalseTransferSyntaxIsNamed)
                                                          { "claims-rle", "1.2.840.10008.1.2.5" } })
   {
     SCOPED_TRACE(name);
+    const std::string claimed = uid; // a structured binding cannot be captured before C++20
     const std::string folder = WriteSeries(name,
-                                           [&uid](std::vector<DICOMTestFile> & files)
-                                           { Named(files, "IM0009.dcm").Encoding.ClaimedTransferSyntax = uid; });
+                                           [&claimed](std::vector<DICOMTestFile> & files)
+                                           { Named(files, "IM0009.dcm").Encoding.ClaimedTransferSyntax = claimed; });
     ExpectRefused(RunModule(folder, name), { InFolder(folder, "IM0009.dcm") });
   }
 }
