@@ -302,7 +302,12 @@ ViewerLayout::ShowPathPanel()
 bool
 ViewerLayout::eventFilter(QObject * watched, QEvent * event)
 {
-  if (watched == m_Splitter->widget(Path) && (event->type() == QEvent::Show || event->type() == QEvent::Hide))
+  const QEvent::Type type = event->type();
+  if (type != QEvent::Show && type != QEvent::Hide && type != QEvent::Resize)
+  {
+    return QObject::eventFilter(watched, event); // nothing of the layout's: the splitter is not asked
+  }
+  if (watched == m_Splitter->widget(Path) && (type == QEvent::Show || type == QEvent::Hide))
   {
     UpdateMinimumWidth();
   }

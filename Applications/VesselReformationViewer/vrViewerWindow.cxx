@@ -134,7 +134,13 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   resize(1600, 1000);
 }
 
-ViewerWindow::~ViewerWindow() = default;
+ViewerWindow::~ViewerWindow()
+{
+  // The layout watches the splitter and the path panel through event filters: it goes first, so that the parts'
+  // own destruction (children removed, hidden) never reaches a filter that asks the half-destroyed splitter.
+  delete m_Layout;
+  m_Layout = nullptr;
+}
 
 bool
 ViewerWindow::IsProgressShown() const
