@@ -596,8 +596,9 @@ CPRView::UpdateAnnotation()
   const auto &       view = m_Result->Outputs.View;
   const auto &       up = view.GetUp();
   std::ostringstream upper;
-  upper << "angle " << Format(view.GetAngleInDegrees(), 1) << " deg about up (LPS " << Format(up[0], 2) << ", "
-        << Format(up[1], 2) << ", " << Format(up[2], 2) << ")\n"
+  // Short lines: at 800 x 500 the CPR view is about 360 px wide and the upper right corner needs 110 of them.
+  upper << "angle " << Format(view.GetAngleInDegrees(), 1) << " deg\n"
+        << "up LPS " << Format(up[0], 2) << ", " << Format(up[1], 2) << ", " << Format(up[2], 2) << "\n"
         << "W " << Format(m_Window, 0) << "  L " << Format(m_Level, 0);
   m_UpperLeftText->SetInput(upper.str().c_str());
   std::ostringstream right;

@@ -396,8 +396,8 @@ ThreeDView::ResetCameraForAngle(double angleInDegrees)
     ResetCamera();
     return;
   }
-  // The view direction at that angle: the shown view's v turned about up by the difference (docs/design.md, "View
-  // geometry": the angle turns u and v about up by the right-hand rule), before the view at that angle is computed.
+  // The view direction at that angle: the shown view's v turned about up by the difference (docs/design.md, "View":
+  // the angle turns u and v about up by the right-hand rule), before the view at that angle is computed.
   const auto & view = m_Result->Outputs.View;
   const auto   v = view.GetV();
   const auto   up = view.GetUp();
