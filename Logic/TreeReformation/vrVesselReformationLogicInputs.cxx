@@ -5,13 +5,8 @@
 
 namespace vr
 {
-namespace
-{
-using DepthFilterType = VesselReformationLogic::DepthFilterType;
-using ResampleFilterType = VesselReformationLogic::ResampleFilterType;
 using detail::Clock;
 using detail::SecondsSince;
-} // namespace
 
 void
 VesselReformationLogic::Internals::ConvertInputs()

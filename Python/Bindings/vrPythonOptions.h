@@ -3,6 +3,7 @@
 #define vrPythonOptions_h
 
 #include "itkVector.h"
+#include "vrPythonErrors.h"
 #include "vrPythonVolume.h"
 
 #include <pybind11/pybind11.h>
@@ -76,6 +77,34 @@ KeysOf(const std::map<std::string, TValue> & map)
     keys += (keys.empty() ? "" : ", ") + entry.first;
   }
   return keys;
+}
+
+/** Reserves each output of \a outputs, a dict {kind: path} (or None: none), with \a writer (an OutputWriter or a
+ * VesselPathOutputWriter), the kinds by the names of \a kinds. ValueError for anything but a dict or an unknown kind;
+ * OSError naming the file that cannot be reserved. */
+template<typename TWriter, typename TKind>
+void
+AddOutputFiles(const py::object & outputs, const std::map<std::string, TKind> & kinds, TWriter & writer)
+{
+  if (outputs.is_none())
+  {
+    return;
+  }
+  if (!py::isinstance<py::dict>(outputs))
+  {
+    RaiseValueError("outputs: give a dict {kind: path}, kinds " + KeysOf(kinds));
+  }
+  for (const auto & [key, path] : outputs.cast<py::dict>())
+  {
+    const std::string name = py::str(key).cast<std::string>();
+    const auto        entry = kinds.find(name);
+    if (entry == kinds.end())
+    {
+      RaiseValueError("outputs: unknown kind \"" + name + "\"; the kinds are " + KeysOf(kinds));
+    }
+    const std::string file = PathOf(path);
+    OnFiles(file, [&] { writer.Add(entry->second, file, "outputs[\"" + name + "\"]"); });
+  }
 }
 } // namespace vr::python
 

@@ -209,24 +209,7 @@ Reform(const py::object & volumeArgument, const py::object & centerlinesArgument
 
   // Every output path is reserved before the work; nothing lands until all are written (vr::OutputWriter).
   OutputWriter writer;
-  if (!outputFiles.is_none())
-  {
-    if (!py::isinstance<py::dict>(outputFiles))
-    {
-      RaiseValueError("outputs: give a dict {kind: path}, kinds " + KeysOf(OutputKeys));
-    }
-    for (const auto & [key, path] : outputFiles.cast<py::dict>())
-    {
-      const std::string name = py::str(key).cast<std::string>();
-      const auto        entry = OutputKeys.find(name);
-      if (entry == OutputKeys.end())
-      {
-        RaiseValueError("outputs: unknown kind \"" + name + "\"; the kinds are " + KeysOf(OutputKeys));
-      }
-      const std::string file = PathOf(path);
-      OnFiles(file, [&] { writer.Add(entry->second, file, "outputs[\"" + name + "\"]"); });
-    }
-  }
+  AddOutputFiles(outputFiles, OutputKeys, writer);
 
   VesselReformationLogic logic;
   const auto             node = NodeOver(volume);
@@ -293,9 +276,9 @@ Reform(const py::object & volumeArgument, const py::object & centerlinesArgument
                    { "relax", outputs.Times.Relax },
                    { "resample", outputs.Times.Resample },
                    { "surface", outputs.Times.Surface } };
-  result.EngineVolumeAddress = itk::detail::VisitStoredVolume(logic.GetResampleFilter()->GetVolume(),
-                                                                [](const auto * image)
-                                                                { return reinterpret_cast<std::uintptr_t>(image->GetBufferPointer()); });
+  result.EngineVolumeAddress = itk::detail::VisitStoredVolume(
+    logic.GetResampleFilter()->GetVolume(),
+    [](const auto * image) { return reinterpret_cast<std::uintptr_t>(image->GetBufferPointer()); });
   return result;
 }
 } // namespace

@@ -189,24 +189,7 @@ VesselPath(const py::object & volumeArgument, const py::object & centerlinesArgu
   }
 
   VesselPathOutputWriter writer;
-  if (!outputs.is_none())
-  {
-    if (!py::isinstance<py::dict>(outputs))
-    {
-      RaiseValueError("outputs: give a dict {kind: path}, kinds " + KeysOf(OutputKeys));
-    }
-    for (const auto & [key, path] : outputs.cast<py::dict>())
-    {
-      const std::string name = py::str(key).cast<std::string>();
-      const auto        entry = OutputKeys.find(name);
-      if (entry == OutputKeys.end())
-      {
-        RaiseValueError("outputs: unknown kind \"" + name + "\"; the kinds are " + KeysOf(OutputKeys));
-      }
-      const std::string file = PathOf(path);
-      OnFiles(file, [&] { writer.Add(entry->second, file, "outputs[\"" + name + "\"]"); });
-    }
-  }
+  AddOutputFiles(outputs, OutputKeys, writer);
 
   VesselPathLogic logic;
   OnArguments(
