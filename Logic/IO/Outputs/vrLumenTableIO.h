@@ -62,6 +62,8 @@ constexpr std::size_t LumenTableSourceColumn = 13;
 /** How many of LumenTableColumns the profile fills (MakeLumenTable), up to branch_id; the last three are the grading's
  * marks (LumenTableNotes). */
 constexpr std::size_t LumenTableProfileColumns = 17;
+static_assert(sizeof(LumenTableColumns) / sizeof(LumenTableColumns[0]) == LumenTableProfileColumns + 3,
+              "the profile's columns, then the grading's three marks");
 
 /** \class LumenTable
  * \brief The lumen table's cells as WriteLumenTable writes them and the Python package returns them: per column of
