@@ -57,7 +57,7 @@ struct VolumeVoxels
 };
 
 /** The voxels of \a volume: of its pixel type, or, for an itk::ImageBase<3> (the logic's stored volume), of the type
- * it holds at run time (itk::detail::VisitStoredVolume). */
+ * it holds at run time (itk::VisitStoredVolume). */
 template<typename TVolumeImage>
 VolumeVoxels
 VoxelsOf(const TVolumeImage * volume)
@@ -69,7 +69,7 @@ VoxelsOf(const TVolumeImage * volume)
   };
   if constexpr (std::is_same_v<TVolumeImage, ImageBase<3>>)
   {
-    return detail::VisitStoredVolume(volume, describe);
+    return VisitStoredVolume(volume, describe);
   }
   else
   {

@@ -78,7 +78,7 @@ ReformationInputCache::KeepVolume(VolumeNode * node, vtkMTimeType time, const St
   auto volume = std::make_shared<Volume>();
   volume->Image = stored.Image;
   volume->Rescale = stored.Rescale;
-  itk::detail::CPRVolumeMinimum<itk::ImageBase<3>> minimum;
+  itk::CPRVolumeMinimum<itk::ImageBase<3>> minimum;
   volume->Minimum = minimum.Get(stored.Image, stored.Rescale);
   m_Volume = std::move(volume);
   m_VolumeNode = node;

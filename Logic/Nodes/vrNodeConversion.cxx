@@ -614,11 +614,11 @@ ConvertStoredVolumeToVolumeNode(const StoredVolume & volume, const std::string &
   if (vtkType < 0)
   {
     throw InputError(what + ": its pixel type is not one a volume is kept in (" +
-                     std::string(itk::detail::CPRStoredPixelTypes) + ")");
+                     std::string(itk::CPRStoredPixelTypes) + ")");
   }
   auto data = ImageDataOfGrid(*volume.Image);
   // The node's array reads the image's buffer and holds its pixel container (the buffer's owner).
-  itk::detail::VisitStoredVolume(volume.Image.GetPointer(),
+  itk::VisitStoredVolume(volume.Image.GetPointer(),
                                  [&data, vtkType](auto * image)
                                  {
                                    auto owner = std::make_shared<itk::Object::Pointer>(image->GetPixelContainer());
@@ -652,7 +652,7 @@ WrapVoxelBuffer(void *                           voxels,
   {
     std::ostringstream message;
     message << what << ": pixel type " << pixelType << " is not one a volume is kept in ("
-            << itk::detail::CPRStoredPixelTypes << ")";
+            << itk::CPRStoredPixelTypes << ")";
     throw InputError(message.str());
   }
   if (dimensions[0] < 1 || dimensions[1] < 1 || dimensions[2] < 1)

@@ -59,7 +59,7 @@ StoredVolume::GetPixelType() const
   {
     return itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
   }
-  return itk::detail::VisitStoredVolume(static_cast<const itk::ImageBase<3> *>(Image.GetPointer()),
+  return itk::VisitStoredVolume(static_cast<const itk::ImageBase<3> *>(Image.GetPointer()),
                                         [](const auto * image)
                                         {
                                           using ImageType = std::remove_pointer_t<decltype(image)>;
@@ -80,7 +80,7 @@ StoredVolume::GetBufferPointer() const
   {
     return nullptr;
   }
-  return itk::detail::VisitStoredVolume(static_cast<const itk::ImageBase<3> *>(Image.GetPointer()),
+  return itk::VisitStoredVolume(static_cast<const itk::ImageBase<3> *>(Image.GetPointer()),
                                         [](const auto * image)
                                         { return static_cast<const void *>(image->GetBufferPointer()); });
 }
@@ -133,14 +133,14 @@ ConvertStoredVolumeToFloat(const StoredVolume & volume)
   if (!IsStored(volume.Image.GetPointer()))
   {
     throw InputError(std::string("volume: ") + (volume.Image ? "its pixel type is not one a volume is kept in (" +
-                                                                 std::string(itk::detail::CPRStoredPixelTypes) + ")"
+                                                                 std::string(itk::CPRStoredPixelTypes) + ")"
                                                              : "no image given"));
   }
   if (auto * image = dynamic_cast<VolumeImageType *>(volume.Image.GetPointer()); image && volume.Rescale.IsIdentity())
   {
     return image;
   }
-  return itk::detail::VisitStoredVolume(static_cast<const itk::ImageBase<3> *>(volume.Image.GetPointer()),
+  return itk::VisitStoredVolume(static_cast<const itk::ImageBase<3> *>(volume.Image.GetPointer()),
                                         [&volume](const auto * image)
                                         {
                                           auto copy = VolumeImageType::New();

@@ -15,7 +15,7 @@ namespace vr
 /** \struct StoredVolume
  * \brief A volume in the pixel type of its file (docs/design.md "Volumes in their stored type"): an itk::Image<T, 3>
  * in LPS of one of the stored pixel types (signed or unsigned 8- and 16-bit integers, float, double;
- * itk::detail::CPRStoredPixelTypes) and the rescale of its stored values to intensities.
+ * itk::CPRStoredPixelTypes) and the rescale of its stored values to intensities.
  *
  * What a reader returns (vr::ReadStoredVolume), what a volume node converts to without a copy
  * (vr::ConvertVolumeNodeToStoredVolume) and what the reformation filters sample (they take itk::ImageBase<3> and

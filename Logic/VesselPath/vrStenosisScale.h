@@ -37,7 +37,7 @@ ParseStenosisScale(const std::string & text, StenosisScale & scale);
 double
 RoundedStenosisPercent(double diameterStenosisPercent);
 
-/** The CAD-RADS stenosis class of a % diameter stenosis (docs/lumen-measurement.md, "CAD-RADS"): rounded as
+/** The CAD-RADS stenosis class of a % diameter stenosis (docs/lumen-measurement.md, the scales table's "CAD-RADS" row): rounded as
  * RoundedStenosisPercent, then 0 % or less: 0; 1-24: 1; 25-49: 2; 50-69: 3; 70-99: 4; 5 only for a lumen of
  * diameter 0 (exactly 100 %). \return the class, or -1 for NaN. */
 int

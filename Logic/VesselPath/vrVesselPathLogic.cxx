@@ -36,7 +36,7 @@ struct ImageStamp
   static const void *
   BufferOf(const itk::ImageBase<3> * image)
   {
-    return itk::detail::VisitStoredVolume(image,
+    return itk::VisitStoredVolume(image,
                                           [](const auto * typed) -> const void * { return typed->GetBufferPointer(); });
   }
   bool

@@ -276,7 +276,7 @@ Reform(const py::object & volumeArgument, const py::object & centerlinesArgument
                    { "relax", outputs.Times.Relax },
                    { "resample", outputs.Times.Resample },
                    { "surface", outputs.Times.Surface } };
-  result.EngineVolumeAddress = itk::detail::VisitStoredVolume(
+  result.EngineVolumeAddress = itk::VisitStoredVolume(
     logic.GetResampleFilter()->GetVolume(),
     [](const auto * image) { return reinterpret_cast<std::uintptr_t>(image->GetBufferPointer()); });
   return result;

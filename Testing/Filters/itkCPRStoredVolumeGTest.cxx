@@ -256,7 +256,7 @@ TEST(CPRStoredVolume, RescaledSamplesEqualITKInterpolatorsOnTheRescaledVolume)
   for (const auto mode : { itk::CPRInterpolationMode::Linear, itk::CPRInterpolationMode::Nearest })
   {
     SCOPED_TRACE(mode == itk::CPRInterpolationMode::Linear ? "linear" : "nearest");
-    itk::detail::CPRVolumeSampler<itk::ImageBase<3>> sampler;
+    itk::CPRVolumeSampler<itk::ImageBase<3>> sampler;
     sampler.Prepare(volume, mode, rescale);
     itk::InterpolateImageFunction<Volume<double>, double>::Pointer reference;
     if (mode == itk::CPRInterpolationMode::Linear)

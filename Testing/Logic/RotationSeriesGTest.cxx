@@ -378,7 +378,7 @@ TEST_F(RotationSeriesTest, PicturesAtTheDisplaySizeWithTheirLabelsBurnedIn)
     }
     EXPECT_EQ(farOff, 0u);
     // With labels: the labelled picture is the bare one with the labels burned in by vr::BurnInViewLabels, at the
-    // view's axes (docs/design.md, "View geometry"): up = S; at 0 degrees v = P and u = v x up = L; at 90 degrees v
+    // view's axes (docs/design.md, "View"): up = S; at 0 degrees v = P and u = v x up = L; at 90 degrees v
     // is turned about up to R, and u = P.
     auto labelled = vr::MaskImageType::New();
     labelled->SetRegions(bare->GetLargestPossibleRegion());

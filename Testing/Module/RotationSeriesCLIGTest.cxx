@@ -135,7 +135,7 @@ TEST_F(RotationSeriesCLI, WritesPNGsAndADICOMSeriesBesideTheRunsOutputs)
 
   // View 0 is at the run's own angle (0): at --rotationSeriesSize 0 its pixels are the run's CPR through the CTA window
   // (W 900, L 200; the phantom is a CT), computed here, with the labels of the view at 0 degrees burned in: u = L,
-  // up = S (docs/design.md, "View geometry").
+  // up = S (docs/design.md, "View").
   const auto cpr = vr::ReadDepthImage((m_Folder / "cpr.nrrd").string());
   const auto png = ReadGrey((series / "rotation-000.png").string(), itk::PNGImageIO::New());
   ASSERT_EQ(png->GetLargestPossibleRegion().GetSize(), cpr->GetLargestPossibleRegion().GetSize());

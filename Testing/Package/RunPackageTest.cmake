@@ -9,6 +9,7 @@
 #   that does not exist, and its compile lines must hold no VTK include directory.
 # - NRRDConsumer reads a NRRD with itk::ImageFileReader without include(${ITK_USE_FILE}).
 # - PipelineConsumer runs the logic's relax backend in an ITK pipeline on the run-off phantom.
+cmake_policy(SET CMP0057 NEW) # if(... IN_LIST ...)
 foreach(variable BUILD_DIR WORK_DIR SOURCE_DIR GENERATOR C_COMPILER CXX_COMPILER ITK_DIR VTK_DIR MODULES_DIR MODULES)
   if(NOT DEFINED ${variable})
     message(FATAL_ERROR "RunPackageTest.cmake needs -D${variable}=...")
@@ -37,6 +38,39 @@ function(configure_and_build project)
 endfunction()
 
 run_step("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${WORK_DIR}/prefix)
+
+# The installed headers are the interface: no internal namespace (detail) in them, and every header of the project's
+# own that one includes is installed too (an internal header included by a public one would be an interface by the
+# back door, or a compile error for consumers).
+get_filename_component(project_root ${SOURCE_DIR}/../.. ABSOLUTE)
+file(GLOB_RECURSE project_headers RELATIVE ${project_root} ${project_root}/*.h ${project_root}/*.hxx)
+list(FILTER project_headers EXCLUDE REGEX "^(build|Testing)")
+set(project_header_names "")
+foreach(header ${project_headers})
+  get_filename_component(name ${header} NAME)
+  list(APPEND project_header_names ${name})
+endforeach()
+file(GLOB installed_headers ${WORK_DIR}/prefix/include/VesselReformation/*)
+if(NOT installed_headers)
+  message(FATAL_ERROR "no header installed in ${WORK_DIR}/prefix/include/VesselReformation")
+endif()
+foreach(header ${installed_headers})
+  get_filename_component(name ${header} NAME)
+  file(STRINGS ${header} internal REGEX "detail::|namespace detail|namespace [a-z]+::detail")
+  if(internal)
+    message(FATAL_ERROR "the installed header ${name} names an internal (detail) namespace:\n${internal}")
+  endif()
+  file(STRINGS ${header} includes REGEX "^#include \"")
+  foreach(line ${includes})
+    string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" included "${line}")
+    if(NOT EXISTS ${WORK_DIR}/prefix/include/VesselReformation/${included} AND included IN_LIST project_header_names)
+      message(FATAL_ERROR "the installed header ${name} includes ${included}, one of the project's headers that is "
+                          "not installed (internal)")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH installed_headers installed_count)
+message(STATUS "installed headers: ${installed_count}, none internal, none including an internal one")
 
 # The module folder a platform is pointed at: the modules and nothing else (executable, shared library, 3D Slicer's
 # description), the executables runnable from there, the others not executable (MITK runs every executable file).

@@ -50,7 +50,7 @@ def test_to_patient_follows_the_view_geometry(thorax):
     sx, sy = view["spacing"]
     j, i = np.nonzero(result.fixed_mask)
     j, i = j[:20], i[:20]
-    # By hand (docs/design.md "View geometry"): B(i, j) = C + (i - (W-1)/2) sx u - (j - (H-1)/2) sy up; X = B + d v.
+    # By hand (docs/design.md "View"): B(i, j) = C + (i - (W-1)/2) sx u - (j - (H-1)/2) sy up; X = B + d v.
     plane = center + np.outer(i - 31.5, u) * sx - np.outer(j - 47.5, up) * sy
     expected = plane + result.relaxed_depth[j, i][:, None] * v
     np.testing.assert_allclose(result.to_patient(i, j), expected, atol=1e-6)

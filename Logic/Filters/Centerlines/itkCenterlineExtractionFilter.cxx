@@ -20,7 +20,7 @@ using MaskImageType = CenterlineForeground::MaskImageType;
 [[noreturn]] void
 Fail(const std::string & message)
 {
-  throw ExceptionObject(__FILE__, __LINE__, message, "ExtractCenterlineTree");
+  throw ExceptionObject(__FILE__, __LINE__, message, "ExtractCenterlinesFromPaddedMask");
 }
 
 /** The foreground voxel nearest to \a point (LPS mm), and its distance. */
@@ -45,12 +45,14 @@ NearestForegroundVoxel(const CenterlineForeground & foreground,
   return { nearest, nearestDistance };
 }
 } // namespace
+} // namespace detail
 
 CenterlineExtractionOutcome
-ExtractCenterlineTree(const MaskImageType *                paddedMask,
-                      const CenterlineExtractionSettings & settings,
-                      const std::function<void(double)> &  progress)
+ExtractCenterlinesFromPaddedMask(const Image<unsigned char, 3> *      paddedMask,
+                                 const CenterlineExtractionSettings & settings,
+                                 const std::function<void(double)> &  progress)
 {
+  using namespace detail; // the foreground, skeleton and branch geometry behind it
   const auto &                             spacing = paddedMask->GetSpacing();
   const double                             smallestSpacing = std::min({ spacing[0], spacing[1], spacing[2] });
   const double                             largestSpacing = std::max({ spacing[0], spacing[1], spacing[2] });
@@ -132,7 +134,6 @@ ExtractCenterlineTree(const MaskImageType *                paddedMask,
   outcome.Tree.Validate();
   return outcome;
 }
-} // namespace detail
 
 template class CenterlineExtractionFilter<Image<unsigned char, 3>>;
 template class CenterlineExtractionFilter<Image<short, 3>>;

@@ -12,8 +12,6 @@
 
 namespace itk
 {
-namespace detail
-{
 /** \class CenterlineExtractionSettings
  * \brief What the non-template part of CenterlineExtractionFilter needs (see the filter's parameters).
  * \ingroup VesselReformation
@@ -47,10 +45,9 @@ struct CenterlineExtractionOutcome
  * skeletons, smooth branches. Compiled once. \a progress gets fractions in [0, 1]. Throws itk::ExceptionObject
  * on a bad root point or when no component yields a centerline. */
 CenterlineExtractionOutcome
-ExtractCenterlineTree(const Image<unsigned char, 3> *      paddedMask,
-                      const CenterlineExtractionSettings & settings,
-                      const std::function<void(double)> &  progress);
-} // namespace detail
+ExtractCenterlinesFromPaddedMask(const Image<unsigned char, 3> *      paddedMask,
+                                 const CenterlineExtractionSettings & settings,
+                                 const std::function<void(double)> &  progress);
 
 /** \class CenterlineExtractionFilter
  * \brief Extracts the centerline tree of the vessels in a segmentation: a binary mask, or a label map with chosen

@@ -247,7 +247,7 @@ CenterlineExtractionFilter<TLabelImage>::GenerateData()
   }
   this->UpdateProgress(0.05f);
 
-  detail::CenterlineExtractionSettings settings;
+  CenterlineExtractionSettings settings;
   settings.RootPoints = m_RootPoints;
   settings.RootPointTolerance = m_RootPointTolerance;
   settings.MinimumBranchLength = m_MinimumBranchLength;
@@ -265,10 +265,10 @@ CenterlineExtractionFilter<TLabelImage>::GenerateData()
       throw aborted;
     }
   };
-  detail::CenterlineExtractionOutcome outcome;
+  CenterlineExtractionOutcome outcome;
   try
   {
-    outcome = detail::ExtractCenterlineTree(mask, settings, progress);
+    outcome = ExtractCenterlinesFromPaddedMask(mask, settings, progress);
   }
   catch (const ProcessAborted &)
   {

@@ -15,10 +15,8 @@
 
 namespace itk
 {
-namespace detail
-{
-// The non-template work of every CPRDepthImageFilter, compiled once in itkCPRDepthImageFilter.cxx; installed only
-// because the filter's .hxx (for pixel types other than float) calls it. Not an interface: it may change.
+// The depth computation without a pipeline: what every CPRDepthImageFilter runs (compiled once, in
+// itkCPRDepthImageFilter.cxx, whatever the filter's pixel type), on row-major buffers a caller may read directly.
 
 /** Row-major W x H results of ComputeCPRDepth, owned by the workspace.
  * \ingroup VesselReformation
@@ -45,7 +43,6 @@ ComputeCPRDepth(const CenterlineTree &        tree,
                 MultiThreaderBase *           threader,
                 CPRDepthWorkspacePointer &    workspace,
                 const std::function<void()> & rasterized);
-} // namespace detail
 } // namespace itk
 
 #endif

@@ -9,13 +9,11 @@
 
 namespace itk
 {
-namespace detail
-{
 struct CPRDepthWorkspace
 {
-  CPRCenterlinePixels             CenterlinePixels;
-  CPRDepthAssignment              Assignment;
-  CPRVisibilityWorkspace          Visibility;
+  detail::CPRCenterlinePixels     CenterlinePixels;
+  detail::CPRDepthAssignment      Assignment;
+  detail::CPRVisibilityWorkspace  Visibility;
   std::vector<CPRBranchOcclusion> Occlusion;
 };
 
@@ -38,32 +36,30 @@ ComputeCPRDepth(const CenterlineTree &        tree,
   {
     workspace.reset(new CPRDepthWorkspace);
   }
-  RasterizeCenterlines(tree, view, workspace->CenterlinePixels);
+  detail::RasterizeCenterlines(tree, view, workspace->CenterlinePixels);
   if (rasterized)
   {
     rasterized();
   }
-  CPRDepthAssignment & assignment = workspace->Assignment;
+  detail::CPRDepthAssignment & assignment = workspace->Assignment;
   if (mode == CPRDepthMode::Visibility)
   {
-    AssignVisibility(tree,
-                     view,
-                     workspace->CenterlinePixels,
-                     fixLumen,
-                     threader,
-                     workspace->Visibility,
-                     assignment,
-                     workspace->Occlusion);
+    detail::AssignVisibility(tree,
+                             view,
+                             workspace->CenterlinePixels,
+                             fixLumen,
+                             threader,
+                             workspace->Visibility,
+                             assignment,
+                             workspace->Occlusion);
     return { assignment.Depth.data(),
              assignment.Fixed.data(),
              assignment.Owner.data(),
              assignment.Hidden.data(),
              &workspace->Occlusion };
   }
-  AssignDepth(workspace->CenterlinePixels, mode, view.GetSpacing(), fixLumen, threader, assignment);
+  detail::AssignDepth(workspace->CenterlinePixels, mode, view.GetSpacing(), fixLumen, threader, assignment);
   return { assignment.Depth.data(), assignment.Fixed.data(), assignment.Owner.data(), nullptr, nullptr };
 }
-} // namespace detail
-
 template class CPRDepthImageFilter<Image<float, 2>>;
 } // namespace itk

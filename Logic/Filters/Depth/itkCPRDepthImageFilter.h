@@ -176,7 +176,7 @@ private:
   std::vector<CPRBranchOcclusion>       m_BranchOcclusions;
 
   // Work buffers kept between updates: a new angle then allocates (and page-faults) nothing.
-  detail::CPRDepthWorkspacePointer m_Workspace;
+  CPRDepthWorkspacePointer m_Workspace;
 };
 
 } // namespace itk

@@ -158,7 +158,7 @@ CPRDepthImageFilter<TDepthImage>::GenerateData()
   threader->SetNumberOfWorkUnits(this->GetNumberOfWorkUnits());
   // Visibility mode fixes the lumen of every branch that has radii; the others only when all have them.
   const bool fixLumen = m_FixLumen && (m_Mode == CPRDepthMode::Visibility || m_CenterlineTree.HasRadii());
-  const detail::CPRDepthResult result = detail::ComputeCPRDepth(
+  const CPRDepthResult result = ComputeCPRDepth(
     m_CenterlineTree, m_View, m_Mode, fixLumen, threader, m_Workspace, [this]() { this->UpdateProgress(0.3f); });
   const std::size_t count = depth->GetBufferedRegion().GetNumberOfPixels();
   std::copy(result.Depth, result.Depth + count, depth->GetBufferPointer());

@@ -6,8 +6,6 @@
 
 namespace itk
 {
-namespace detail
-{
 /** The depth filter's work buffers (the centerline raster and the depth assignment), kept between updates so that
  * a new angle allocates nothing; opaque here (itkCPRDepthComputation.h works on them). */
 struct CPRDepthWorkspace;
@@ -17,7 +15,6 @@ struct CPRDepthWorkspaceDeleter
   operator()(CPRDepthWorkspace * workspace) const;
 };
 using CPRDepthWorkspacePointer = std::unique_ptr<CPRDepthWorkspace, CPRDepthWorkspaceDeleter>;
-} // namespace detail
 } // namespace itk
 
 #endif

@@ -25,7 +25,7 @@ namespace itk
  * origin, spacing and direction are honoured.
  *
  * TVolumeImage is an itk::Image<T, 3> of a scalar pixel type, or itk::ImageBase<3> for a volume of any of the stored
- * pixel types (detail::CPRStoredPixelTypes) chosen at run time, as the module's logic holds a volume in the type of
+ * pixel types (CPRStoredPixelTypes) chosen at run time, as the module's logic holds a volume in the type of
  * its file. The volume is sampled in its stored type, its IntensityRescale applied to every value read (and to the
  * minimum): no float copy of it is made.
  *
@@ -173,9 +173,9 @@ private:
   CPRIntensityRescale  m_IntensityRescale;
 
   // Per-update state, set in BeforeThreadedGenerateData: the sampling the path view's filters share.
-  detail::CPRVolumeSampler<VolumeImageType> m_Sampler;
+  CPRVolumeSampler<VolumeImageType> m_Sampler;
   // The volume's minimum, kept between updates (rotating the view does not change it).
-  detail::CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
+  CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
   OutputPixelType                           m_OutsideValue{};
   ContinuousIndexType                       m_IndexAtCenter;
   Vector<double, 3>                         m_IndexStepPerColumn;

@@ -159,7 +159,7 @@ CPRResampleImageFilter<TVolumeImage, TDepthImage, TOutputImage>::PrepareIndexMap
   m_IndexStepPerRow = atRow - atCenter;
   m_IndexStepPerMillimetreDepth = atDepth - atCenter;
 
-  m_SlabOffsets = detail::CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
+  m_SlabOffsets = CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
 }
 
 template<typename TVolumeImage, typename TDepthImage, typename TOutputImage>

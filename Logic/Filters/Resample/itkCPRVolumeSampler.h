@@ -15,16 +15,9 @@
 #include <variant>
 #include <vector>
 
-namespace itk::detail
+namespace itk
 {
 
-/** \class CPRVolumeSampler
- * \brief The sampling every reformation filter shares (docs/design.md "Resampling", docs/vessel-path.md "Sampling"): a
- * volume read at continuous indices, linearly (straight from the buffer), nearest or by cubic B-spline, and the samples
- * of a slab combined by MIP, MinIP or mean, samples outside the volume left out.
- *
- * Prepare() once per update (not thread-safe); then Sample() and Evaluate() from any thread.
- */
 /** The pixel types a volume may keep from its file and the reformation filters sample at run time (docs/design.md
  * "Volumes in their stored type"): signed and unsigned 8- and 16-bit integers, float and double. */
 inline constexpr const char * CPRStoredPixelTypes = "signed or unsigned char, short or unsigned short, float or double";
@@ -516,6 +509,6 @@ extern template class CPRVolumeSampler<Image<unsigned char, 3>>;
 extern template class CPRVolumeSampler<Image<signed char, 3>>;
 extern template class CPRVolumeSampler<Image<double, 3>>;
 
-} // namespace itk::detail
+} // namespace itk
 
 #endif

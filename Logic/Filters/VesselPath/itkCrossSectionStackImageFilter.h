@@ -157,12 +157,12 @@ private:
 
   VesselPathSectionList m_Sections;
 
-  detail::CPRVolumeSampler<VolumeImageType> m_Sampler;
-  detail::CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
+  CPRVolumeSampler<VolumeImageType> m_Sampler;
+  CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
   OutputPixelType                           m_OutsideValue{};
   std::vector<double>                       m_SlabOffsets;
   /** Per plane, in the volume's continuous index: the centre, and the steps per mm along Lateral, Up and Tangent. */
-  std::vector<detail::SectionIndexFrame> m_IndexFrames;
+  std::vector<SectionIndexFrame> m_IndexFrames;
 };
 
 } // namespace itk

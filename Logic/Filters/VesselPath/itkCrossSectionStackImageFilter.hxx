@@ -188,9 +188,9 @@ CrossSectionStackImageFilter<TVolumeImage, TOutputImage>::BeforeThreadedGenerate
   m_OutsideValue = m_UseVolumeMinimumAsDefault
                      ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume, m_IntensityRescale))
                      : m_DefaultValue;
-  m_SlabOffsets = detail::CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
+  m_SlabOffsets = CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
 
-  m_IndexFrames = detail::SectionIndexFrames(volume, m_Sections);
+  m_IndexFrames = SectionIndexFrames(volume, m_Sections);
 }
 
 template<typename TVolumeImage, typename TOutputImage>

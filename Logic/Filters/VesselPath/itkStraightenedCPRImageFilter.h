@@ -92,7 +92,7 @@ public:
     return m_Path;
   }
   /** The tree view whose look the frame starts from, and whose screen-right is the default stretch direction;
-   * the default view (design.md 3.2) unless set. */
+   * the default view (docs/design.md "View") unless set. */
   void
   SetView(const CPRViewGeometry & view);
   const CPRViewGeometry &
@@ -249,12 +249,12 @@ private:
   SizeValueType m_NumberOfFoldedPixels{ 0 };
   std::string   m_FoldWarning;
 
-  detail::CPRVolumeSampler<VolumeImageType> m_Sampler;
-  detail::CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
+  CPRVolumeSampler<VolumeImageType> m_Sampler;
+  CPRVolumeMinimum<VolumeImageType> m_VolumeMinimum;
   OutputPixelType                           m_OutsideValue{};
   std::vector<double>                       m_SlabOffsets;
   /** Per row, in the volume's continuous index: the centre, and the steps per mm along Lateral and Up. */
-  std::vector<detail::SectionIndexFrame> m_RowIndexFrames;
+  std::vector<SectionIndexFrame> m_RowIndexFrames;
 };
 
 } // namespace itk

@@ -371,9 +371,9 @@ StraightenedCPRImageFilter<TVolumeImage, TOutputImage>::BeforeThreadedGenerateDa
   m_OutsideValue = m_UseVolumeMinimumAsDefault
                      ? static_cast<OutputPixelType>(m_VolumeMinimum.Get(volume, m_IntensityRescale))
                      : m_DefaultValue;
-  m_SlabOffsets = detail::CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
+  m_SlabOffsets = CPRVolumeSampler<VolumeImageType>::SlabOffsets(volume, m_SlabThickness);
 
-  m_RowIndexFrames = detail::SectionIndexFrames(volume, m_Sections);
+  m_RowIndexFrames = SectionIndexFrames(volume, m_Sections);
 }
 
 template<typename TVolumeImage, typename TOutputImage>

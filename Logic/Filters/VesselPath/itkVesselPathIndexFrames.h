@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace itk::detail
+namespace itk
 {
 
 /** A vessel path section's frame in a volume's continuous index. The index is affine in the physical point, so the
@@ -43,6 +43,6 @@ SectionIndexFrames(const TVolume * volume, const VesselPathSectionList & section
   return frames;
 }
 
-} // namespace itk::detail
+} // namespace itk
 
 #endif
