@@ -20,17 +20,9 @@ namespace
 {
 using FilterType = itk::CPRDepthImageFilter<itk::Image<float, 2>>;
 using PointType = itk::Point<double, 3>;
+using vr::test::Branch;
 using vr::test::P;
-
-itk::CenterlineBranch
-Branch(int id, std::vector<PointType> points, std::vector<double> radii = {})
-{
-  itk::CenterlineBranch branch;
-  branch.Id = id;
-  branch.Points = std::move(points);
-  branch.Radii = std::move(radii);
-  return branch;
-}
+using vr::test::View;
 
 /** A straight branch from a to b sampled every mm, with a constant radius (none when radius is 0). */
 itk::CenterlineBranch
@@ -49,20 +41,6 @@ Straight(int id, const PointType & a, const PointType & b, double radius)
     }
   }
   return branch;
-}
-
-itk::CPRViewSpecification
-View(unsigned int width, unsigned int height, double sx = 1.0, double sy = 1.0, double angle = 0.0)
-{
-  itk::CPRViewSpecification view;
-  view.HasCenter = true;
-  view.Center = P(0, 0, 0);
-  view.ImageSize[0] = width;
-  view.ImageSize[1] = height;
-  view.PixelSpacing[0] = sx;
-  view.PixelSpacing[1] = sy;
-  view.AngleInDegrees = angle;
-  return view;
 }
 
 struct Visibility

@@ -12,6 +12,30 @@
 
 namespace vr::test
 {
+itk::CenterlineBranch
+Branch(int id, std::vector<itk::Point<double, 3>> points, std::vector<double> radii)
+{
+  itk::CenterlineBranch branch;
+  branch.Id = id;
+  branch.Points = std::move(points);
+  branch.Radii = std::move(radii);
+  return branch;
+}
+
+itk::CPRViewSpecification
+View(unsigned int width, unsigned int height, double sx, double sy, double angle)
+{
+  itk::CPRViewSpecification view;
+  view.HasCenter = true;
+  view.Center = P(0, 0, 0);
+  view.ImageSize[0] = width;
+  view.ImageSize[1] = height;
+  view.PixelSpacing[0] = sx;
+  view.PixelSpacing[1] = sy;
+  view.AngleInDegrees = angle;
+  return view;
+}
+
 namespace
 {
 template<typename TImage>

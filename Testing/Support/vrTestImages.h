@@ -26,6 +26,15 @@ P(double x, double y, double z)
   return point;
 }
 
+/** A branch of \a id through \a points (LPS mm) with \a radii (none, or one per point). */
+itk::CenterlineBranch
+Branch(int id, std::vector<itk::Point<double, 3>> points, std::vector<double> radii = {});
+
+/** A view of width x height pixels of sx x sy mm centred at the origin, turned by \a angle degrees about the default
+ * up (+z): at 0 degrees it looks along LPS +y (docs/design.md "View"). */
+itk::CPRViewSpecification
+View(unsigned int width, unsigned int height, double sx = 1.0, double sy = 1.0, double angle = 0.0);
+
 /** A W x H depth image from row-major values (unit spacing, zero origin). */
 DepthImage::Pointer
 MakeDepthImage(unsigned int width, unsigned int height, const std::vector<float> & values);
