@@ -57,14 +57,17 @@ ReadDICOMSeries(const std::string & folder, const VolumeReadOptions & options, V
 {
   const std::string       where = "volume folder " + folder;
   detail::DICOMSeriesRead read = detail::ReadDICOMSeriesInChildProcess(folder, options.DICOMSeries, where);
-  RequireFiniteVoxels(*read.Volume, where);
+  if (const auto * floatVolume = dynamic_cast<const VolumeImageType *>(read.Volume.Image.GetPointer()))
+  {
+    RequireFiniteVoxels(*floatVolume, where);
+  }
   if (report != nullptr)
   {
     report->Warnings.insert(report->Warnings.end(), read.Warnings.begin(), read.Warnings.end());
     report->Notes.insert(report->Notes.end(), read.Notes.begin(), read.Notes.end());
   }
-  // The reader process hands over float intensities (each file's rescale applied).
-  return StoredVolume{ read.Volume.GetPointer(), itk::CPRIntensityRescale() };
+  // In the series' stored type with its rescale, or float intensities (docs/dicom-series.md "Values").
+  return read.Volume;
 }
 
 /** "64 x 64 x 32 x 5" */
