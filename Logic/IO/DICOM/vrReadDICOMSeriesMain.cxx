@@ -329,6 +329,16 @@ main(int argc, char * argv[])
     oneRescale && !interpolated && DICOMVolumePixelBytes(storedType) > 0 ? storedType : itk::IOComponentEnum::FLOAT;
   const std::uint64_t volumeVoxels = sliceVoxels * grid.Slices.size();
 
+  // The first file read before the volume's memory is reserved: a series whose attributes are corrupt (Rows and
+  // Columns that make gigabytes) is refused by its first file, not by the memory it asks for.
+  {
+    std::vector<float> first;
+    if (std::string problem = series.Pixels(instances[grid.Slices.front().First], first); !problem.empty())
+    {
+      return Fail("message", problem + "; the series is not read");
+    }
+  }
+
   // The volume, written straight into the hand-over file: each grid slice its file's pixels, or two files'
   // interpolated. Read again in float should GDCM decode a file in another type than the attributes say.
   DICOMVolumeHandOverWriter handOver;
