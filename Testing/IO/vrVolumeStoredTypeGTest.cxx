@@ -344,3 +344,76 @@ TEST(VolumeStoredType, AVolumeThatDoesNotFitIsRefusedNamingTheBytes)
   EXPECT_MESSAGE_HAS(message, "2147483648 voxels of uint8 need 2 GiB (2,147,483,648 bytes) of memory");
   EXPECT_MESSAGE_HAS(message, "available");
 }
+
+// A raw NRRD with its header attached and its voxels in the machine's byte order is read straight into the buffer
+// (vrNrrdRawVoxels.h: teem would zero the buffer first); any other raw NRRD goes through ITK. The values are the ones
+// written, whichever way: hand-written headers with comments and key/value pairs, the other byte order, trailing
+// bytes, a byte skip, one-byte voxels without an endian field; a file cut short is refused as before.
+TEST(VolumeStoredType, RawNrrdIsReadStraightIntoTheBufferAndEveryOtherThroughITK)
+{
+  const vr::test::ScopedTemporaryFolder folder;
+  const std::vector<short>              voxels = RandomShorts(4 * 3 * 2, 11);
+  auto                                  bytesOf = [&](bool bigEndian)
+  {
+    std::string bytes;
+    for (const short voxel : voxels)
+    {
+      char raw[2];
+      std::memcpy(raw, &voxel, 2);
+      if (bigEndian)
+      {
+        std::swap(raw[0], raw[1]);
+      }
+      bytes.append(raw, 2);
+    }
+    return bytes;
+  };
+  const std::string fields = "type: short\ndimension: 3\nspace: left-posterior-superior\nsizes: 4 3 2\n"
+                             "space directions: (0.5,0,0) (0,0.75,0) (0,0,1.25)\nspace origin: (1,2,3)\n"
+                             "encoding: raw\n";
+  struct Case
+  {
+    std::string Name;
+    std::string Text;
+  };
+  const std::vector<Case> cases{
+    { "attached",
+      "NRRD0004\n# a comment: with a colon\n" + fields + "endian: little\nscanner:=CT 1\n\n" + bytesOf(false) },
+    { "big-endian", "NRRD0004\n" + fields + "endian: big\n\n" + bytesOf(true) },
+    { "trailing-bytes", "NRRD0004\n" + fields + "endian: little\n\n" + bytesOf(false) + "extra" },
+    { "byte-skip", "NRRD0004\n" + fields + "endian: little\nbyte skip: 6\n\nskip!!" + bytesOf(false) },
+  };
+  for (const Case & c : cases)
+  {
+    SCOPED_TRACE(c.Name);
+    const std::string path = folder.File(c.Name + ".nrrd");
+    std::ofstream(path, std::ios::binary) << c.Text;
+    const vr::StoredVolume stored = vr::ReadStoredVolume(path);
+    ASSERT_EQ(stored.GetPixelType(), itk::IOComponentEnum::SHORT);
+    const auto * image = dynamic_cast<const Volume<short> *>(stored.Image.GetPointer());
+    ASSERT_NE(image, nullptr);
+    EXPECT_EQ(std::vector<short>(image->GetBufferPointer(), image->GetBufferPointer() + voxels.size()), voxels);
+    EXPECT_EQ(image->GetLargestPossibleRegion().GetSize(), (itk::Size<3>{ { 4, 3, 2 } }));
+    EXPECT_DOUBLE_EQ(image->GetSpacing()[1], 0.75);
+    EXPECT_DOUBLE_EQ(image->GetOrigin()[2], 3.0);
+  }
+
+  // One-byte voxels: no endian field is needed.
+  const std::string bytePath = folder.File("bytes.nrrd");
+  std::ofstream(bytePath, std::ios::binary) << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n"
+                                            << std::string("\x01\x02\x03\x04\xfb\xfc\xfd\xfe", 8);
+  const vr::StoredVolume bytes = vr::ReadStoredVolume(bytePath);
+  ASSERT_EQ(bytes.GetPixelType(), itk::IOComponentEnum::UCHAR);
+  const auto * byteImage = dynamic_cast<const Volume<unsigned char> *>(bytes.Image.GetPointer());
+  ASSERT_NE(byteImage, nullptr);
+  EXPECT_EQ(std::vector<int>(byteImage->GetBufferPointer(), byteImage->GetBufferPointer() + 8),
+            (std::vector<int>{ 1, 2, 3, 4, 251, 252, 253, 254 }));
+
+  // Cut short by one byte: refused, naming the file and the voxel data.
+  const std::string cut = folder.File("cut.nrrd");
+  const std::string whole = "NRRD0004\n" + fields + "endian: little\n\n" + bytesOf(false);
+  std::ofstream(cut, std::ios::binary) << whole.substr(0, whole.size() - 1);
+  const std::string message = InputErrorOf([&] { vr::ReadStoredVolume(cut); });
+  EXPECT_MESSAGE_HAS(message, cut);
+  EXPECT_MESSAGE_HAS(message, "voxel data");
+}

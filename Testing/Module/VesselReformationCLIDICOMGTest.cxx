@@ -216,7 +216,12 @@ TEST(DICOMSeriesModule, ASoundSeriesGivesTheCPROfTheSameVolumeAsNRRDAndNIfTI)
     std::string     Name;
     CTSeriesOptions Options;
   };
-  std::vector<Variant> variants(6);
+  // The series of one rescale are read in their stored type (uint16 with intercept -1024, int16, int16 with slope
+  // 0.5) and sampled with the rescale applied per sample in double; those of a rescale per file as float intensities.
+  // Against the float NRRD's CPR: 1e-3 HU, as everywhere in this suite: the phantom's values are whole HU (and their
+  // doubles exact), so the two differ only by the order of rescale and interpolation in double (about 1e-12 HU) and
+  // the CPR written as float (2^-24 of 3071 HU, 2e-4 HU); the volume read is equal to the phantom at every voxel.
+  std::vector<Variant> variants(7);
   variants[0].Name = "head-first";
   variants[1].Name = "feet-first";
   variants[1].Options.FeetFirst = true;
@@ -234,6 +239,9 @@ TEST(DICOMSeriesModule, ASoundSeriesGivesTheCPROfTheSameVolumeAsNRRDAndNIfTI)
   variants[4].Options.Encoding.ExplicitVR = false;
   variants[5].Name = "big-endian";
   variants[5].Options.Encoding.BigEndian = true;
+  variants[6].Name = "signed-one-rescale-slope-0.5";
+  variants[6].Options.Signed = true;
+  variants[6].Options.Rescale = [](unsigned int) { return std::pair<double, double>(0.5, -3.0); };
   for (const Variant & variant : variants)
   {
     SCOPED_TRACE(variant.Name);

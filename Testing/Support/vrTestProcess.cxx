@@ -67,4 +67,47 @@ RunProcess(const std::vector<std::string> & arguments, const std::string & captu
   std::filesystem::remove(err);
   return result;
 }
+std::vector<ProcessMapping>
+MappingsNamed(const std::string & part)
+{
+  std::vector<ProcessMapping> found;
+  std::ifstream               maps("/proc/self/maps");
+  for (std::string line; std::getline(maps, line);)
+  {
+    // "start-end perms offset dev inode   name"
+    std::istringstream fields(line);
+    std::string        range, perms, offset, device, inode;
+    fields >> range >> perms >> offset >> device >> inode;
+    std::string name;
+    std::getline(fields >> std::ws, name);
+    if (name.find(part) == std::string::npos)
+    {
+      continue;
+    }
+    const auto     dash = range.find('-');
+    ProcessMapping mapping;
+    mapping.Start = std::stoull(range.substr(0, dash), nullptr, 16);
+    mapping.End = std::stoull(range.substr(dash + 1), nullptr, 16);
+    mapping.Name = name;
+    found.push_back(mapping);
+  }
+  return found;
+}
+
+std::vector<std::string>
+OpenFilesNamed(const std::string & part)
+{
+  std::vector<std::string> found;
+  std::error_code          error;
+  for (const auto & entry : std::filesystem::directory_iterator("/proc/self/fd", error))
+  {
+    std::error_code linkError;
+    const auto      target = std::filesystem::read_symlink(entry.path(), linkError).string();
+    if (!linkError && target.find(part) != std::string::npos)
+    {
+      found.push_back(target);
+    }
+  }
+  return found;
+}
 } // namespace vr::test

@@ -108,6 +108,42 @@ PixelDataProblem(const std::string & file, const gdcm::DataSet & elements, const
   return std::string();
 }
 
+/** Why a value of \a stored rescaled is too large; empty when it is not. */
+template<typename TStored>
+std::string
+RescaledProblem(const std::string & file, TStored stored, double slope, double intercept, double & value)
+{
+  value = slope * static_cast<double>(stored) + intercept;
+  if (std::abs(value) <= LargestRescaledValue)
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text << "the DICOM file " << file << ": its Rescale Slope (0028,1053) " << slope << " and Rescale Intercept "
+       << "(0028,1052) " << intercept << " make its stored value " << +stored << " into " << value
+       << ", larger than 1e9 in size: not an image's values";
+  return text.str();
+}
+
+/** Checks the rescaled values of \a count stored values, which stay as they are. */
+template<typename TStored>
+std::string
+CheckRescaled(const std::string & file, const void * slice, std::size_t count, double slope, double intercept)
+{
+  const auto * stored = static_cast<const TStored *>(slice);
+  // Linear: the extremes of the stored values make the extremes of the rescaled ones.
+  const auto [low, high] = std::minmax_element(stored, stored + count);
+  double value = 0.0;
+  for (const TStored extreme : { *low, *high })
+  {
+    if (std::string problem = RescaledProblem(file, extreme, slope, intercept, value); !problem.empty())
+    {
+      return problem;
+    }
+  }
+  return std::string();
+}
+
 template<typename TStored>
 std::string
 Rescale(const std::string & file, const char * buffer, std::size_t count, double slope, double intercept, float * slice)
@@ -116,20 +152,54 @@ Rescale(const std::string & file, const char * buffer, std::size_t count, double
   {
     TStored stored;
     std::memcpy(&stored, buffer + k * sizeof(TStored), sizeof(TStored));
-    const double value = slope * static_cast<double>(stored) + intercept;
-    if (!(std::abs(value) <= LargestRescaledValue))
+    double value = 0.0;
+    if (std::string problem = RescaledProblem(file, stored, slope, intercept, value); !problem.empty())
     {
-      std::ostringstream text;
-      text << "the DICOM file " << file << ": its Rescale Slope (0028,1053) " << slope << " and Rescale Intercept "
-           << "(0028,1052) " << intercept << " make its stored value " << +stored << " into " << value
-           << ", larger than 1e9 in size: not an image's values";
-      return text.str();
+      return problem;
     }
     slice[k] = static_cast<float>(value);
   }
   return std::string();
 }
+itk::IOComponentEnum
+ComponentOf(gdcm::PixelFormat::ScalarType type)
+{
+  switch (type)
+  {
+    case gdcm::PixelFormat::UINT8:
+      return itk::IOComponentEnum::UCHAR;
+    case gdcm::PixelFormat::INT8:
+      return itk::IOComponentEnum::CHAR;
+    case gdcm::PixelFormat::UINT16:
+      return itk::IOComponentEnum::USHORT;
+    case gdcm::PixelFormat::INT16:
+      return itk::IOComponentEnum::SHORT;
+    case gdcm::PixelFormat::UINT32:
+      return itk::IOComponentEnum::UINT;
+    case gdcm::PixelFormat::INT32:
+      return itk::IOComponentEnum::INT;
+    default:
+      return itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
+  }
+}
 } // namespace
+
+itk::IOComponentEnum
+DICOMStoredPixelType(const DICOMImageLayout & layout)
+{
+  const bool isSigned = layout.PixelRepresentation == 1;
+  switch (layout.BitsAllocated)
+  {
+    case 8:
+      return isSigned ? itk::IOComponentEnum::CHAR : itk::IOComponentEnum::UCHAR;
+    case 16:
+      return isSigned ? itk::IOComponentEnum::SHORT : itk::IOComponentEnum::USHORT;
+    case 32:
+      return isSigned ? itk::IOComponentEnum::INT : itk::IOComponentEnum::UINT;
+    default:
+      return itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
+  }
+}
 
 std::string
 ReadDICOMPixels(const std::string &      file,
@@ -138,6 +208,20 @@ ReadDICOMPixels(const std::string &      file,
                 double                   intercept,
                 float *                  slice)
 {
+  itk::IOComponentEnum decoded = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
+  return ReadDICOMPixels(file, layout, slope, intercept, itk::IOComponentEnum::FLOAT, slice, decoded);
+}
+
+std::string
+ReadDICOMPixels(const std::string &      file,
+                const DICOMImageLayout & layout,
+                double                   slope,
+                double                   intercept,
+                itk::IOComponentEnum     pixelType,
+                void *                   slice,
+                itk::IOComponentEnum &   decoded)
+{
+  decoded = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
   gdcm::ImageReader reader;
   reader.SetFileName(file.c_str());
   if (!reader.Read())
@@ -176,29 +260,57 @@ ReadDICOMPixels(const std::string &      file,
          << layout.Columns << " x " << layout.Rows << ", " << layout.BitsAllocated << " bits allocated)";
     return text.str();
   }
-  std::vector<char> buffer(image.GetBufferLength());
-  if (!image.GetBuffer(buffer.data()))
+  const itk::IOComponentEnum type = ComponentOf(format.GetScalarType());
+  if (type == itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE)
+  {
+    return "the DICOM file " + file + ": GDCM decodes its pixels as " + format.GetScalarTypeAsString() +
+           ", which the reader does not take";
+  }
+  decoded = type;
+  if (pixelType != itk::IOComponentEnum::FLOAT && pixelType != type)
+  {
+    return std::string(); // the caller reads the series another way
+  }
+  // The stored values straight into the slice; for float, through a buffer of them.
+  std::vector<char> buffer(pixelType == itk::IOComponentEnum::FLOAT ? image.GetBufferLength() : 0);
+  char *            target = pixelType == itk::IOComponentEnum::FLOAT ? buffer.data() : static_cast<char *>(slice);
+  if (!image.GetBuffer(target))
   {
     return "the DICOM file " + file + ": GDCM cannot decode its pixel data (transfer syntax " +
            layout.TransferSyntaxFamily + ")";
   }
-  switch (format.GetScalarType())
+  auto * floats = static_cast<float *>(slice);
+  switch (pixelType == itk::IOComponentEnum::FLOAT ? type : itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE)
   {
-    case gdcm::PixelFormat::UINT8:
-      return Rescale<std::uint8_t>(file, buffer.data(), count, slope, intercept, slice);
-    case gdcm::PixelFormat::INT8:
-      return Rescale<std::int8_t>(file, buffer.data(), count, slope, intercept, slice);
-    case gdcm::PixelFormat::UINT16:
-      return Rescale<std::uint16_t>(file, buffer.data(), count, slope, intercept, slice);
-    case gdcm::PixelFormat::INT16:
-      return Rescale<std::int16_t>(file, buffer.data(), count, slope, intercept, slice);
-    case gdcm::PixelFormat::UINT32:
-      return Rescale<std::uint32_t>(file, buffer.data(), count, slope, intercept, slice);
-    case gdcm::PixelFormat::INT32:
-      return Rescale<std::int32_t>(file, buffer.data(), count, slope, intercept, slice);
+    case itk::IOComponentEnum::UCHAR:
+      return Rescale<std::uint8_t>(file, target, count, slope, intercept, floats);
+    case itk::IOComponentEnum::CHAR:
+      return Rescale<std::int8_t>(file, target, count, slope, intercept, floats);
+    case itk::IOComponentEnum::USHORT:
+      return Rescale<std::uint16_t>(file, target, count, slope, intercept, floats);
+    case itk::IOComponentEnum::SHORT:
+      return Rescale<std::int16_t>(file, target, count, slope, intercept, floats);
+    case itk::IOComponentEnum::UINT:
+      return Rescale<std::uint32_t>(file, target, count, slope, intercept, floats);
+    case itk::IOComponentEnum::INT:
+      return Rescale<std::int32_t>(file, target, count, slope, intercept, floats);
     default:
-      return "the DICOM file " + file + ": GDCM decodes its pixels as " + format.GetScalarTypeAsString() +
-             ", which the reader does not take";
+      break;
+  }
+  switch (type)
+  {
+    case itk::IOComponentEnum::UCHAR:
+      return CheckRescaled<std::uint8_t>(file, slice, count, slope, intercept);
+    case itk::IOComponentEnum::CHAR:
+      return CheckRescaled<std::int8_t>(file, slice, count, slope, intercept);
+    case itk::IOComponentEnum::USHORT:
+      return CheckRescaled<std::uint16_t>(file, slice, count, slope, intercept);
+    case itk::IOComponentEnum::SHORT:
+      return CheckRescaled<std::int16_t>(file, slice, count, slope, intercept);
+    case itk::IOComponentEnum::UINT:
+      return CheckRescaled<std::uint32_t>(file, slice, count, slope, intercept);
+    default:
+      return CheckRescaled<std::int32_t>(file, slice, count, slope, intercept);
   }
 }
 } // namespace vr::detail

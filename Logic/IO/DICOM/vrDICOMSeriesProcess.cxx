@@ -3,17 +3,16 @@
 
 #include "itkMetaDataObject.h"
 
+#include "vrDICOMMappedVolume.h"
 #include "vrDICOMReaderReport.h"
 #include "vrDICOMSeriesChoice.h"
-#include "vrITKMessages.h"
+#include "vrDICOMVolumeHandOver.h"
 #include "vrInputError.h"
-
-#include "itkImageFileReader.h"
-#include "itkMetaImageIO.h"
 
 #include <dlfcn.h>
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -148,13 +147,15 @@ SignalName(int signal)
   }
 }
 
-/** Runs \a helper with \a arguments, its standard output and error into \a messages; returns waitpid's status, or
+/** Runs \a helper with \a arguments, its standard output and error into \a messages and \a handOver at
+ * DICOMVolumeHandOverDescriptor; returns waitpid's status, or
  * -1 (errno kept in \a spawnError) when it could not be started. A helper still running after \a timeoutSeconds is
  * killed (SIGKILL) and \a timedOut set. */
 int
 RunHelper(const std::string &              helper,
           const std::vector<std::string> & arguments,
           const fs::path &                 messages,
+          int                              handOver,
           double                           timeoutSeconds,
           int &                            spawnError,
           bool &                           timedOut)
@@ -172,6 +173,8 @@ RunHelper(const std::string &              helper,
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  // The hand-over file at the descriptor the child expects (dup2 clears close-on-exec on the copy).
+  posix_spawn_file_actions_adddup2(&actions, handOver, DICOMVolumeHandOverDescriptor);
   pid_t child = -1;
   spawnError = ::posix_spawn(&child, helper.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
@@ -226,26 +229,40 @@ CountFiles(const std::string & folder)
   return count;
 }
 
-/** The volume the reader process handed over (today a MetaImage file in the scratch folder). */
-VolumeImageType::Pointer
-ReceiveVolume(const fs::path & output, const std::string & where)
+/** The file the reader process writes the voxels into, open in this process: a memfd (anonymous memory, gone with
+ * its last descriptor and mapping, so that nothing is left behind whatever ends either process), else an unnamed file
+ * in the private scratch folder (O_TMPFILE) for a system without memfd. Closed with this object. */
+class HandOverFile
 {
-  auto reader = itk::ImageFileReader<VolumeImageType>::New();
-  reader->SetImageIO(itk::MetaImageIO::New());
-  reader->SetFileName(output.string());
-  try
+public:
+  explicit HandOverFile(const fs::path & scratch)
   {
-    const ScopedConsoleCapture console;
-    reader->Update();
+    m_Descriptor = ::memfd_create("vrReadDICOMSeries volume", MFD_CLOEXEC | MFD_ALLOW_SEALING);
+    if (m_Descriptor < 0)
+    {
+      m_Descriptor = ::open(scratch.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
+    }
   }
-  catch (const itk::ExceptionObject & exception)
+  ~HandOverFile()
   {
-    throw InputError(where + ": the DICOM reader process handed over no volume: " + CondenseITKMessage(exception));
+    if (m_Descriptor >= 0)
+    {
+      ::close(m_Descriptor);
+    }
   }
-  VolumeImageType::Pointer volume = reader->GetOutput();
-  volume->DisconnectPipeline();
-  return volume;
-}
+  HandOverFile(const HandOverFile &) = delete;
+  HandOverFile &
+  operator=(const HandOverFile &) = delete;
+
+  int
+  Descriptor() const
+  {
+    return m_Descriptor;
+  }
+
+private:
+  int m_Descriptor{ -1 };
+};
 } // namespace
 
 double
@@ -321,7 +338,14 @@ ReadDICOMSeriesInChildProcess(const std::string & folder, const std::string & se
   {
     throw InputError(where + ": cannot read DICOM: no temporary folder could be made for the reader process");
   }
-  const fs::path    output = scratch.Path() / "series.mha";
+  const HandOverFile handOver(scratch.Path());
+  if (handOver.Descriptor() < 0)
+  {
+    throw InputError(where +
+                     ": cannot read DICOM: no file could be made for the reader process to hand the volume "
+                     "over in (" +
+                     std::strerror(errno) + ")");
+  }
   const fs::path    report = scratch.Path() / "report.txt";
   const fs::path    messages = scratch.Path() / "messages.txt";
   const std::size_t fileCount = CountFiles(folder);
@@ -334,14 +358,14 @@ ReadDICOMSeriesInChildProcess(const std::string & folder, const std::string & se
   {
     throw InputError(where + ": " + error.what());
   }
-  std::vector<std::string> arguments{ folder, output.string(), report.string() };
+  std::vector<std::string> arguments{ folder, std::to_string(DICOMVolumeHandOverDescriptor), report.string() };
   if (!series.empty())
   {
     arguments.push_back(series);
   }
   int       spawnError = 0;
   bool      timedOut = false;
-  const int status = RunHelper(helper, arguments, messages, timeout, spawnError, timedOut);
+  const int status = RunHelper(helper, arguments, messages, handOver.Descriptor(), timeout, spawnError, timedOut);
   if (status < 0)
   {
     throw InputError(where + ": cannot start the DICOM reader process " + helper + ": " + std::strerror(spawnError));
@@ -452,12 +476,12 @@ ReadDICOMSeriesInChildProcess(const std::string & folder, const std::string & se
     }
     throw InputError(where + ": GDCM's reader died " + step + detail + "; the series is not read");
   }
-  read.Volume = ReceiveVolume(output, where);
+  read.Volume = ReceiveDICOMVolume(handOver.Descriptor(), where);
   for (const auto & [key, value] : identity)
   {
     if (key.rfind("DICOM.", 0) == 0)
     {
-      itk::EncapsulateMetaData<std::string>(read.Volume->GetMetaDataDictionary(), key, value);
+      itk::EncapsulateMetaData<std::string>(read.Volume.Image->GetMetaDataDictionary(), key, value);
     }
   }
   return read;

@@ -2,7 +2,7 @@
 #ifndef vrDICOMSeriesProcess_h
 #define vrDICOMSeriesProcess_h
 
-#include "vrImageTypes.h"
+#include "vrStoredVolume.h"
 
 #include <cstddef>
 #include <string>
@@ -14,8 +14,10 @@ namespace vr::detail
 /** A series as the reader process handed it over. */
 struct DICOMSeriesRead
 {
-  /** Float, rescaled file by file; the first file's patient and study in its dictionary (vr::DICOMAttribute keys). */
-  VolumeImageType::Pointer Volume;
+  /** In the series' stored type with its rescale, or float intensities where the files' rescales differ or a gap is
+   * interpolated (docs/dicom-series.md "Values"); its buffer is the mapping the reader process wrote the voxels into.
+   * The first file's patient and study in the image's dictionary (vr::DICOMAttribute keys). */
+  StoredVolume Volume;
   /** What the volume's making changed that the user must know (a gap interpolated, a duplicate left out). */
   std::vector<std::string> Warnings;
   /** What was skipped and changes nothing (files that are not DICOM images). */

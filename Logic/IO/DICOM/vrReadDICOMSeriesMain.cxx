@@ -1,6 +1,8 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
-// vrReadDICOMSeries <folder> <output.mha> <report file> [<series>]: reads one DICOM series of <folder> into
-// <output.mha> (float, rescaled per file), as docs/dicom-series.md says: the folder's files examined one by one with
+// vrReadDICOMSeries <folder> <descriptor> <report file> [<series>]: reads one DICOM series of <folder> into the file
+// open at <descriptor> (the caller's hand-over file, vrDICOMVolumeHandOver.h: the voxels in the series' stored type
+// with its rescale, or float intensities where the files' rescales differ or a slice is interpolated), as
+// docs/dicom-series.md says: the folder's files examined one by one with
 // GDCM, sorted into series; one series read (the only one, or <series>: its number in the list or its Series Instance
 // UID), or the series listed and none read; every file of it checked against the others; its geometry from the files'
 // positions. It runs as a child process of the volume reader (vrDICOMSeriesProcess.cxx) because Debian's GDCM asserts,
@@ -13,10 +15,8 @@
 #include "vrDICOMReaderReport.h"
 #include "vrDICOMSeriesGroups.h"
 #include "vrDICOMSliceGeometry.h"
+#include "vrDICOMVolumeHandOver.h"
 
-#include "itkImage.h"
-#include "itkImageFileWriter.h"
-#include "itkMetaImageIO.h"
 #include "itkObject.h"
 
 #include <gdcmTrace.h>
@@ -25,6 +25,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -34,9 +35,9 @@
 namespace
 {
 using namespace vr::detail;
-using Volume = itk::Image<float, 3>;
-
 int ReportFile = -1;
+/** The hand-over file's descriptor (vrDICOMVolumeHandOver.h). */
+int HandOver = -1;
 
 /** Appends \a line to the report at once (no buffer a crash could lose). */
 void
@@ -85,6 +86,13 @@ struct Series
   {
     Report("file " + File(j));
     return ReadDICOMPixels(File(j), Layout, Layout.Slopes[j], Layout.Intercepts[j], slice);
+  }
+  /** Reads the pixels of file \a j into \a slice as ReadDICOMPixels() reads them as \a pixelType. */
+  std::string
+  Pixels(std::size_t j, itk::IOComponentEnum pixelType, void * slice, itk::IOComponentEnum & decoded) const
+  {
+    Report("file " + File(j));
+    return ReadDICOMPixels(File(j), Layout, Layout.Slopes[j], Layout.Intercepts[j], pixelType, slice, decoded);
   }
   std::string
   Pixels(std::size_t j, std::vector<float> & slice) const
@@ -186,7 +194,12 @@ main(int argc, char * argv[])
     return 2;
   }
   const std::string folder = argv[1];
-  const std::string output = argv[2];
+  // The descriptor the caller opened the hand-over file at.
+  if (std::string(argv[2]) != std::to_string(DICOMVolumeHandOverDescriptor))
+  {
+    return 2;
+  }
+  HandOver = DICOMVolumeHandOverDescriptor;
   const std::string choice = argc == 5 ? argv[4] : "";
   ReportFile = ::open(argv[3], O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0600);
   if (ReportFile < 0)
@@ -300,51 +313,73 @@ main(int argc, char * argv[])
                   std::to_string(series.Layout.Rows) + " x " + std::to_string(grid.Slices.size()) +
                   " voxels, more than 2^32 (is a file's Rows or Columns corrupt?)");
   }
-  std::vector<float> first;
-  if (std::string problem = series.Pixels(instances[grid.Slices.front().First], first); !problem.empty())
+  // The voxels' type: the files' stored one, kept with their one rescale, where every file has the same rescale and
+  // every slice is a file's; float intensities where the files' rescales differ (one stored type cannot hold them
+  // with one rescale) or a slice is interpolated (its values fall between the stored ones), and for 32-bit integers.
+  bool oneRescale = true;
+  for (const std::size_t j : instances)
   {
-    return Fail("message", problem + "; the series is not read");
+    oneRescale = oneRescale && series.Layout.Slopes[j] == series.Layout.Slopes[instances.front()] &&
+                 series.Layout.Intercepts[j] == series.Layout.Intercepts[instances.front()];
   }
-  auto               volume = Volume::New();
-  Volume::RegionType region;
-  region.SetSize({ { series.Layout.Columns, series.Layout.Rows, grid.Slices.size() } });
-  volume->SetRegions(region);
-  volume->Allocate();
-  Volume::SpacingType spacing;
-  spacing[0] = series.Layout.PixelSpacing[1];
-  spacing[1] = series.Layout.PixelSpacing[0];
-  spacing[2] = grid.SliceSpacing;
-  volume->SetSpacing(spacing);
-  Volume::PointType     origin;
-  Volume::DirectionType direction;
-  for (unsigned int c = 0; c < 3; ++c)
+  const bool interpolated = std::any_of(
+    grid.Slices.begin(), grid.Slices.end(), [](const DICOMSliceGrid::Slice & slice) { return slice.Weight != 0.0; });
+  const itk::IOComponentEnum storedType = DICOMStoredPixelType(series.Layout);
+  itk::IOComponentEnum       pixelType =
+    oneRescale && !interpolated && DICOMVolumePixelBytes(storedType) > 0 ? storedType : itk::IOComponentEnum::FLOAT;
+  const std::uint64_t volumeVoxels = sliceVoxels * grid.Slices.size();
+
+  // The first file read before the volume's memory is reserved: a series whose attributes are corrupt (Rows and
+  // Columns that make gigabytes) is refused by its first file, not by the memory it asks for.
   {
-    origin[c] = grid.Origin[c];
-    direction(c, 0) = series.Layout.Orientation[c];
-    direction(c, 1) = series.Layout.Orientation[3 + c];
-    direction(c, 2) = grid.Normal[c];
-  }
-  volume->SetOrigin(origin);
-  volume->SetDirection(direction);
-  float *                            voxels = volume->GetBufferPointer();
-  std::map<std::size_t, std::size_t> slicesOfFiles;
-  for (std::size_t k = 0; k < grid.Slices.size(); ++k)
-  {
-    const DICOMSliceGrid::Slice & slice = grid.Slices[k];
-    if (slice.Weight != 0.0)
-    {
-      continue;
-    }
-    slicesOfFiles[slice.First] = k;
-    if (k == 0)
-    {
-      std::copy(first.begin(), first.end(), voxels);
-    }
-    else if (std::string problem = series.Pixels(instances[slice.First], voxels + k * sliceVoxels); !problem.empty())
+    std::vector<float> first;
+    if (std::string problem = series.Pixels(instances[grid.Slices.front().First], first); !problem.empty())
     {
       return Fail("message", problem + "; the series is not read");
     }
   }
+
+  // The volume, written straight into the hand-over file: each grid slice its file's pixels, or two files'
+  // interpolated. Read again in float should GDCM decode a file in another type than the attributes say.
+  DICOMVolumeHandOverWriter handOver;
+  for (bool done = false; !done;)
+  {
+    if (std::string problem = handOver.Open(HandOver, pixelType, volumeVoxels); !problem.empty())
+    {
+      return Fail("write", problem);
+    }
+    const std::size_t sliceBytes = sliceVoxels * DICOMVolumePixelBytes(pixelType);
+    char *            voxels = static_cast<char *>(handOver.Voxels());
+    done = true;
+    for (std::size_t k = 0; k < grid.Slices.size() && done; ++k)
+    {
+      const DICOMSliceGrid::Slice & slice = grid.Slices[k];
+      if (slice.Weight != 0.0)
+      {
+        continue;
+      }
+      itk::IOComponentEnum decoded = itk::IOComponentEnum::UNKNOWNCOMPONENTTYPE;
+      if (std::string problem = series.Pixels(instances[slice.First], pixelType, voxels + k * sliceBytes, decoded);
+          !problem.empty())
+      {
+        return Fail("message", problem + "; the series is not read");
+      }
+      if (pixelType != itk::IOComponentEnum::FLOAT && decoded != pixelType)
+      {
+        pixelType = itk::IOComponentEnum::FLOAT;
+        done = false;
+      }
+    }
+  }
+  std::map<std::size_t, std::size_t> slicesOfFiles;
+  for (std::size_t k = 0; k < grid.Slices.size(); ++k)
+  {
+    if (grid.Slices[k].Weight == 0.0)
+    {
+      slicesOfFiles[grid.Slices[k].First] = k;
+    }
+  }
+  auto * floats = static_cast<float *>(handOver.Voxels());
   for (std::size_t k = 0; k < grid.Slices.size(); ++k)
   {
     const DICOMSliceGrid::Slice & slice = grid.Slices[k];
@@ -352,9 +387,9 @@ main(int argc, char * argv[])
     {
       continue;
     }
-    const float * a = voxels + slicesOfFiles.at(slice.First) * sliceVoxels;
-    const float * b = voxels + slicesOfFiles.at(slice.Second) * sliceVoxels;
-    float *       out = voxels + k * sliceVoxels;
+    const float * a = floats + slicesOfFiles.at(slice.First) * sliceVoxels;
+    const float * b = floats + slicesOfFiles.at(slice.Second) * sliceVoxels;
+    float *       out = floats + k * sliceVoxels;
     for (std::uint64_t v = 0; v < sliceVoxels; ++v)
     {
       out[v] = static_cast<float>((1.0 - slice.Weight) * a[v] + slice.Weight * b[v]);
@@ -371,18 +406,26 @@ main(int argc, char * argv[])
     Report("identity " + ReportText(key) + "\t" + ReportText(value));
   }
   Report("step write");
-  auto writer = itk::ImageFileWriter<Volume>::New();
-  writer->SetImageIO(itk::MetaImageIO::New());
-  writer->SetInput(volume);
-  writer->SetFileName(output);
-  try
+  DICOMVolumeHeader header;
+  header.Size[0] = series.Layout.Columns;
+  header.Size[1] = series.Layout.Rows;
+  header.Size[2] = grid.Slices.size();
+  header.Spacing[0] = series.Layout.PixelSpacing[1];
+  header.Spacing[1] = series.Layout.PixelSpacing[0];
+  header.Spacing[2] = grid.SliceSpacing;
+  for (unsigned int c = 0; c < 3; ++c)
   {
-    writer->Update();
+    header.Origin[c] = grid.Origin[c];
+    header.Direction[3 * c + 0] = series.Layout.Orientation[c];
+    header.Direction[3 * c + 1] = series.Layout.Orientation[3 + c];
+    header.Direction[3 * c + 2] = grid.Normal[c];
   }
-  catch (const itk::ExceptionObject & exception)
+  if (pixelType != itk::IOComponentEnum::FLOAT)
   {
-    return Fail("write", exception.GetDescription());
+    header.Slope = series.Layout.Slopes[instances.front()];
+    header.Intercept = series.Layout.Intercepts[instances.front()];
   }
+  handOver.Finish(header);
   Report("done " + std::to_string(grid.Slices.size()));
   return 0;
 }

@@ -9,6 +9,7 @@
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
 #include "vrNiftiVoxels.h"
+#include "vrNrrdRawVoxels.h"
 #include "vrURINames.h"
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
@@ -20,6 +21,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
@@ -57,14 +59,17 @@ ReadDICOMSeries(const std::string & folder, const VolumeReadOptions & options, V
 {
   const std::string       where = "volume folder " + folder;
   detail::DICOMSeriesRead read = detail::ReadDICOMSeriesInChildProcess(folder, options.DICOMSeries, where);
-  RequireFiniteVoxels(*read.Volume, where);
+  if (const auto * floatVolume = dynamic_cast<const VolumeImageType *>(read.Volume.Image.GetPointer()))
+  {
+    RequireFiniteVoxels(*floatVolume, where);
+  }
   if (report != nullptr)
   {
     report->Warnings.insert(report->Warnings.end(), read.Warnings.begin(), read.Warnings.end());
     report->Notes.insert(report->Notes.end(), read.Notes.begin(), read.Notes.end());
   }
-  // The reader process hands over float intensities (each file's rescale applied).
-  return StoredVolume{ read.Volume.GetPointer(), itk::CPRIntensityRescale() };
+  // In the series' stored type with its rescale, or float intensities (docs/dicom-series.md "Values").
+  return read.Volume;
 }
 
 /** "64 x 64 x 32 x 5" */
@@ -268,6 +273,40 @@ ReadNifti(itk::ImageIOBase * io, const std::string & path, const std::string & w
   return volume;
 }
 
+/** A raw NRRD whose voxels are read straight into the image's buffer (vrNrrdRawVoxels.h), at \a offset; the grid is
+ * the one ITK's reader gives the file. */
+template<typename TPixel>
+typename itk::Image<TPixel, 3>::Pointer
+ReadRawNrrd(itk::ImageIOBase * io, const std::string & path, std::uint64_t offset, const std::string & where)
+{
+  using ImageType = itk::Image<TPixel, 3>;
+  auto reader = itk::ImageFileReader<ImageType>::New();
+  reader->SetImageIO(io);
+  reader->SetFileName(path);
+  {
+    const detail::ScopedConsoleCapture console;
+    try
+    {
+      reader->UpdateOutputInformation();
+    }
+    catch (const itk::ExceptionObject & exception)
+    {
+      throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
+    }
+  }
+  auto volume = ImageType::New();
+  volume->CopyInformation(reader->GetOutput());
+  volume->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
+  volume->SetMetaDataDictionary(io->GetMetaDataDictionary());
+  volume->Allocate(); // not zeroed: every byte is read over
+  detail::ReadRawVoxels(path,
+                        offset,
+                        volume->GetBufferPointer(),
+                        volume->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(TPixel),
+                        where);
+  return volume;
+}
+
 /** Reads the volume as an image of TPixel, checks its voxels are finite and returns it with \a rescale. */
 template<typename TPixel>
 StoredVolume
@@ -280,8 +319,16 @@ ReadAs(itk::ImageIOBase *               io,
 {
   RequireMemoryForVoxels(
     voxels, sizeof(TPixel), StoredPixelTypeName(itk::ImageIOBase::MapPixelType<TPixel>::CType), where);
-  typename itk::Image<TPixel, 3>::Pointer volume =
-    nifti ? ReadNifti<TPixel>(io, path, where) : ReadWithITK<TPixel>(io, path, where);
+  std::optional<std::uint64_t> rawNrrd;
+  if (!nifti && std::string(io->GetNameOfClass()) == "NrrdImageIO" && !IsURIName(path) &&
+      io->GetNumberOfDimensions() == 3 && io->GetComponentType() == itk::ImageIOBase::MapPixelType<TPixel>::CType &&
+      io->GetNumberOfComponents() == 1)
+  {
+    rawNrrd = detail::RawNrrdVoxelOffset(path, voxels * sizeof(TPixel), sizeof(TPixel));
+  }
+  typename itk::Image<TPixel, 3>::Pointer volume = nifti     ? ReadNifti<TPixel>(io, path, where)
+                                                   : rawNrrd ? ReadRawNrrd<TPixel>(io, path, *rawNrrd, where)
+                                                             : ReadWithITK<TPixel>(io, path, where);
   RequireFiniteVoxels(*volume, where);
   return StoredVolume{ volume.GetPointer(), rescale };
 }
