@@ -14,15 +14,16 @@ namespace
 {
 constexpr float Infinity = std::numeric_limits<float>::infinity();
 
-/** The footprint samples of one band of rows that only the band's own pass reads, row-major from the band's first
- * pixel: the visible lumen (where the ray meets it, its centerline depth, radius and front), the front of the
- * centerline cell the rasteriser kept, and the nearest lumen wholly behind the visible one (where the ray meets it,
- * its depth and front, its branch index + 1). One set per thread, reused band after band, so that it stays in the
- * cache (whole-image arrays were first touched, and missed, at every footprint pixel). Written before they are read:
- * Offer() starts a pixel when its Branch is 0. */
+/** The footprint samples of one band of rows, row-major from the band's first pixel: the visible lumen (where the
+ * ray meets it, its centerline depth, radius and front), the nearest lumen back (min depth + radius, copied to the
+ * workspace for the hidden lengths), the front of the centerline cell the rasteriser kept, and the nearest lumen
+ * wholly behind the visible one (where the ray meets it, its depth and front, its branch index + 1). One set per
+ * thread, reused band after band, so that it stays in the cache (whole-image arrays were first touched, and missed, at
+ * every footprint pixel). Written before they are read: Offer() starts a pixel when its Branch is 0. */
 struct BandSamples
 {
   std::vector<float>    Key;
+  std::vector<float>    Back;
   std::vector<float>    Depth;
   std::vector<float>    Radius;
   std::vector<float>    Front;
@@ -36,7 +37,7 @@ struct BandSamples
   Resize(std::size_t count)
   {
     for (std::vector<float> * values :
-         { &Key, &Depth, &Radius, &Front, &CellFront, &HiddenKey, &HiddenDepth, &HiddenFront })
+         { &Key, &Back, &Depth, &Radius, &Front, &CellFront, &HiddenKey, &HiddenDepth, &HiddenFront })
     {
       values->resize(count);
     }
@@ -44,8 +45,8 @@ struct BandSamples
   }
 };
 
-/** Collects the footprint samples of every segment into the workspace (Branch and Back, per pixel of the image) and
- * the band's samples: the visible lumen per pixel, the nearest back, and the nearest lumen wholly behind the visible
+/** Collects the footprint samples of every segment of a band of rows: the visible lumen per pixel (its branch into
+ * the workspace, the rest into the band's samples), the nearest back, and the nearest lumen wholly behind the visible
  * one. */
 class FootprintCollector
 {
@@ -243,7 +244,7 @@ private:
     const uint32_t           current = w.Branch[k];
     if (current == 0)
     {
-      w.Back[k] = back;
+      band.Back[i] = back;
       band.Key[i] = keyValue;
       band.Depth[i] = depthValue;
       band.Radius[i] = static_cast<float>(radius);
@@ -252,7 +253,7 @@ private:
       band.HiddenBranch[i] = 0;
       return;
     }
-    w.Back[k] = std::min(w.Back[k], back);
+    band.Back[i] = std::min(band.Back[i], back);
     // Where the ray meets the lumen first; then the nearer centerline; then the smaller id (as the rasteriser).
     if (keyValue < band.Key[i] ||
         (keyValue == band.Key[i] &&
@@ -333,8 +334,8 @@ AssignVisibility(const CenterlineTree &            tree,
   const Vector<double, 2>  spacing = view.GetSpacing();
   const double             pixelSize = std::max(spacing[0], spacing[1]);
   CPRVisibilityWorkspace & w = workspace;
-  // Back is written before it is read (Offer() starts a pixel when its Branch is 0): only Branch is cleared, by each
-  // band for its rows.
+  // Back is written on every footprint pixel (Branch not 0), the only ones whose Back is read: only Branch is cleared,
+  // by each band for its rows.
   w.Back.resize(count);
   w.Branch.resize(count);
 
@@ -427,6 +428,7 @@ AssignVisibility(const CenterlineTree &            tree,
         const bool        centerline =
           pixels.Owner[k] == owner && !IsBehind(samples.CellFront[i], samples.Depth[i] + samples.Radius[i]);
         result.Owner[k] = owner;
+        w.Back[k] = samples.Back[i];
         result.Depth[k] = centerline ? static_cast<float>(pixels.Depth[k]) : samples.Depth[i];
         result.Fixed[k] = (centerline || (fixLumen && hasRadii[branch])) ? 1 : 0;
         result.Hidden[k] = samples.HiddenBranch[i] != 0 ? ids[samples.HiddenBranch[i] - 1] : 0;

@@ -21,8 +21,8 @@ struct CPRFootprintCell
 
 /** The buffers of AssignVisibility, kept between updates (a view that rotates allocates nothing new). Per pixel: the
  * branch index + 1 of the visible lumen (0 outside every footprint) and the nearest lumen back (min depth + radius),
- * which the hidden lengths read after the footprints; the rest of the footprint samples live per band of rows, with
- * the thread that computes the band. Only Branch is cleared for an update; Back is written before it is read. The
+ * which the hidden lengths read after the footprints (Back only where Branch is not 0); the rest of the footprint
+ * samples live per band of rows, with the thread that computes the band. Only Branch is cleared for an update. The
  * branches' projected points lie one after another. */
 struct CPRVisibilityWorkspace
 {
