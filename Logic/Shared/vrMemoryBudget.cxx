@@ -13,10 +13,11 @@ namespace vr
 {
 namespace
 {
-// Visibility mode's own bytes per pixel besides every update's (measured as those: 55.9-56.0 on both phantoms and the
-// aorta, 256 x 512 to 1024 x 2048): its footprint buffers (eleven of 4 bytes), the nearest fill's column winners, the
-// hidden labels of the assignment and their output node (4 each).
-constexpr double VisibilityBytesPerPixel = 56.0;
+// Visibility mode's own bytes per pixel besides every update's (measured as those: 24.0 on both phantoms at
+// 512 x 1024): its per-pixel footprint buffers (the visible branch and the nearest back), the nearest fill's column
+// winners, the hidden labels of the assignment and their output node (4 each), and each thread's band-sized footprint
+// samples (40 bytes x 32 rows x the width: about 4 a pixel at 512 x 1024, less on larger views).
+constexpr double VisibilityBytesPerPixel = 24.0;
 } // namespace
 
 double

@@ -29,6 +29,18 @@ Precedes(double distance, float depth, uint32_t owner, double otherDistance, flo
   }
   return owner < otherOwner;
 }
+
+/** One parabola of a row's lower envelope: its column, h(q), the squared vertical distance f(q) and its seed (row,
+ * depth, owner). */
+struct EnvelopeParabola
+{
+  long     Column;
+  double   Height;
+  double   VerticalSquared;
+  int32_t  SeedRow;
+  float    Depth;
+  uint32_t Owner;
+};
 } // namespace
 
 void
@@ -65,51 +77,60 @@ FillFromNearestSeeds(SizeValueType             width,
     [&](SizeValueType task)
     {
       const long first = static_cast<long>(task * ColumnsPerTask);
-      const long last = std::min(columns, first + static_cast<long>(ColumnsPerTask));
-      int32_t    lower[ColumnsPerTask];
-      for (long column = first; column < last; ++column)
+      const long n = std::min(columns, first + static_cast<long>(ColumnsPerTask)) - first;
+      // The nearest seed row at or above, then at or below, the current row of each column. The loops over the
+      // task's columns carry nothing from column to column and branch nowhere, so the compiler vectorises them; the
+      // rare ties go to a second loop.
+      int32_t upper[ColumnsPerTask];
+      int32_t lower[ColumnsPerTask];
+      std::fill_n(upper, n, None);
+      for (long row = 0; row < rows; ++row)
       {
-        const std::size_t k = static_cast<std::size_t>(column);
-        winner[k] = owner[k] != 0 ? 0 : None;
-      }
-      for (long row = 1; row < rows; ++row)
-      {
-        const std::size_t line = static_cast<std::size_t>(row) * width;
-        for (long column = first; column < last; ++column)
+        const uint32_t * seeds = owner.data() + static_cast<std::size_t>(row) * width + first;
+        int32_t *        winners = winner + static_cast<std::size_t>(row) * width + first;
+        for (long c = 0; c < n; ++c)
         {
-          const std::size_t k = line + column;
-          winner[k] = owner[k] != 0 ? static_cast<int32_t>(row) : winner[k - width];
+          upper[c] = seeds[c] != 0 ? static_cast<int32_t>(row) : upper[c];
+          winners[c] = upper[c];
         }
       }
-      std::fill_n(lower, last - first, None);
+      std::fill_n(lower, n, None);
       for (long row = rows - 1; row >= 0; --row)
       {
-        const std::size_t line = static_cast<std::size_t>(row) * width;
-        for (long column = first; column < last; ++column)
+        const uint32_t * seeds = owner.data() + static_cast<std::size_t>(row) * width + first;
+        int32_t *        winners = winner + static_cast<std::size_t>(row) * width + first;
+        const auto       here = static_cast<int32_t>(row);
+        int32_t          ties = 0;
+        for (long c = 0; c < n; ++c)
         {
-          const std::size_t k = line + column;
-          int32_t &         below = lower[column - first];
-          below = owner[k] != 0 ? static_cast<int32_t>(row) : below;
-          const int32_t above = winner[k];
-          if (below == None || below == above)
+          const int32_t below = seeds[c] != 0 ? here : lower[c];
+          lower[c] = below;
+          const int32_t above = winners[c];
+          // Whole rows apart on one spacing: the distances compare as integers; only a tie reads the seeds.
+          const int32_t toBelow = below - here;
+          const int32_t toAbove = here - above;
+          const bool    differ = below != None && below != above;
+          const bool    closer = above == None || toBelow < toAbove;
+          ties |= static_cast<int32_t>(differ && above != None && toBelow == toAbove);
+          winners[c] = differ && closer ? below : above;
+        }
+        if (ties == 0)
+        {
+          continue;
+        }
+        for (long c = 0; c < n; ++c)
+        {
+          const int32_t below = lower[c];
+          const int32_t above = winners[c];
+          if (below == None || above == None || below == above || below - here != here - above)
           {
             continue;
           }
-          // Whole rows apart on one spacing: the distances compare as integers; only a tie reads the seeds.
-          const long toBelow = below - row;
-          const long toAbove = row - above;
-          if (above == None || toBelow < toAbove)
+          const std::size_t a = static_cast<std::size_t>(above) * width + static_cast<std::size_t>(first + c);
+          const std::size_t b = static_cast<std::size_t>(below) * width + static_cast<std::size_t>(first + c);
+          if (Precedes(0.0, depth[b], owner[b], 0.0, depth[a], owner[a]))
           {
-            winner[k] = below;
-          }
-          else if (toBelow == toAbove)
-          {
-            const std::size_t a = static_cast<std::size_t>(above) * width + column;
-            const std::size_t b = static_cast<std::size_t>(below) * width + column;
-            if (Precedes(0.0, depth[b], owner[b], 0.0, depth[a], owner[a]))
-            {
-              winner[k] = below;
-            }
+            winners[c] = below;
           }
         }
       }
@@ -117,18 +138,17 @@ FillFromNearestSeeds(SizeValueType             width,
     nullptr);
 
   // Pass 2, per row: the lower envelope of g_q(x) = sx^2 (x - q)^2 + f(q) over the columns q with a winner, f(q) the
-  // squared vertical distance to it; intersections from h(q) = f(q) + sx^2 q^2.
+  // squared vertical distance to it; intersections from h(q) = f(q) + sx^2 q^2. Each parabola of the envelope reads
+  // its seed's depth and owner once, not once for every pixel it fills (the seeds lie in other rows: cache misses).
   const double sx2 = sx * sx;
   threader->ParallelizeArray(
     0,
     height,
     [&](SizeValueType rowIndex)
     {
-      thread_local std::vector<long>   envelope;
-      thread_local std::vector<double> heights;
-      thread_local std::vector<double> boundary;
+      thread_local std::vector<EnvelopeParabola> envelope;
+      thread_local std::vector<double>           boundary;
       envelope.resize(width);
-      heights.resize(width);
       boundary.resize(width + 1);
       const long        row = static_cast<long>(rowIndex);
       const std::size_t first = rowIndex * width;
@@ -141,11 +161,11 @@ FillFromNearestSeeds(SizeValueType             width,
           continue;
         }
         const double dy = (row - seedRow) * sy;
-        const double hq = dy * dy + sx2 * q * q;
+        const double dy2 = dy * dy;
+        const double hq = dy2 + sx2 * q * q;
         if (parabolas == 0)
         {
-          envelope[0] = q;
-          heights[0] = hq;
+          envelope[0] = { q, hq, dy2, seedRow, 0.0f, 0 };
           boundary[0] = -std::numeric_limits<double>::infinity();
           boundary[1] = std::numeric_limits<double>::infinity();
           parabolas = 1;
@@ -153,67 +173,97 @@ FillFromNearestSeeds(SizeValueType             width,
         }
         // A parabola that only ties the envelope at one point stays (strictly below pops), so that a tie at a
         // pixel finds every candidate among the envelope's neighbours there.
-        double s = (hq - heights[parabolas - 1]) / (2.0 * sx2 * (q - envelope[parabolas - 1]));
+        double s = (hq - envelope[parabolas - 1].Height) / (2.0 * sx2 * (q - envelope[parabolas - 1].Column));
         while (parabolas > 1 && s < boundary[parabolas - 1] - 1e-9 * (1.0 + std::abs(s)))
         {
           --parabolas;
-          s = (hq - heights[parabolas - 1]) / (2.0 * sx2 * (q - envelope[parabolas - 1]));
+          s = (hq - envelope[parabolas - 1].Height) / (2.0 * sx2 * (q - envelope[parabolas - 1].Column));
         }
-        envelope[parabolas] = q;
-        heights[parabolas] = hq;
+        envelope[parabolas] = { q, hq, dy2, seedRow, 0.0f, 0 };
         boundary[parabolas] = s;
         boundary[parabolas + 1] = std::numeric_limits<double>::infinity();
         ++parabolas;
       }
+      for (long k = 0; k < parabolas; ++k)
+      {
+        EnvelopeParabola & parabola = envelope[k];
+        const std::size_t  from =
+          static_cast<std::size_t>(parabola.SeedRow) * width + static_cast<std::size_t>(parabola.Column);
+        parabola.Depth = depth[from];
+        parabola.Owner = owner[from];
+      }
 
-      const auto source = [&](long q)
-      { return static_cast<std::size_t>(winner[first + q]) * width + static_cast<std::size_t>(q); };
       const auto distance = [&](long x, long k)
       {
-        const double dx = (x - envelope[k]) * sx;
-        const double dy = (row - winner[first + envelope[k]]) * sy;
-        return dx * dx + dy * dy;
+        const double dx = (x - envelope[k].Column) * sx;
+        return dx * dx + envelope[k].VerticalSquared;
       };
+      // Within a pixel of the ends of the envelope's interval, its neighbours may tie with its choice: Precedes
+      // decides, as Nearest mode orders candidates.
+      const auto isNearAnEnd = [&](long x, long k) { return x - boundary[k] < 1.0 || boundary[k + 1] - x < 1.0; };
+      const auto fillNearAnEnd = [&](long x, long k)
+      {
+        const std::size_t pixel = first + x;
+        if (owner[pixel] != 0)
+        {
+          return;
+        }
+        long   best = k;
+        double bestDistance = distance(x, k);
+        for (long neighbour = std::max(0L, k - 2); neighbour <= std::min(parabolas - 1, k + 2); ++neighbour)
+        {
+          if (neighbour == k)
+          {
+            continue;
+          }
+          const double d = distance(x, neighbour);
+          if (d < bestDistance || (d == bestDistance && Precedes(d,
+                                                                 envelope[neighbour].Depth,
+                                                                 envelope[neighbour].Owner,
+                                                                 bestDistance,
+                                                                 envelope[best].Depth,
+                                                                 envelope[best].Owner)))
+          {
+            best = neighbour;
+            bestDistance = d;
+          }
+        }
+        depth[pixel] = envelope[best].Depth;
+        owner[pixel] = envelope[best].Owner;
+      };
+      // Parabola k fills the pixels x with boundary[k] < x <= boundary[k + 1] (the first k whose interval reaches x),
+      // run by run: the pixels near its ends one by one (the test is monotone in x), those between from its seed.
       long k = 0;
-      for (long x = 0; x < columns; ++x)
+      for (long x = 0; x < columns;)
       {
         while (k + 1 < parabolas && boundary[k + 1] < x)
         {
           ++k;
         }
-        const std::size_t pixel = first + x;
-        if (owner[pixel] != 0)
+        const long end = boundary[k + 1] >= static_cast<double>(columns - 1)
+                           ? columns
+                           : static_cast<long>(std::floor(boundary[k + 1])) + 1;
+        long       low = x;
+        for (; low < end && isNearAnEnd(low, k); ++low)
         {
-          continue;
+          fillNearAnEnd(low, k);
         }
-        long best = k;
-        // Within a pixel of the ends of the envelope's interval, its neighbours may tie with its choice: Precedes
-        // decides, as Nearest mode orders candidates.
-        if (x - boundary[k] < 1.0 || boundary[k + 1] - x < 1.0)
+        long high = end;
+        for (; high > low && isNearAnEnd(high - 1, k); --high)
         {
-          double bestDistance = distance(x, k);
-          for (long neighbour = std::max(0L, k - 2); neighbour <= std::min(parabolas - 1, k + 2); ++neighbour)
+          fillNearAnEnd(high - 1, k);
+        }
+        const float    seedDepth = envelope[k].Depth;
+        const uint32_t seedOwner = envelope[k].Owner;
+        for (std::size_t pixel = first + low; pixel < first + high; ++pixel)
+        {
+          if (owner[pixel] == 0)
           {
-            if (neighbour == k)
-            {
-              continue;
-            }
-            const double d = distance(x, neighbour);
-            if (d < bestDistance || (d == bestDistance && Precedes(d,
-                                                                   depth[source(envelope[neighbour])],
-                                                                   owner[source(envelope[neighbour])],
-                                                                   bestDistance,
-                                                                   depth[source(envelope[best])],
-                                                                   owner[source(envelope[best])])))
-            {
-              best = neighbour;
-              bestDistance = d;
-            }
+            depth[pixel] = seedDepth;
+            owner[pixel] = seedOwner;
           }
         }
-        const std::size_t from = source(envelope[best]);
-        depth[pixel] = depth[from];
-        owner[pixel] = owner[from];
+        x = end;
       }
     },
     nullptr);

@@ -14,26 +14,80 @@ namespace
 {
 constexpr float Infinity = std::numeric_limits<float>::infinity();
 
-/** Collects the footprint samples of every segment into the workspace: the visible lumen per pixel, the nearest back,
- * and the nearest lumen wholly behind the visible one. */
+/** The footprint samples of one band of rows, row-major from the band's first pixel: the visible lumen (where the
+ * ray meets it, its centerline depth, radius and front), the nearest lumen back (min depth + radius, copied to the
+ * workspace for the hidden lengths), the front of the centerline cell the rasteriser kept, and the nearest lumen
+ * wholly behind the visible one (where the ray meets it, its depth and front, its branch index + 1). One set per
+ * thread, reused band after band, so that it stays in the cache (whole-image arrays were first touched, and missed, at
+ * every footprint pixel). Written before they are read: Offer() starts a pixel when its Branch is 0. */
+struct BandSamples
+{
+  std::vector<float>    Key;
+  std::vector<float>    Back;
+  std::vector<float>    Depth;
+  std::vector<float>    Radius;
+  std::vector<float>    Front;
+  std::vector<float>    CellFront;
+  std::vector<float>    HiddenKey;
+  std::vector<float>    HiddenDepth;
+  std::vector<float>    HiddenFront;
+  std::vector<uint32_t> HiddenBranch;
+
+  void
+  Resize(std::size_t count)
+  {
+    for (std::vector<float> * values :
+         { &Key, &Back, &Depth, &Radius, &Front, &CellFront, &HiddenKey, &HiddenDepth, &HiddenFront })
+    {
+      values->resize(count);
+    }
+    HiddenBranch.resize(count);
+  }
+};
+
+/** Collects the footprint samples of every segment of a band of rows: the visible lumen per pixel (its branch into
+ * the workspace, the rest into the band's samples), the nearest back, and the nearest lumen wholly behind the visible
+ * one. */
 class FootprintCollector
 {
 public:
-  /** Collects into the rows [\a firstRow, \a endRow) of the workspace. */
-  FootprintCollector(CPRVisibilityWorkspace &      workspace,
-                     const CPRCenterlinePixels &   pixels,
-                     const Vector<double, 2> &     spacing,
-                     const std::vector<uint32_t> & ids,
-                     long                          firstRow,
-                     long                          endRow)
+  /** Collects into the rows [\a firstRow, \a endRow) of the workspace and into \a samples (those rows' samples), the
+   * centerline cells into \a cells (emptied). */
+  FootprintCollector(CPRVisibilityWorkspace &        workspace,
+                     BandSamples &                   samples,
+                     const CPRCenterlinePixels &     pixels,
+                     const Vector<double, 2> &       spacing,
+                     const std::vector<uint32_t> &   ids,
+                     long                            firstRow,
+                     long                            endRow,
+                     std::vector<CPRFootprintCell> & cells)
     : m_Workspace(workspace)
+    , m_Samples(samples)
     , m_Pixels(pixels)
     , m_Width(static_cast<long>(pixels.Width))
     , m_Spacing(spacing)
     , m_Ids(ids)
     , m_FirstRow(firstRow)
     , m_EndRow(endRow)
+    , m_Cells(cells)
+    , m_BandFirst(static_cast<std::size_t>(firstRow * m_Width))
   {
+    m_Cells.clear();
+  }
+
+  /** The front of each centerline cell where the rasteriser's pixel is that very cell: it kept this branch at this
+   * depth (the same sum); the last such cell in the tree's order wins. Read after the band's segments, not at each
+   * cell, where the rasteriser's pixels, not otherwise in the cache, stalled the footprints. */
+  void
+  SetCellFronts() const
+  {
+    for (const CPRFootprintCell & cell : m_Cells)
+    {
+      if (m_Pixels.Owner[cell.Index] == cell.Owner && m_Pixels.Depth[cell.Index] == cell.Depth)
+      {
+        m_Samples.CellFront[cell.Index - m_BandFirst] = cell.Front;
+      }
+    }
   }
 
   /** Whether the segment from \a a to \a b, with its lumen reach \a reach (mm), can touch the band's rows. */
@@ -67,11 +121,7 @@ public:
       const auto   k = static_cast<std::size_t>(row * m_Width + column);
       const double front = depth - radius - tolerance;
       Offer(k, branch, depth, radius, depth, front);
-      // The rasteriser's centerline pixel is this very cell when it kept this branch at this depth (the same sum).
-      if (m_Pixels.Owner[k] == m_Ids[branch] && m_Pixels.Depth[k] == depth)
-      {
-        m_Workspace.CellFront[k] = static_cast<float>(front);
-      }
+      m_Cells.push_back({ k, m_Ids[branch], depth, static_cast<float>(front) });
     };
     if (IsDegenerateSegment(a, b))
     {
@@ -86,10 +136,7 @@ public:
           const double radius = t == 0.0 ? ra : rb;
           const double front = end->Depth - radius - tolerance;
           Offer(k, branch, end->Depth, radius, end->Depth, front);
-          if (m_Pixels.Owner[k] == m_Ids[branch] && m_Pixels.Depth[k] == end->Depth)
-          {
-            m_Workspace.CellFront[k] = static_cast<float>(front);
-          }
+          m_Cells.push_back({ k, m_Ids[branch], end->Depth, static_cast<float>(front) });
         }
       }
       return;
@@ -188,6 +235,8 @@ private:
   Offer(std::size_t k, uint32_t branch, double depth, double radius, double key, double front)
   {
     CPRVisibilityWorkspace & w = m_Workspace;
+    BandSamples &            band = m_Samples;
+    const std::size_t        i = k - m_BandFirst;
     const auto               back = static_cast<float>(depth + radius);
     const auto               keyValue = static_cast<float>(key);
     const auto               depthValue = static_cast<float>(depth);
@@ -195,64 +244,67 @@ private:
     const uint32_t           current = w.Branch[k];
     if (current == 0)
     {
-      w.Back[k] = back;
-      w.Key[k] = keyValue;
-      w.Depth[k] = depthValue;
-      w.Radius[k] = static_cast<float>(radius);
-      w.Front[k] = frontValue;
+      band.Back[i] = back;
+      band.Key[i] = keyValue;
+      band.Depth[i] = depthValue;
+      band.Radius[i] = static_cast<float>(radius);
+      band.Front[i] = frontValue;
       w.Branch[k] = branch + 1;
-      w.HiddenBranch[k] = 0;
+      band.HiddenBranch[i] = 0;
       return;
     }
-    w.Back[k] = std::min(w.Back[k], back);
+    band.Back[i] = std::min(band.Back[i], back);
     // Where the ray meets the lumen first; then the nearer centerline; then the smaller id (as the rasteriser).
-    if (keyValue < w.Key[k] ||
-        (keyValue == w.Key[k] &&
-         (depthValue < w.Depth[k] || (depthValue == w.Depth[k] && m_Ids[branch] < m_Ids[current - 1]))))
+    if (keyValue < band.Key[i] ||
+        (keyValue == band.Key[i] &&
+         (depthValue < band.Depth[i] || (depthValue == band.Depth[i] && m_Ids[branch] < m_Ids[current - 1]))))
     {
       // The new visible lumen: the one it replaces is the nearest behind it if it lies wholly behind it (it had the
       // best key so far); else the lumen behind stays if it is still wholly behind.
-      if (IsBehind(w.Front[k], back))
+      if (IsBehind(band.Front[i], back))
       {
-        w.HiddenKey[k] = w.Key[k];
-        w.HiddenDepth[k] = w.Depth[k];
-        w.HiddenFront[k] = w.Front[k];
-        w.HiddenBranch[k] = current;
+        band.HiddenKey[i] = band.Key[i];
+        band.HiddenDepth[i] = band.Depth[i];
+        band.HiddenFront[i] = band.Front[i];
+        band.HiddenBranch[i] = current;
       }
-      else if (w.HiddenBranch[k] != 0 && !IsBehind(w.HiddenFront[k], back))
+      else if (band.HiddenBranch[i] != 0 && !IsBehind(band.HiddenFront[i], back))
       {
-        w.HiddenBranch[k] = 0;
+        band.HiddenBranch[i] = 0;
       }
-      w.Key[k] = keyValue;
-      w.Depth[k] = depthValue;
-      w.Radius[k] = static_cast<float>(radius);
-      w.Front[k] = frontValue;
+      band.Key[i] = keyValue;
+      band.Depth[i] = depthValue;
+      band.Radius[i] = static_cast<float>(radius);
+      band.Front[i] = frontValue;
       w.Branch[k] = branch + 1;
       return;
     }
-    if (!IsBehind(frontValue, w.Depth[k] + w.Radius[k]))
+    if (!IsBehind(frontValue, band.Depth[i] + band.Radius[i]))
     {
       return;
     }
-    const uint32_t hidden = w.HiddenBranch[k];
-    if (hidden == 0 || keyValue < w.HiddenKey[k] ||
-        (keyValue == w.HiddenKey[k] &&
-         (depthValue < w.HiddenDepth[k] || (depthValue == w.HiddenDepth[k] && m_Ids[branch] < m_Ids[hidden - 1]))))
+    const uint32_t hidden = band.HiddenBranch[i];
+    if (hidden == 0 || keyValue < band.HiddenKey[i] ||
+        (keyValue == band.HiddenKey[i] && (depthValue < band.HiddenDepth[i] ||
+                                           (depthValue == band.HiddenDepth[i] && m_Ids[branch] < m_Ids[hidden - 1]))))
     {
-      w.HiddenKey[k] = keyValue;
-      w.HiddenDepth[k] = depthValue;
-      w.HiddenFront[k] = frontValue;
-      w.HiddenBranch[k] = branch + 1;
+      band.HiddenKey[i] = keyValue;
+      band.HiddenDepth[i] = depthValue;
+      band.HiddenFront[i] = frontValue;
+      band.HiddenBranch[i] = branch + 1;
     }
   }
 
-  CPRVisibilityWorkspace &      m_Workspace;
-  const CPRCenterlinePixels &   m_Pixels;
-  long                          m_Width;
-  Vector<double, 2>             m_Spacing;
-  const std::vector<uint32_t> & m_Ids;
-  long                          m_FirstRow;
-  long                          m_EndRow;
+  CPRVisibilityWorkspace &        m_Workspace;
+  BandSamples &                   m_Samples;
+  const CPRCenterlinePixels &     m_Pixels;
+  long                            m_Width;
+  Vector<double, 2>               m_Spacing;
+  const std::vector<uint32_t> &   m_Ids;
+  long                            m_FirstRow;
+  long                            m_EndRow;
+  std::vector<CPRFootprintCell> & m_Cells;
+  std::size_t                     m_BandFirst;
 };
 
 /** Rows per band of the footprint pass: each band's pixels are written by one task, in the tree's order of
@@ -282,15 +334,10 @@ AssignVisibility(const CenterlineTree &            tree,
   const Vector<double, 2>  spacing = view.GetSpacing();
   const double             pixelSize = std::max(spacing[0], spacing[1]);
   CPRVisibilityWorkspace & w = workspace;
-  // Written before they are read (Offer() starts a pixel when its Branch is 0; CellFront is set on every centerline
-  // pixel): only Branch is cleared, by each band for its rows.
-  for (std::vector<float> * values :
-       { &w.Key, &w.Depth, &w.Radius, &w.Front, &w.Back, &w.CellFront, &w.HiddenKey, &w.HiddenDepth, &w.HiddenFront })
-  {
-    values->resize(count);
-  }
-  w.Branch.resize(count); // cleared band by band, in parallel
-  w.HiddenBranch.assign(count, 0);
+  // Back is written on every footprint pixel (Branch not 0), the only ones whose Back is read: only Branch is cleared,
+  // by each band for its rows.
+  w.Back.resize(count);
+  w.Branch.resize(count);
 
   std::vector<uint32_t>      ids;
   std::vector<unsigned char> hasRadii;
@@ -326,6 +373,7 @@ AssignVisibility(const CenterlineTree &            tree,
   result.Fixed.resize(count);
   result.Owner.resize(count);
   result.Hidden.resize(count);
+  w.BandCells.resize(static_cast<std::size_t>(bands));
   threader->ParallelizeArray(
     0,
     static_cast<SizeValueType>(bands),
@@ -336,7 +384,9 @@ AssignVisibility(const CenterlineTree &            tree,
       std::fill(w.Branch.begin() + firstRow * static_cast<long>(width),
                 w.Branch.begin() + endRow * static_cast<long>(width),
                 0);
-      FootprintCollector collector(w, pixels, spacing, ids, firstRow, endRow);
+      thread_local BandSamples samples;
+      samples.Resize(static_cast<std::size_t>(RowsPerBand) * width);
+      FootprintCollector collector(w, samples, pixels, spacing, ids, firstRow, endRow, w.BandCells[band]);
       for (std::size_t b = 0; b < ids.size(); ++b)
       {
         const CPRProjectedPoint * p = w.Projected.data() + w.FirstPoint[b];
@@ -356,27 +406,32 @@ AssignVisibility(const CenterlineTree &            tree,
           }
         }
       }
+      collector.SetCellFronts();
       // The band's depth, owner, fixed flag and hidden label while its rows are in the cache; the pixels outside every
-      // footprint are free and wait for the fill.
-      for (std::size_t k = static_cast<std::size_t>(firstRow) * width; k < static_cast<std::size_t>(endRow) * width;
-           ++k)
+      // footprint (most of them: cleared as a block first) are free and wait for the fill.
+      const std::size_t bandFirst = static_cast<std::size_t>(firstRow) * width;
+      const std::size_t bandEnd = static_cast<std::size_t>(endRow) * width;
+      std::fill(result.Owner.begin() + bandFirst, result.Owner.begin() + bandEnd, 0);
+      std::fill(result.Fixed.begin() + bandFirst, result.Fixed.begin() + bandEnd, 0);
+      std::fill(result.Hidden.begin() + bandFirst, result.Hidden.begin() + bandEnd, 0);
+      for (std::size_t k = bandFirst; k < bandEnd; ++k)
       {
         if (w.Branch[k] == 0)
         {
-          result.Owner[k] = 0;
-          result.Fixed[k] = 0;
-          result.Hidden[k] = 0;
           continue;
         }
         const uint32_t branch = w.Branch[k] - 1;
         const uint32_t owner = ids[branch];
         // The vessel's own centerline pixel keeps the rasteriser's depth (as in every mode), unless it is a stretch
         // of the same vessel lying behind the visible one (a loop seen end-on).
-        const bool centerline = pixels.Owner[k] == owner && !IsBehind(w.CellFront[k], w.Depth[k] + w.Radius[k]);
+        const std::size_t i = k - bandFirst;
+        const bool        centerline =
+          pixels.Owner[k] == owner && !IsBehind(samples.CellFront[i], samples.Depth[i] + samples.Radius[i]);
         result.Owner[k] = owner;
-        result.Depth[k] = centerline ? static_cast<float>(pixels.Depth[k]) : w.Depth[k];
+        w.Back[k] = samples.Back[i];
+        result.Depth[k] = centerline ? static_cast<float>(pixels.Depth[k]) : samples.Depth[i];
         result.Fixed[k] = (centerline || (fixLumen && hasRadii[branch])) ? 1 : 0;
-        result.Hidden[k] = w.HiddenBranch[k] != 0 ? ids[w.HiddenBranch[k] - 1] : 0;
+        result.Hidden[k] = samples.HiddenBranch[i] != 0 ? ids[samples.HiddenBranch[i] - 1] : 0;
       }
     },
     nullptr);

@@ -9,29 +9,30 @@
 
 namespace itk::detail
 {
-/** The buffers of AssignVisibility, kept between updates (a view that rotates allocates nothing new). Per pixel:
- * the visible lumen (where the ray meets it, its centerline depth, radius and front, its branch index + 1; 0 outside
- * every footprint), the nearest lumen back (min depth + radius), the front of the centerline cell the rasteriser kept,
- * and the nearest lumen wholly behind the visible one (where the ray meets it, its depth and front, its branch index +
- * 1). Only
- * Branch is cleared for an update; the others are written before they are read. The branches' projected points lie
- * one after another. */
+/** A centerline cell a segment's footprint passed through (TraverseSegmentCells): its pixel, the branch id, the
+ * centerline depth there and the front of the segment's lumen. */
+struct CPRFootprintCell
+{
+  std::size_t Index;
+  uint32_t    Owner;
+  double      Depth;
+  float       Front;
+};
+
+/** The buffers of AssignVisibility, kept between updates (a view that rotates allocates nothing new). Per pixel: the
+ * branch index + 1 of the visible lumen (0 outside every footprint) and the nearest lumen back (min depth + radius),
+ * which the hidden lengths read after the footprints (Back only where Branch is not 0); the rest of the footprint
+ * samples live per band of rows, with the thread that computes the band. Only Branch is cleared for an update. The
+ * branches' projected points lie one after another. */
 struct CPRVisibilityWorkspace
 {
-  std::vector<float>             Key;
-  std::vector<float>             Depth;
-  std::vector<float>             Radius;
-  std::vector<float>             Front;
   std::vector<uint32_t>          Branch;
   std::vector<float>             Back;
-  std::vector<float>             CellFront;
-  std::vector<float>             HiddenKey;
-  std::vector<float>             HiddenDepth;
-  std::vector<float>             HiddenFront;
-  std::vector<uint32_t>          HiddenBranch;
   std::vector<CPRProjectedPoint> Projected;
   std::vector<std::size_t>       FirstPoint;
-  CPRNearestFillWorkspace        Fill;
+  /** Per band of rows, the centerline cells of its segments, in the tree's order. */
+  std::vector<std::vector<CPRFootprintCell>> BandCells;
+  CPRNearestFillWorkspace                    Fill;
 };
 
 /** Visibility mode (docs/design.md "Depth"): every segment of every branch has a lumen footprint, the pixels whose
