@@ -99,7 +99,7 @@ struct VesselReformationLogic::Internals
   const ResampleFilterType * CPRFrom{ nullptr };
   /** The stage counts when the output nodes were last made: a stage that ran since (also in an update that was
    * cancelled later) gets its node made anew. */
-  StageCounts Refreshed;
+  ReformationStageCounts Refreshed;
 
   std::string InputWarning;
   std::string SegmentationWarning;
@@ -115,7 +115,7 @@ struct VesselReformationLogic::Internals
   detail::OcclusionProfileCache Profile;
 
   ReformationOutputs Outputs;
-  StageCounts        Counts;
+  ReformationStageCounts        Counts;
 
   Internals()
   {
@@ -168,7 +168,7 @@ struct VesselReformationLogic::Internals
   std::vector<itk::ProcessObject *>
   Filters() const;
   void
-  RefreshOutputs(const StageCounts & now);
+  RefreshOutputs(const ReformationStageCounts & now);
 };
 } // namespace vr
 

@@ -199,7 +199,7 @@ protected:
 };
 
 inline void
-ExpectCounts(const vr::StageCounts & counts,
+ExpectCounts(const vr::ReformationStageCounts & counts,
              unsigned                depth,
              unsigned                relax,
              unsigned                resample,
