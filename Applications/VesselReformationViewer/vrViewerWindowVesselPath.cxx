@@ -68,27 +68,27 @@ ViewerWindow::ConnectVesselPath()
             m_CPRView->SetPathMarker(center);
             m_ThreeDView->SetPathMarker(center);
           });
-  connect(m_PathPanel,
-          &VesselPathPanel::pathOpened,
-          this,
-          [this](int branchId)
-          {
-            std::vector<itk::Point<double, 3>> points;
-            for (const auto & section : m_PathPanel->GetOutputs().Sections)
-            {
-              points.push_back(section.Center);
-            }
-            m_ThreeDView->SetPath(points);
-            m_Layout->ShowPathPanel();
-            EnableSectionKeys(true);
-            const QString name = branchId > 0 && m_CurrentInputs
-                                   ? QString::fromStdString(m_CurrentInputs->BranchName(branchId))
-                                   : tr("the longest path");
-            statusBar()->showMessage(tr("Opened the path to %1 (%2 ms)")
-                                       .arg(name)
-                                       .arg(std::lround(1000.0 * m_PathPanel->GetLastUpdateSeconds())),
-                                     5000);
-          });
+  connect(
+    m_PathPanel,
+    &VesselPathPanel::pathOpened,
+    this,
+    [this](int branchId)
+    {
+      std::vector<itk::Point<double, 3>> points;
+      for (const auto & section : m_PathPanel->GetOutputs().Sections)
+      {
+        points.push_back(section.Center);
+      }
+      m_ThreeDView->SetPath(points);
+      m_Layout->ShowPathPanel();
+      EnableSectionKeys(true);
+      const QString name = branchId > 0 && m_CurrentInputs
+                             ? QString::fromStdString(m_CurrentInputs->BranchName(branchId))
+                             : tr("the longest path");
+      statusBar()->showMessage(
+        tr("Opened the path to %1 (%2 ms)").arg(name).arg(std::lround(1000.0 * m_PathPanel->GetLastUpdateSeconds())),
+        5000);
+    });
   connect(m_PathPanel,
           &VesselPathPanel::errorOccurred,
           this,

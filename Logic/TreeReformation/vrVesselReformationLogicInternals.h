@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The state of vr::VesselReformationLogic behind its interface, shared by the files that implement it
-// (vrVesselReformationLogicUpdate.cxx: the pipeline and the update; vrVesselReformationLogicInputs.cxx: the inputs' checks
-// and the centerline extraction). Not installed.
+// (vrVesselReformationLogicUpdate.cxx: the pipeline and the update; vrVesselReformationLogicInputs.cxx: the inputs'
+// checks and the centerline extraction). Not installed.
 #ifndef vrVesselReformationLogicInternals_h
 #define vrVesselReformationLogicInternals_h
 
@@ -114,8 +114,8 @@ struct VesselReformationLogic::Internals
 
   detail::OcclusionProfileCache Profile;
 
-  ReformationOutputs Outputs;
-  ReformationStageCounts        Counts;
+  ReformationOutputs     Outputs;
+  ReformationStageCounts Counts;
 
   Internals()
   {

@@ -507,7 +507,7 @@ VesselReformationLogic::GetOutputs() const
 ReformationStageCounts
 VesselReformationLogic::GetStageCounts() const
 {
-  ReformationStageCounts                  counts = m_Internals->Counts;
+  ReformationStageCounts       counts = m_Internals->Counts;
   const detail::StageMonitor & monitor = m_Internals->Monitor;
   counts.Extraction = monitor.GetRuns(detail::Stage::Extraction);
   counts.Depth = monitor.GetRuns(detail::Stage::Depth);

@@ -3,6 +3,7 @@
 
 #include "itkCPRVolumeSampler.h"
 #include "itkCrossSectionStackImageFilter.h"
+#include "itkImageDuplicator.h"
 #include "itkRotationMinimizingFrame.h"
 #include "itkStraightenedCPRImageFilter.h"
 #include "vrInputError.h"
@@ -52,6 +53,17 @@ struct ImageStamp
     return !(*this == other);
   }
 };
+
+/** A copy of \a image, buffer and geometry, of its own. */
+template<typename TImage>
+typename TImage::Pointer
+CopyOf(const TImage * image)
+{
+  auto duplicator = itk::ImageDuplicator<TImage>::New();
+  duplicator->SetInputImage(image);
+  duplicator->Update();
+  return duplicator->GetOutput();
+}
 
 std::string
 Describe(const itk::ExceptionObject & error)
@@ -476,15 +488,16 @@ VesselPathLogic::Internals::RunResampling()
   {
     throw InputError(Describe(error));
   }
-  // Taken out of the pipeline: the next run makes new images, and the ones handed out stay as they are.
+  // Taken out of the pipeline: the next run makes new images, and the ones handed out stay as they are (the filter's
+  // further outputs, which ITK cannot disconnect from it, copied: each is the CPR's size).
   Results.CPR = CPRFilter->GetOutput();
   Results.CPR->DisconnectPipeline();
   Results.FoldMask = CPRFilter->GetFoldMask();
-  Results.FoldMask->DisconnectPipeline();
+  Results.FoldMask = CopyOf(Results.FoldMask.GetPointer());
   Results.Points = PointImageEnabled ? VesselPathOutputs::PointImageType::Pointer(CPRFilter->GetPointImage()) : nullptr;
   if (Results.Points)
   {
-    Results.Points->DisconnectPipeline();
+    Results.Points = CopyOf(Results.Points.GetPointer());
   }
   Results.FoldedPixels = CPRFilter->GetNumberOfFoldedPixels();
   Results.FoldFreeHalfWidth = CPRFilter->GetFoldFreeHalfWidth();
@@ -634,19 +647,17 @@ VesselPathLogic::Internals::UpdateStages()
     RunFrame();
   }
   const VesselPathParameters & sampled = ResampledParameters;
-  if (!ResamplingValid || ResampledVolume != ImageStamp::Of(Volume.GetPointer()) ||
-      ResampledRescale != Rescale || sampled.Reformation != p.Reformation ||
-      sampled.RollInDegrees != p.RollInDegrees || sampled.Width != p.Width || sampled.PixelSpacing != p.PixelSpacing ||
-      sampled.Interpolation != p.Interpolation || sampled.SlabThickness != p.SlabThickness ||
-      sampled.SlabMode != p.SlabMode || ResampledStack != CrossSectionsEnabled ||
-      ResampledPoints != PointImageEnabled)
+  if (!ResamplingValid || ResampledVolume != ImageStamp::Of(Volume.GetPointer()) || ResampledRescale != Rescale ||
+      sampled.Reformation != p.Reformation || sampled.RollInDegrees != p.RollInDegrees || sampled.Width != p.Width ||
+      sampled.PixelSpacing != p.PixelSpacing || sampled.Interpolation != p.Interpolation ||
+      sampled.SlabThickness != p.SlabThickness || sampled.SlabMode != p.SlabMode ||
+      ResampledStack != CrossSectionsEnabled || ResampledPoints != PointImageEnabled)
   {
     StopIfAborted("resampling");
     RunResampling();
   }
   if (!MeasurementValid || MeasuredMask != ImageStamp::Of(Mask.GetPointer()) ||
-      MeasuredReferences != p.ReferencePoints || MeasuredMethod != p.ReferenceMethod ||
-      MeasuredScale != p.GradingScale)
+      MeasuredReferences != p.ReferencePoints || MeasuredMethod != p.ReferenceMethod || MeasuredScale != p.GradingScale)
   {
     StopIfAborted("measurement");
     ReportProgress(0.85, "measurement");

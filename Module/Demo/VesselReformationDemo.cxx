@@ -57,7 +57,9 @@ struct DetailRegion
 };
 
 void
-PrintStages(const vr::ReformationOutputs & outputs, const vr::ReformationStageCounts & before, const vr::ReformationStageCounts & after)
+PrintStages(const vr::ReformationOutputs &     outputs,
+            const vr::ReformationStageCounts & before,
+            const vr::ReformationStageCounts & after)
 {
   auto line = [](const char * stage, double seconds, unsigned int runs)
   {

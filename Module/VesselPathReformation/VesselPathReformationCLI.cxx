@@ -207,10 +207,13 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   };
   stopIfCancelled("reading");
 
-  // The logic takes nodes, as a platform holds them (the volume's voxels shared, the tree in RAS).
+  // The logic takes nodes, as a platform holds them: the volume's voxels shared, the centerlines in RAS with the tree
+  // read as their conversion (the branches as the file numbers them).
   vr::VesselPathLogic logic;
   logic.SetVolumeNode(vr::ConvertStoredVolumeToVolumeNode(volume, "volume"));
-  logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, "centerlines"));
+  const auto centerlines = vr::ConvertTreeToCenterlineNode(tree, "centerlines");
+  logic.GetInputCache()->SetCenterlines(centerlines, tree);
+  logic.SetCenterlineNode(centerlines);
   if (hasSegmentation)
   {
     logic.SetSegmentationNode(vr::MakeSegmentationNode(segmentation));

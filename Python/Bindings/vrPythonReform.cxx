@@ -15,7 +15,6 @@
 
 #include <pybind11/stl.h>
 
-
 #include <cmath>
 #include <map>
 

@@ -227,7 +227,9 @@ VesselPath(const py::object & volumeArgument, const py::object & centerlinesArgu
           const auto node = NodeOver(volume);
           logic.SetVolumeNode(node);
           logic.GetInputCache()->SetVolume(node, volume.Image);
-          logic.SetCenterlineNode(ConvertTreeToCenterlineNode(tree, "centerlines"));
+          const auto centerlines = ConvertTreeToCenterlineNode(tree, "centerlines");
+          logic.GetInputCache()->SetCenterlines(centerlines, tree);
+          logic.SetCenterlineNode(centerlines);
           if (segmentation)
           {
             logic.SetSegmentationNode(MakeSegmentationNode(*segmentation));

@@ -212,7 +212,9 @@ TEST_P(LargeVolume, IsReadReformedAndReadAsOneVesselAtBothEnds)
   // The same vessel straightened: its first and last rows sample the end slices.
   vr::VesselPathLogic pathLogic;
   pathLogic.SetVolumeNode(node);
-  pathLogic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, "centerlines"));
+  const auto pathCenterlines = vr::ConvertTreeToCenterlineNode(tree, "centerlines");
+  pathLogic.GetInputCache()->SetCenterlines(pathCenterlines, tree);
+  pathLogic.SetCenterlineNode(pathCenterlines);
   pathLogic.SetPointImageEnabled(true);
   vr::VesselPathParameters pathParameters;
   pathParameters.Width = 40.0;

@@ -115,7 +115,9 @@ struct Reading
   Read(const itk::CenterlineTree & tree, int branch, vr::StenosisScale scale = vr::StenosisScale::Automatic)
   {
     Logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(Volume.GetPointer(), "blank"));
-    Logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, "tree"));
+    const auto centerlines = vr::ConvertTreeToCenterlineNode(tree, "tree");
+    Logic.GetInputCache()->SetCenterlines(centerlines, tree); // the tree as built, junctions and all
+    Logic.SetCenterlineNode(centerlines);
     vr::VesselPathParameters parameters;
     parameters.BranchId = branch;
     parameters.SectionSpacing = 0.5;

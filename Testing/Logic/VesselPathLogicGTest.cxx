@@ -73,6 +73,16 @@ CenterlineNodeOf(const itk::CenterlineTree & tree)
   return vr::ConvertTreeToCenterlineNode(tree, "two branches");
 }
 
+/** Hands \a logic a centerline node of \a tree with the tree itself as its conversion (as the modules do): the
+ * child leaves the trunk at its middle, which the node's polylines would cut into two branches. */
+void
+SetTree(vr::VesselPathLogic & logic, const itk::CenterlineTree & tree)
+{
+  const auto node = CenterlineNodeOf(tree);
+  logic.GetInputCache()->SetCenterlines(node, tree);
+  logic.SetCenterlineNode(node);
+}
+
 vr::VesselPathParameters
 Defaults()
 {
@@ -100,7 +110,7 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
   logic.SetVolumeNode(VolumeNodeOf(scene));
-  logic.SetCenterlineNode(CenterlineNodeOf(TwoBranchTree()));
+  SetTree(logic, TwoBranchTree());
   vr::VesselPathParameters parameters = Defaults();
   logic.SetParameters(parameters);
   logic.Update();
@@ -158,10 +168,10 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
 // unchanged one nothing; and the images an Update() handed out stay as they were when a stage reruns.
 TEST(VesselPathLogic, EachNodeChangeRerunsOnlyWhatItInvalidates)
 {
-  const Scene scene = MakeScene();
-  const auto  volume = VolumeNodeOf(scene);
-  const auto  centerlines = CenterlineNodeOf(TwoBranchTree());
-  const auto  segmentation = vr::ConvertItkImageToVolumeNode(scene.Mask.GetPointer(), "tubes");
+  const Scene         scene = MakeScene();
+  const auto          volume = VolumeNodeOf(scene);
+  const auto          centerlines = CenterlineNodeOf(TwoBranchTree());
+  const auto          segmentation = vr::ConvertItkImageToVolumeNode(scene.Mask.GetPointer(), "tubes");
   vr::VesselPathLogic logic;
   logic.SetVolumeNode(volume);
   logic.SetCenterlineNode(centerlines);
@@ -171,7 +181,7 @@ TEST(VesselPathLogic, EachNodeChangeRerunsOnlyWhatItInvalidates)
   logic.SetParameters(parameters);
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 1, 1, 1, 1);
-  const DepthImagePointer firstCPR = logic.GetOutputs().CPR;
+  const DepthImagePointer  firstCPR = logic.GetOutputs().CPR;
   const std::vector<float> firstPixels(firstCPR->GetBufferPointer(),
                                        firstCPR->GetBufferPointer() +
                                          firstCPR->GetLargestPossibleRegion().GetNumberOfPixels());
@@ -248,7 +258,7 @@ TEST(VesselPathLogic, ARefusedSegmentationLeavesNoStaleLumen)
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
   logic.SetVolumeNode(VolumeNodeOf(scene));
-  logic.SetCenterlineNode(CenterlineNodeOf(TwoBranchTree()));
+  SetTree(logic, TwoBranchTree());
   logic.SetParameters(Defaults());
   ASSERT_TRUE(logic.Update().HasLumen) << "the tree carries radii";
   const double fromRadii = logic.GetOutputs().Stenosis.MinimalLumenDiameter;
@@ -271,7 +281,7 @@ TEST(VesselPathLogic, TheDefaultPathIsTheLongestAndPixelsMapBackToIt)
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
   logic.SetVolumeNode(VolumeNodeOf(scene));
-  logic.SetCenterlineNode(CenterlineNodeOf(TwoBranchTree()));
+  SetTree(logic, TwoBranchTree());
   logic.SetParameters(Defaults());
   const vr::VesselPathOutputs & results = logic.Update();
   // Root to the trunk's far end is 60 mm; root to the child's end 30 + 25 = 55 mm.
@@ -314,7 +324,7 @@ TEST(VesselPathLogic, ErrorsNameTheParameter)
   };
   EXPECT_EQ(parameterOf(Defaults()), "") << "no volume and no tree: an error about no parameter";
   logic.SetVolumeNode(VolumeNodeOf(scene));
-  logic.SetCenterlineNode(CenterlineNodeOf(TwoBranchTree()));
+  SetTree(logic, TwoBranchTree());
   vr::VesselPathParameters parameters = Defaults();
   parameters.BranchId = 9;
   EXPECT_EQ(parameterOf(parameters), vr::ParameterName::Branch);
@@ -343,7 +353,7 @@ TEST(VesselPathLogic, ANarrowerWidthAfterAWiderOneIsResampledWhole)
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
   logic.SetVolumeNode(VolumeNodeOf(scene));
-  logic.SetCenterlineNode(CenterlineNodeOf(TwoBranchTree()));
+  SetTree(logic, TwoBranchTree());
   logic.SetCrossSectionsEnabled(true);
   vr::VesselPathParameters parameters = Defaults();
   parameters.Width = 40.0;

@@ -200,11 +200,11 @@ protected:
 
 inline void
 ExpectCounts(const vr::ReformationStageCounts & counts,
-             unsigned                depth,
-             unsigned                relax,
-             unsigned                resample,
-             unsigned                unfiltered,
-             unsigned                relaxed)
+             unsigned                           depth,
+             unsigned                           relax,
+             unsigned                           resample,
+             unsigned                           unfiltered,
+             unsigned                           relaxed)
 {
   EXPECT_EQ(counts.Depth, depth);
   EXPECT_EQ(counts.Relax, relax);

@@ -38,7 +38,9 @@ Report(const std::string &            data,
   {
     vr::VesselPathLogic logic;
     logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, "volume"));
-    logic.SetCenterlineNode(vr::ConvertTreeToCenterlineNode(tree, "centerlines"));
+    const auto centerlines = vr::ConvertTreeToCenterlineNode(tree, "centerlines");
+    logic.GetInputCache()->SetCenterlines(centerlines, tree);
+    logic.SetCenterlineNode(centerlines);
     logic.SetSegmentationNode(mask ? vr::ConvertItkImageToVolumeNode(mask, maskName) : nullptr);
     vr::VesselPathParameters parameters;
     parameters.BranchId = end;

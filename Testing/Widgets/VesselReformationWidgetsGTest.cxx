@@ -120,9 +120,9 @@ TEST_F(WidgetsTest, OnASoftwareRendererTheViewsDrawWithoutMultisampling)
 
 TEST_F(WidgetsTest, ChangingTheWindowRerunsNothingAndRedrawsThroughTheNewWindow)
 {
-  const ReformationStageCounts       before = Controller().GetStageCounts();
-  const RequestStatistics requestsBefore = Controller().GetStatistics();
-  const auto              shownBefore = Window().GetCPRView()->GetResult();
+  const ReformationStageCounts before = Controller().GetStageCounts();
+  const RequestStatistics      requestsBefore = Controller().GetStatistics();
+  const auto                   shownBefore = Window().GetCPRView()->GetResult();
   Window().GetPanel()->GetWindowSpinBox()->setValue(400.0);
   Window().GetPanel()->GetLevelSpinBox()->setValue(40.0);
   QTest::qWait(300);

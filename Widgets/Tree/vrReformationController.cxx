@@ -549,9 +549,9 @@ ReformationController::RunJob(const Job & job)
     if (m_SurfaceWaitsForDisplay)
     {
       // Tasks that come meanwhile run while the surface waits.
-      const auto deadline = std::chrono::steady_clock::now() +
-                            std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                              std::chrono::duration<double>(m_SurfaceWaitSeconds));
+      const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                             std::chrono::duration<double>(m_SurfaceWaitSeconds));
       const auto shown = [&] { return superseded() || !m_SurfaceWaitsForDisplay || m_ShownId >= job.Id; };
       while (!shown() && m_Wake.wait_until(lock, deadline, [&] { return shown() || !m_PendingTasks.empty(); }))
       {
@@ -591,9 +591,9 @@ ReformationController::Update(const Job &                   job,
   m_Logic.SetOcclusionProfileEnabled(factor == 1);
   m_ProgressStarted = false;
   const ReformationStageCounts before = m_Logic.GetStageCounts();
-  const auto        start = Clock::now();
-  std::string       failure;
-  std::string       parameter;
+  const auto                   start = Clock::now();
+  std::string                  failure;
+  std::string                  parameter;
   try
   {
     const ReformationOutputs & outputs = m_Logic.Update();

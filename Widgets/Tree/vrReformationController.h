@@ -318,7 +318,7 @@ private:
   /** The waiting task of each lane, and the lane whose task runs (empty: none). */
   std::map<std::string, Task> m_PendingTasks;
   std::string                 m_RunningTaskLane;
-  bool                    m_Running{ false };
+  bool                        m_Running{ false };
   /** The running work is a load: requests do not abort it (a newer load does). */
   bool        m_RunningLoad{ false };
   RequestKind m_RunningKind{ RequestKind::Final };
@@ -339,7 +339,7 @@ private:
   std::optional<DisplayTiming> m_AwaitingDisplay;
   bool                         m_Quit{ false };
   std::uint64_t                m_NextId{ 1 };
-  ReformationStageCounts                  m_Counts;
+  ReformationStageCounts       m_Counts;
   RequestStatistics            m_Statistics;
   bool                         m_SurfaceWaitsForDisplay{ false };
   double                       m_SurfaceWaitSeconds{ 1.0 };

@@ -140,9 +140,8 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
             {
               m_CrossSections = true;
             }
-            const double before = GetRoll();
             SetRoll(m_DragStartRoll + degrees);
-            if (finished && HasPath() && GetRoll() == before && !GetOutputs().CrossSections)
+            if (finished && HasPath() && !m_RequestedCrossSections)
             {
               Request(Purpose::Look, m_Parameters);
             }
@@ -247,7 +246,7 @@ VesselPathPanel::ReportError(const QString & message)
 }
 
 bool
-VesselPathPanel::Request(Purpose                     purpose,
+VesselPathPanel::Request(Purpose                      purpose,
                          const VesselPathParameters & previous,
                          double                       keepArcLength,
                          vtkSmartPointer<VolumeNode>  previousSegmentation)
@@ -269,10 +268,11 @@ VesselPathPanel::Request(Purpose                     purpose,
   const vtkSmartPointer<VolumeNode> segmentation = m_Segmentation ? m_Segmentation : m_Inputs->Segmentation;
   const VesselPathParameters        parameters = m_Parameters;
   const bool                        crossSections = m_CrossSections;
-  LogicWorker * const               worker = m_Worker;
-  auto                              result = std::make_shared<VesselPathResult>();
-  auto                              error = std::make_shared<QString>();
-  LogicWorker::Task task;
+  m_RequestedCrossSections = crossSections;
+  LogicWorker * const worker = m_Worker;
+  auto                result = std::make_shared<VesselPathResult>();
+  auto                error = std::make_shared<QString>();
+  LogicWorker::Task   task;
   task.Run = [session, inputs, segmentation, parameters, crossSections, worker, result, error, id]
   {
     VesselPathLogic & logic = session->Logic;
@@ -312,7 +312,8 @@ VesselPathPanel::Request(Purpose                     purpose,
   {
     if (panel)
     {
-      panel->Answer(purpose, error->isEmpty() ? result : nullptr, *error, previous, keepArcLength, previousSegmentation);
+      panel->Answer(
+        purpose, error->isEmpty() ? result : nullptr, *error, previous, keepArcLength, previousSegmentation);
     }
   };
   m_Worker->RunTask(WorkerLane, std::move(task));
@@ -497,9 +498,8 @@ VesselPathPanel::ShowResults()
   const VesselPathParameters & shown = m_Shown->Parameters;
   const bool                   stretched = shown.Reformation == PathReformation::Stretched;
   m_CPR->SetImage(results.CPR.GetPointer(), m_Window, m_Level);
-  m_CPR->SetCaption(tr("%1, roll %2°")
-                      .arg(stretched ? tr("stretched") : tr("straightened"))
-                      .arg(shown.RollInDegrees, 0, 'f', 1));
+  m_CPR->SetCaption(
+    tr("%1, roll %2°").arg(stretched ? tr("stretched") : tr("straightened")).arg(shown.RollInDegrees, 0, 'f', 1));
   if (results.HasLumen)
   {
     m_Plot->SetProfile(results.Lumen, results.Stenosis);

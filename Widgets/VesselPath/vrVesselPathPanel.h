@@ -34,9 +34,9 @@ class VesselPathSettings;
  */
 struct VesselPathResult
 {
-  std::uint64_t         RequestId{ 0 };
-  VesselPathParameters  Parameters;
-  VesselPathOutputs     Outputs;
+  std::uint64_t        RequestId{ 0 };
+  VesselPathParameters Parameters;
+  VesselPathOutputs    Outputs;
   /** The continuous CPR row of each of Outputs.Sections (VesselPathLogic::RowOfArcLength). */
   std::vector<double>   SectionRows;
   VesselPathStageCounts StagesRun;
@@ -263,7 +263,7 @@ private:
   void
   FollowReportLink(const QUrl & link);
 
-  LogicWorker *                            m_Worker{ nullptr };
+  LogicWorker * m_Worker{ nullptr };
   /** The logic and what it was last given, touched by the worker's tasks only (shared with them). */
   std::shared_ptr<Session>                 m_Session;
   std::shared_ptr<const ReformationInputs> m_Inputs;
@@ -273,8 +273,10 @@ private:
   std::uint64_t                           m_RequestedId{ 0 };
   std::uint64_t                           m_AnsweredId{ 0 };
   /** Whether requests compute the cross-section stack (off while a drag rolls the image). */
-  bool                 m_CrossSections{ true };
-  VesselPathParameters m_Parameters;
+  bool m_CrossSections{ true };
+  /** Whether the latest request computes them. */
+  bool                  m_RequestedCrossSections{ true };
+  VesselPathParameters  m_Parameters;
   ReformationParameters m_View;
   int                   m_Section{ 0 };
   double                m_DragStartRoll{ 0.0 };
