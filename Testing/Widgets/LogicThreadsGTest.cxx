@@ -2,9 +2,11 @@
 // Both features' logics run on the viewer's worker (issue 42, docs/viewer.md "Threads"): while the viewer opens the
 // phantom, turns the tree view, opens a vessel path, rolls it, stretches it and widens it, every ITK filter start of
 // either logic is recorded with the thread it ran on (vr::SetFilterStartObserver, on each filter's StartEvent), and
-// none is the GUI thread's.
+// none is the GUI thread's. And the worker's task lanes themselves: a newer task replaces the one waiting in its lane,
+// tasks run on the worker and their answers come on the GUI thread.
 #include "vrWidgetsTestSupport.h"
 
+#include "vrReformationController.h"
 #include "vrStageMonitor.h"
 #include "vrVesselPathPanel.h"
 
@@ -12,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <condition_variable>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -127,5 +130,59 @@ TEST(LogicThreads, NoFilterOfEitherLogicRunsOnTheGUIThread)
   EXPECT_GE(Starts(elsewhere, "CPRResampleImageFilter"), 2);
   EXPECT_GE(Starts(elsewhere, "StraightenedCPRImageFilter"), 4);
   EXPECT_GE(Starts(elsewhere, "CrossSectionStackImageFilter"), 1);
+}
+
+TEST(LogicThreads, ANewerTaskReplacesTheOneWaitingInItsLaneAndAnswersComeOnTheGUIThread)
+{
+  const std::thread::id    gui = std::this_thread::get_id();
+  ReformationController    worker;
+  std::mutex               mutex;
+  std::condition_variable  released;
+  bool                     release = false;
+  std::vector<std::string> ran;
+  std::vector<std::string> answered;
+  bool                     ranOnGUI = false;
+  bool                     answeredElsewhere = false;
+  const auto               task = [&](const std::string & name, bool block)
+  {
+    LogicWorker::Task made;
+    made.Run = [&, name, block]
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      ran.push_back(name);
+      ranOnGUI = ranOnGUI || std::this_thread::get_id() == gui;
+      released.wait(lock, [&] { return release || !block; });
+    };
+    made.Done = [&, name]
+    {
+      answered.push_back(name);
+      answeredElsewhere = answeredElsewhere || std::this_thread::get_id() != gui;
+    };
+    return made;
+  };
+  worker.RunTask("path", task("first", true));
+  ASSERT_TRUE(WaitUntil(
+    [&]
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      return !ran.empty();
+    },
+    10.0));
+  // While the first runs: two more in its lane (the second never runs) and one in another lane.
+  worker.RunTask("path", task("second", false));
+  worker.RunTask("path", task("third", false));
+  worker.RunTask("probe", task("probe", false));
+  EXPECT_FALSE(worker.IsIdle());
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    release = true;
+  }
+  released.notify_all();
+  ASSERT_TRUE(WaitUntil([&] { return worker.IsIdle(); }, 10.0));
+  const std::lock_guard<std::mutex> lock(mutex);
+  EXPECT_EQ(ran, (std::vector<std::string>{ "first", "third", "probe" }));
+  EXPECT_EQ(answered, ran) << "each task that ran is answered, in order, before the worker says it is idle";
+  EXPECT_FALSE(ranOnGUI);
+  EXPECT_FALSE(answeredElsewhere);
 }
 } // namespace vr::test

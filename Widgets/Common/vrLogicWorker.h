@@ -38,9 +38,6 @@ public:
   /** From a running task (worker thread): its progress in [0, 1] and stage, shown as the tree's is. */
   virtual void
   ReportTaskProgress(double fraction, const std::string & stage) = 0;
-  /** \return true while a task waits or runs in \a lane. Worker owner's thread. */
-  virtual bool
-  HasTask(const std::string & lane) const = 0;
 };
 } // namespace vr
 

@@ -115,21 +115,13 @@ ReformationController::ReportTaskProgress(double fraction, const std::string & s
   PostProgress(fraction, stage);
 }
 
-bool
-ReformationController::HasTask(const std::string & lane) const
-{
-  std::lock_guard<std::mutex> lock(m_Mutex);
-  return m_PendingTasks.count(lane) > 0 || m_RunningTaskLane == lane;
-}
-
 void
 ReformationController::RunPendingTasks(std::unique_lock<std::mutex> & lock)
 {
   while (!m_Quit && !m_PendingTasks.empty())
   {
     const auto first = m_PendingTasks.begin();
-    m_RunningTaskLane = first->first;
-    Task task = std::move(first->second);
+    Task       task = std::move(first->second);
     m_PendingTasks.erase(first);
     lock.unlock();
     m_ProgressStarted = false;
@@ -146,7 +138,6 @@ ReformationController::RunPendingTasks(std::unique_lock<std::mutex> & lock)
       Post(std::move(task.Done));
     }
     lock.lock();
-    m_RunningTaskLane.clear();
   }
 }
 

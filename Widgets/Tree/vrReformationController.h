@@ -184,8 +184,6 @@ public:
   RunTask(const std::string & lane, Task task) override;
   void
   ReportTaskProgress(double fraction, const std::string & stage) override;
-  bool
-  HasTask(const std::string & lane) const override;
 
   /** \return the inputs the next request runs on (null before the first load). GUI thread. */
   std::shared_ptr<const ReformationInputs>
@@ -315,9 +313,8 @@ private:
   std::condition_variable m_Wake;
   std::optional<Job>      m_PendingJob;
   std::optional<Load>     m_PendingLoad;
-  /** The waiting task of each lane, and the lane whose task runs (empty: none). */
+  /** The waiting task of each lane. */
   std::map<std::string, Task> m_PendingTasks;
-  std::string                 m_RunningTaskLane;
   bool                        m_Running{ false };
   /** The running work is a load: requests do not abort it (a newer load does). */
   bool        m_RunningLoad{ false };

@@ -308,12 +308,12 @@ VesselPathPanel::Request(Purpose                      purpose,
     }
   };
   QPointer<VesselPathPanel> panel(this);
-  task.Done = [panel, purpose, result, error, previous, keepArcLength, previousSegmentation]
+  task.Done = [panel, id, purpose, result, error, previous, keepArcLength, previousSegmentation]
   {
     if (panel)
     {
       panel->Answer(
-        purpose, error->isEmpty() ? result : nullptr, *error, previous, keepArcLength, previousSegmentation);
+        id, purpose, error->isEmpty() ? result : nullptr, *error, previous, keepArcLength, previousSegmentation);
     }
   };
   m_Worker->RunTask(WorkerLane, std::move(task));
@@ -321,20 +321,21 @@ VesselPathPanel::Request(Purpose                      purpose,
 }
 
 void
-VesselPathPanel::Answer(Purpose                                 purpose,
+VesselPathPanel::Answer(std::uint64_t                           id,
+                        Purpose                                 purpose,
                         std::shared_ptr<const VesselPathResult> result,
                         const QString &                         error,
                         const VesselPathParameters &            previous,
                         double                                  keepArcLength,
                         vtkSmartPointer<VolumeNode>             previousSegmentation)
 {
-  const std::uint64_t id = result ? result->RequestId : m_RequestedId;
-  if (result && (result->RequestId <= m_AnsweredId || (m_Shown && result->RequestId < m_Shown->RequestId)))
+  if (id <= m_AnsweredId)
   {
-    return; // for inputs replaced since, or older than the result shown
+    return; // for inputs replaced since (SetInputs answers every request made before)
   }
-  const bool latest = !result || result->RequestId == m_RequestedId;
-  m_AnsweredId = std::max(m_AnsweredId, latest ? m_RequestedId : id);
+  // Tasks run in order: a request answered after this one was superseded while it waited, never ran.
+  const bool latest = id == m_RequestedId;
+  m_AnsweredId = id;
   if (!result)
   {
     if (!latest)

@@ -243,7 +243,8 @@ private:
           vtkSmartPointer<VolumeNode>  previousSegmentation = nullptr);
   /** The answer to a request, on the GUI thread. */
   void
-  Answer(Purpose                                 purpose,
+  Answer(std::uint64_t                           id,
+         Purpose                                 purpose,
          std::shared_ptr<const VesselPathResult> result,
          const QString &                         error,
          const VesselPathParameters &            previous,
