@@ -66,6 +66,8 @@ ViewerWindow::ViewerWindow(QWidget * parent)
   m_ThreeDView = new ThreeDView;
   m_PathPanel = new VesselPathPanel;
   m_PathPanel->setVisible(false);
+  // Both features' logics run on the one worker (docs/viewer.md, "Threads").
+  m_PathPanel->SetWorker(m_Controller);
 
   auto * scroll = new QScrollArea;
   scroll->setWidget(m_Panel);
@@ -140,6 +142,8 @@ ViewerWindow::~ViewerWindow()
   // own destruction (children removed, hidden) never reaches a filter that asks the half-destroyed splitter.
   delete m_Layout;
   m_Layout = nullptr;
+  // The worker may go before the panel among the window's children.
+  m_PathPanel->SetWorker(nullptr);
 }
 
 bool

@@ -163,11 +163,13 @@ public:
   static QString
   AboutText();
 
-  /** Opens the path from the tree's root to branch \a branchId (0: the longest) in the vessel path panel, shows the
-   * panel and the markers (docs/viewer.md). \return false, with an error shown, when the logic refuses it. */
+  /** Asks for the path from the tree's root to branch \a branchId (0: the longest) in the vessel path panel, which the
+   * worker computes; once it comes, the panel and the markers are shown (docs/viewer.md). \return false, with an error
+   * shown, when it cannot be asked; the logic's refusal comes later, shown as an error, the path shown staying. */
   bool
   OpenVesselPath(int branchId);
-  /** Measures the open path's lumen on the segmentation file(s) \a paths. \return false, with an error shown. */
+  /** Measures the open path's lumen on the segmentation file(s) \a paths (on the worker). \return false, with an
+   * error shown, when they cannot be read; the logic's refusal comes later, shown as an error. */
   bool
   OpenLumenSegmentation(const QStringList & paths);
   /** Writes the vessel path's lumen table (CSV or TSV by the extension). \return false, with an error shown. */

@@ -68,20 +68,27 @@ ViewerWindow::ConnectVesselPath()
             m_CPRView->SetPathMarker(center);
             m_ThreeDView->SetPathMarker(center);
           });
-  connect(m_PathPanel,
-          &VesselPathPanel::pathOpened,
-          this,
-          [this](int)
-          {
-            std::vector<itk::Point<double, 3>> points;
-            for (const auto & section : m_PathPanel->GetLogic().GetResults().Sections)
-            {
-              points.push_back(section.Center);
-            }
-            m_ThreeDView->SetPath(points);
-            m_Layout->ShowPathPanel();
-            EnableSectionKeys(true);
-          });
+  connect(
+    m_PathPanel,
+    &VesselPathPanel::pathOpened,
+    this,
+    [this](int branchId)
+    {
+      std::vector<itk::Point<double, 3>> points;
+      for (const auto & section : m_PathPanel->GetOutputs().Sections)
+      {
+        points.push_back(section.Center);
+      }
+      m_ThreeDView->SetPath(points);
+      m_Layout->ShowPathPanel();
+      EnableSectionKeys(true);
+      const QString name = branchId > 0 && m_CurrentInputs
+                             ? QString::fromStdString(m_CurrentInputs->BranchName(branchId))
+                             : tr("the longest path");
+      statusBar()->showMessage(
+        tr("Opened the path to %1 (%2 ms)").arg(name).arg(std::lround(1000.0 * m_PathPanel->GetLastUpdateSeconds())),
+        5000);
+    });
   connect(m_PathPanel,
           &VesselPathPanel::errorOccurred,
           this,
@@ -91,16 +98,8 @@ ViewerWindow::ConnectVesselPath()
 bool
 ViewerWindow::OpenVesselPath(int branchId)
 {
-  if (!m_PathPanel->OpenBranch(branchId))
-  {
-    // The panel said why (errorOccurred).
-    return false;
-  }
-  const QString name = branchId > 0 && m_CurrentInputs ? QString::fromStdString(m_CurrentInputs->BranchName(branchId))
-                                                       : tr("the longest path");
-  statusBar()->showMessage(
-    tr("Opened the path to %1 (%2 ms)").arg(name).arg(std::lround(1000.0 * m_PathPanel->GetLastUpdateSeconds())), 5000);
-  return true;
+  // Asked of the worker: pathOpened() shows it, errorOccurred() says why not.
+  return m_PathPanel->OpenBranch(branchId);
 }
 
 void
@@ -130,12 +129,8 @@ ViewerWindow::OpenLumenSegmentation(const QStringList & paths)
     std::vector<std::string> warnings;
     std::vector<std::string> descriptions;
     const auto               node = ReadSegmentationNode(files, warnings, descriptions);
-    const QString error = m_PathPanel->SetLumenSegmentation(node, tr("segmentation %1").arg(paths.join(",")));
-    if (!error.isEmpty())
-    {
-      ShowError(tr("Cannot measure on %1").arg(paths.join(",")), error);
-      return false;
-    }
+    // Measured on the worker: a refusal comes through errorOccurred() and the previous segmentation stays.
+    m_PathPanel->SetLumenSegmentation(node);
     for (const auto & warning : warnings)
     {
       ShowWarning(QString::fromStdString(warning));

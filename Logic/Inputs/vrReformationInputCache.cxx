@@ -73,6 +73,15 @@ ReformationInputCache::SetVolume(VolumeNode * node, VolumeImageType::Pointer ima
 }
 
 void
+ReformationInputCache::SetCenterlines(CenterlineNode * node, const itk::CenterlineTree & tree)
+{
+  const std::lock_guard<std::mutex> lock(m_Mutex);
+  m_Centerlines = std::make_shared<const itk::CenterlineTree>(tree);
+  m_CenterlineNode = node;
+  m_CenterlineTime = node->GetMTime();
+}
+
+void
 ReformationInputCache::KeepVolume(VolumeNode * node, vtkMTimeType time, const StoredVolume & stored)
 {
   auto volume = std::make_shared<Volume>();

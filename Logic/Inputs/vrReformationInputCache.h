@@ -77,6 +77,15 @@ public:
   std::shared_ptr<const itk::CenterlineTree>
   GetCenterlines(CenterlineNode * node);
 
+  /** Gives the conversion of \a node ready-made, for a host that read the tree itself and made the node of it (a
+   * command-line module, the Python package; vr::ConvertTreeToCenterlineNode): until the node changes,
+   * GetCenterlines(node) returns \a tree as it is, not the tree converted back from the node's polylines (which cuts a
+   * trunk where a child leaves it, and so may renumber the branches).
+   * \param node the centerline node made of \a tree (not null).
+   * \param tree the tree in LPS. */
+  void
+  SetCenterlines(CenterlineNode * node, const itk::CenterlineTree & tree);
+
   /** \param node the segmentation node (not null).
    * \param labels the vessel labels (vr::CenterlineExtractionParameters::Labels; empty: every non-zero voxel).
    * \return its vessel mask, made now when \a node or \a labels differ from the previous call's or the node was

@@ -6,11 +6,44 @@
 #include "itkProcessObject.h"
 
 #include <algorithm>
+#include <memory>
+#include <mutex>
 
 namespace vr
 {
+namespace
+{
+std::mutex                                 g_ObserverMutex;
+std::shared_ptr<const FilterStartObserver> g_Observer;
+} // namespace
+
+void
+SetFilterStartObserver(FilterStartObserver observer)
+{
+  const std::lock_guard<std::mutex> lock(g_ObserverMutex);
+  g_Observer = observer ? std::make_shared<const FilterStartObserver>(std::move(observer)) : nullptr;
+}
+
 namespace detail
 {
+void
+ObserveFilterStarts(itk::ProcessObject * filter)
+{
+  filter->AddObserver(itk::StartEvent(),
+                      [filter](const itk::EventObject &)
+                      {
+                        std::shared_ptr<const FilterStartObserver> observer;
+                        {
+                          const std::lock_guard<std::mutex> lock(g_ObserverMutex);
+                          observer = g_Observer;
+                        }
+                        if (observer)
+                        {
+                          (*observer)(*filter);
+                        }
+                      });
+}
+
 void
 StageMonitor::SetProgressCallback(ProgressCallback callback)
 {
@@ -30,6 +63,7 @@ void
 StageMonitor::Watch(itk::ProcessObject * filter, Stage stage, const char * name)
 {
   StageWatch & watch = WatchOf(stage);
+  ObserveFilterStarts(filter);
   filter->AddObserver(itk::StartEvent(),
                       [&watch](const itk::EventObject &)
                       {

@@ -13,8 +13,21 @@
 
 namespace vr
 {
+/** Receives each start of a filter of either feature's logic (vr::VesselReformationLogic, vr::VesselPathLogic), on
+ * the thread that runs it: what a host or a test watches to see where the logics run (docs/viewer.md, "Threads").
+ * \ingroup VesselReformation */
+using FilterStartObserver = std::function<void(const itk::ProcessObject & filter)>;
+/** Sets the one process-wide observer of filter starts (empty: none, the default). Thread-safe; the observer is
+ * called on the filters' threads and must be. */
+void
+SetFilterStartObserver(FilterStartObserver observer);
+
 namespace detail
 {
+/** Has \a filter's starts reported to the observer of SetFilterStartObserver(): every filter a logic runs. */
+void
+ObserveFilterStarts(itk::ProcessObject * filter);
+
 /** The stages of a reformation update, in the order they run. */
 enum class Stage : unsigned int
 {

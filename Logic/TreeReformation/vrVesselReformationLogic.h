@@ -50,7 +50,7 @@ struct StageTimes
 /** How many times each stage has run since the logic was made (docs/design.md "Module logic"'s recompute rules are
  * tested on these). \ingroup VesselReformation
  */
-struct StageCounts
+struct ReformationStageCounts
 {
   unsigned int Conversion{ 0 };
   /** Executions of the centerline extraction (segmentation input only). */
@@ -137,7 +137,7 @@ struct ReformationOutputs
  *   (on the other backend's filters; a set still up to date from before does not rerun);
  * - new interpolation or slab: both CPR images and the surface;
  * - new window or level: nothing (they only choose how the CPR is displayed, GetDisplayWindowLevel()).
- * GetStageExecutionCounts() counts every stage execution (the filters' StartEvent) so that tests can check these
+ * GetStageCounts() counts every stage execution (the filters' StartEvent) so that tests can check these
  * rules; the filters themselves are reachable for observers of a platform's own.
  *
  * Failures are reported one way, by throwing vr::InputError with a message naming the node, or the parameter by its
@@ -283,8 +283,8 @@ public:
   const ReformationOutputs &
   GetOutputs() const;
   /** \return how many times each stage has run since construction. */
-  StageCounts
-  GetStageExecutionCounts() const;
+  ReformationStageCounts
+  GetStageCounts() const;
   /** \return the warnings that hold for the current inputs (centerlines outside the volume, backend fallback, a
    * steady solve stopped short). */
   std::vector<std::string>

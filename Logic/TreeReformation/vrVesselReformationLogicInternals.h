@@ -1,7 +1,7 @@
 // Copyright the VesselReformation developers. SPDX-License-Identifier: Apache-2.0
 // The state of vr::VesselReformationLogic behind its interface, shared by the files that implement it
-// (vrVesselReformationLogicUpdate.cxx: the pipeline and the update; vrVesselReformationLogicInputs.cxx: the inputs' checks
-// and the centerline extraction). Not installed.
+// (vrVesselReformationLogicUpdate.cxx: the pipeline and the update; vrVesselReformationLogicInputs.cxx: the inputs'
+// checks and the centerline extraction). Not installed.
 #ifndef vrVesselReformationLogicInternals_h
 #define vrVesselReformationLogicInternals_h
 
@@ -99,7 +99,7 @@ struct VesselReformationLogic::Internals
   const ResampleFilterType * CPRFrom{ nullptr };
   /** The stage counts when the output nodes were last made: a stage that ran since (also in an update that was
    * cancelled later) gets its node made anew. */
-  StageCounts Refreshed;
+  ReformationStageCounts Refreshed;
 
   std::string InputWarning;
   std::string SegmentationWarning;
@@ -114,8 +114,8 @@ struct VesselReformationLogic::Internals
 
   detail::OcclusionProfileCache Profile;
 
-  ReformationOutputs Outputs;
-  StageCounts        Counts;
+  ReformationOutputs     Outputs;
+  ReformationStageCounts Counts;
 
   Internals()
   {
@@ -168,7 +168,7 @@ struct VesselReformationLogic::Internals
   std::vector<itk::ProcessObject *>
   Filters() const;
   void
-  RefreshOutputs(const StageCounts & now);
+  RefreshOutputs(const ReformationStageCounts & now);
 };
 } // namespace vr
 

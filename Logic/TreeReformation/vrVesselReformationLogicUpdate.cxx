@@ -186,9 +186,9 @@ VesselReformationLogic::Internals::Filters() const
 }
 
 void
-VesselReformationLogic::Internals::RefreshOutputs(const StageCounts & now)
+VesselReformationLogic::Internals::RefreshOutputs(const ReformationStageCounts & now)
 {
-  const StageCounts & before = Refreshed;
+  const ReformationStageCounts & before = Refreshed;
   if (now.Depth != before.Depth || DepthFrom != Depth.GetPointer())
   {
     DepthFrom = Depth;
@@ -413,7 +413,7 @@ VesselReformationLogic::Update()
                         d.Parameters.Mode);
   d.PlanProgress();
 
-  const StageCounts before = GetStageExecutionCounts();
+  const ReformationStageCounts before = GetStageCounts();
   // One filter at a time, so that an abort between stages is seen; ITK reruns only what is out of date.
   d.Monitor.Run(d.Depth, "depth");
   d.Monitor.Run(d.Relax, "relaxation");
@@ -426,7 +426,7 @@ VesselReformationLogic::Update()
   d.Monitor.Run(d.UnfilteredResample, "resample");
   d.Monitor.Run(d.RelaxedResample, "resample");
   d.CubicCoefficientsOf = d.Parameters.Interpolation == itk::CPRInterpolationMode::Cubic ? d.Volume.get() : nullptr;
-  d.Counts = GetStageExecutionCounts();
+  d.Counts = GetStageCounts();
   const bool resampled =
     d.Counts.UnfilteredSamplings != before.UnfilteredSamplings || d.Counts.RelaxedSamplings != before.RelaxedSamplings;
   d.Counts.Resample = before.Resample + (resampled ? 1 : 0);
@@ -504,10 +504,10 @@ VesselReformationLogic::GetOutputs() const
   return m_Internals->Outputs;
 }
 
-StageCounts
-VesselReformationLogic::GetStageExecutionCounts() const
+ReformationStageCounts
+VesselReformationLogic::GetStageCounts() const
 {
-  StageCounts                  counts = m_Internals->Counts;
+  ReformationStageCounts       counts = m_Internals->Counts;
   const detail::StageMonitor & monitor = m_Internals->Monitor;
   counts.Extraction = monitor.GetRuns(detail::Stage::Extraction);
   counts.Depth = monitor.GetRuns(detail::Stage::Depth);

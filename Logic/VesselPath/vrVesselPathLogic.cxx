@@ -3,12 +3,15 @@
 
 #include "itkCPRVolumeSampler.h"
 #include "itkCrossSectionStackImageFilter.h"
+#include "itkImageDuplicator.h"
 #include "itkRotationMinimizingFrame.h"
 #include "itkStraightenedCPRImageFilter.h"
 #include "vrInputError.h"
 #include "vrLumenMeasurement.h"
+#include "vrStageMonitor.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -51,6 +54,17 @@ struct ImageStamp
   }
 };
 
+/** A copy of \a image, buffer and geometry, of its own. */
+template<typename TImage>
+typename TImage::Pointer
+CopyOf(const TImage * image)
+{
+  auto duplicator = itk::ImageDuplicator<TImage>::New();
+  duplicator->SetInputImage(image);
+  duplicator->Update();
+  return duplicator->GetOutput();
+}
+
 std::string
 Describe(const itk::ExceptionObject & error)
 {
@@ -71,10 +85,20 @@ TreeView(const VesselPathParameters & parameters, const itk::CenterlineTree & tr
 
 struct VesselPathLogic::Internals
 {
+  // The nodes as a host gives them, and their conversion (through the cache) as of the latest Update().
+  vtkSmartPointer<VolumeNode>                CurrentVolumeNode;
+  vtkSmartPointer<CenterlineNode>            CurrentCenterlineNode;
+  vtkSmartPointer<VolumeNode>                CurrentSegmentationNode;
+  std::shared_ptr<ReformationInputCache>     Cache = std::make_shared<ReformationInputCache>();
+  std::shared_ptr<const itk::CenterlineTree> ConvertedTree;
+  ProgressCallback                           Progress;
+  WarningCallback                            Warn;
+  std::atomic<bool>                          Running{ false };
+  std::atomic<bool>                          AbortRequested{ false };
+
   itk::ImageBase<3>::ConstPointer  Volume;
   itk::CPRIntensityRescale         Rescale;
   itk::CenterlineTree              Tree;
-  bool                             HasTree{ false };
   LabelMapVolumeType::ConstPointer Mask;
   std::string                      MaskName;
   VesselPathParameters             Parameters;
@@ -107,7 +131,7 @@ struct VesselPathLogic::Internals
 
   CPRFilterType::Pointer   CPRFilter = CPRFilterType::New();
   StackFilterType::Pointer StackFilter = StackFilterType::New();
-  VesselPathResults        Results;
+  VesselPathOutputs        Results;
   VesselPathStageCounts    Counts;
 
   double
@@ -126,6 +150,46 @@ struct VesselPathLogic::Internals
     return Parameters.SectionSpacing > 0.0 ? Parameters.SectionSpacing : ResolvedPixelSpacing();
   }
 
+  /** The nodes to ITK: the volume in its stored type, the tree, the segmentation's vessel mask. */
+  void
+  ConvertNodes();
+  void
+  ReportProgress(double fraction, const char * stage) const
+  {
+    if (Progress)
+    {
+      Progress(fraction, stage);
+    }
+  }
+  /** Throws vr::Cancelled when AbortUpdate() was called, naming the stage about to run. */
+  void
+  StopIfAborted(const char * stage) const
+  {
+    if (AbortRequested)
+    {
+      throw Cancelled(std::string(stage) + ": cancelled");
+    }
+  }
+  /** Progress of \a filter mapped to [from, to] of the whole update as \a stage; the abort flag raised from within
+   * the filter's own progress report (on its thread, as vr::detail::StageMonitor does for the tree). */
+  void
+  Watch(itk::ProcessObject * filter, double from, double to, const char * stage)
+  {
+    detail::ObserveFilterStarts(filter);
+    filter->AddObserver(itk::ProgressEvent(),
+                        [this, filter, from, to, stage](const itk::EventObject &)
+                        {
+                          if (AbortRequested && !filter->GetAbortGenerateData())
+                          {
+                            filter->AbortGenerateDataOn();
+                          }
+                          ReportProgress(from + (to - from) * filter->GetProgress(), stage);
+                        });
+  }
+
+  /** Runs the stages whose inputs changed (the recompute rules) and states the warnings. */
+  void
+  UpdateStages();
   void
   RunPath();
   void
@@ -137,7 +201,7 @@ struct VesselPathLogic::Internals
 };
 
 std::string
-DescribePath(const VesselPathResults & results)
+DescribePath(const VesselPathOutputs & results)
 {
   std::ostringstream text;
   text.setf(std::ios::fixed);
@@ -149,29 +213,122 @@ DescribePath(const VesselPathResults & results)
 VesselPathLogic::VesselPathLogic()
   : m(std::make_unique<Internals>())
 {
+  m->Watch(m->CPRFilter, 0.2, 0.5, "resampling");
+  m->Watch(m->StackFilter, 0.5, 0.85, "cross-sections");
 }
 
 VesselPathLogic::~VesselPathLogic() = default;
 
 void
-VesselPathLogic::SetVolume(const itk::ImageBase<3> * volume, const itk::CPRIntensityRescale & rescale)
+VesselPathLogic::SetVolumeNode(VolumeNode * node)
 {
-  m->Volume = volume;
-  m->Rescale = rescale;
+  m->CurrentVolumeNode = node;
+}
+
+VolumeNode *
+VesselPathLogic::GetVolumeNode() const
+{
+  return m->CurrentVolumeNode;
 }
 
 void
-VesselPathLogic::SetCenterlineTree(const itk::CenterlineTree & tree)
+VesselPathLogic::SetCenterlineNode(CenterlineNode * node)
 {
-  m->Tree = tree;
-  m->HasTree = true;
+  m->CurrentCenterlineNode = node;
+}
+
+CenterlineNode *
+VesselPathLogic::GetCenterlineNode() const
+{
+  return m->CurrentCenterlineNode;
 }
 
 void
-VesselPathLogic::SetSegmentationMask(const LabelMapVolumeType * mask, const std::string & name)
+VesselPathLogic::SetSegmentationNode(VolumeNode * node)
 {
-  m->Mask = mask;
-  m->MaskName = name.empty() ? std::string("the segmentation") : name;
+  m->CurrentSegmentationNode = node;
+}
+
+VolumeNode *
+VesselPathLogic::GetSegmentationNode() const
+{
+  return m->CurrentSegmentationNode;
+}
+
+void
+VesselPathLogic::SetInputCache(std::shared_ptr<ReformationInputCache> cache)
+{
+  m->Cache = cache ? std::move(cache) : std::make_shared<ReformationInputCache>();
+}
+
+std::shared_ptr<ReformationInputCache>
+VesselPathLogic::GetInputCache() const
+{
+  return m->Cache;
+}
+
+void
+VesselPathLogic::SetProgressCallback(ProgressCallback callback)
+{
+  m->Progress = std::move(callback);
+}
+
+void
+VesselPathLogic::SetWarningCallback(WarningCallback callback)
+{
+  m->Warn = std::move(callback);
+}
+
+void
+VesselPathLogic::AbortUpdate()
+{
+  if (m->Running)
+  {
+    m->AbortRequested = true;
+  }
+}
+
+std::vector<std::string>
+VesselPathLogic::GetWarnings() const
+{
+  return m->Results.Warnings;
+}
+
+void
+VesselPathLogic::Internals::ConvertNodes()
+{
+  if (!CurrentVolumeNode)
+  {
+    throw InputError("no volume: the single-vessel reading samples a volume");
+  }
+  if (!CurrentCenterlineNode)
+  {
+    throw InputError("no centerlines: the single-vessel reading follows a path of the centerline tree");
+  }
+  // The cache hands back the same objects while a node is unchanged: the recompute rules compare them.
+  const auto volume = Cache->GetVolume(CurrentVolumeNode);
+  Volume = volume->Image;
+  Rescale = volume->Rescale;
+  const auto tree = Cache->GetCenterlines(CurrentCenterlineNode);
+  if (tree != ConvertedTree)
+  {
+    Tree = *tree;
+    ConvertedTree = tree;
+  }
+  if (Tree.IsEmpty())
+  {
+    throw InputError("no centerlines: the single-vessel reading follows a path of the centerline tree");
+  }
+  if (CurrentSegmentationNode)
+  {
+    Mask = Cache->GetSegmentation(CurrentSegmentationNode, {})->Mask;
+    MaskName = ReformationInputCache::DescribeSegmentationNode(CurrentSegmentationNode);
+  }
+  else
+  {
+    Mask = nullptr;
+    MaskName = "the segmentation";
+  }
 }
 
 void
@@ -199,8 +356,8 @@ VesselPathLogic::SetPointImageEnabled(bool enabled)
   m->PointImageEnabled = enabled;
 }
 
-const VesselPathResults &
-VesselPathLogic::GetResults() const
+const VesselPathOutputs &
+VesselPathLogic::GetOutputs() const
 {
   return m->Results;
 }
@@ -323,13 +480,25 @@ VesselPathLogic::Internals::RunResampling()
     // The largest region: a narrower width than the last run's must not keep the last requested region.
     CPRFilter->UpdateLargestPossibleRegion();
   }
+  catch (const itk::ProcessAborted &)
+  {
+    throw Cancelled("resampling: cancelled");
+  }
   catch (const itk::ExceptionObject & error)
   {
     throw InputError(Describe(error));
   }
+  // Taken out of the pipeline: the next run makes new images, and the ones handed out stay as they are (the filter's
+  // further outputs, which ITK cannot disconnect from it, copied: each is the CPR's size).
   Results.CPR = CPRFilter->GetOutput();
+  Results.CPR->DisconnectPipeline();
   Results.FoldMask = CPRFilter->GetFoldMask();
-  Results.Points = PointImageEnabled ? VesselPathResults::PointImageType::Pointer(CPRFilter->GetPointImage()) : nullptr;
+  Results.FoldMask = CopyOf(Results.FoldMask.GetPointer());
+  Results.Points = PointImageEnabled ? VesselPathOutputs::PointImageType::Pointer(CPRFilter->GetPointImage()) : nullptr;
+  if (Results.Points)
+  {
+    Results.Points = CopyOf(Results.Points.GetPointer());
+  }
   Results.FoldedPixels = CPRFilter->GetNumberOfFoldedPixels();
   Results.FoldFreeHalfWidth = CPRFilter->GetFoldFreeHalfWidth();
   Results.PixelSpacing = spacing;
@@ -361,11 +530,16 @@ VesselPathLogic::Internals::RunResampling()
     {
       StackFilter->UpdateLargestPossibleRegion();
     }
+    catch (const itk::ProcessAborted &)
+    {
+      throw Cancelled("cross-sections: cancelled");
+    }
     catch (const itk::ExceptionObject & error)
     {
       throw InputError(Describe(error));
     }
     Results.CrossSections = StackFilter->GetOutput();
+    Results.CrossSections->DisconnectPipeline();
   }
   else
   {
@@ -414,78 +588,105 @@ VesselPathLogic::Internals::RunMeasurement()
   ++Counts.Measurement;
 }
 
-const VesselPathResults &
+const VesselPathOutputs &
 VesselPathLogic::Update()
 {
-  if (!m->Volume)
+  m->AbortRequested = false;
+  m->Running = true;
+  struct Finish
   {
-    throw InputError("no volume: the single-vessel reading samples a volume");
-  }
-  if (!m->HasTree || m->Tree.IsEmpty())
+    Internals * Logic;
+    ~Finish()
+    {
+      // The next Update() runs normally, whatever stopped this one.
+      Logic->CPRFilter->AbortGenerateDataOff();
+      Logic->StackFilter->AbortGenerateDataOff();
+      Logic->Running = false;
+      Logic->AbortRequested = false;
+    }
+  } finish{ m.get() };
+  m->ReportProgress(0.0, "conversion");
+  m->ConvertNodes();
+  m->UpdateStages();
+  if (m->Warn)
   {
-    throw InputError("no centerlines: the single-vessel reading follows a path of the centerline tree");
+    for (const auto & warning : m->Results.Warnings)
+    {
+      m->Warn(warning, "");
+    }
   }
-  const VesselPathParameters & p = m->Parameters;
-  const VesselPathParameters & last = m->PathParameters;
+  m->ReportProgress(1.0, "measurement");
+  return m->Results;
+}
+
+void
+VesselPathLogic::Internals::UpdateStages()
+{
+  const VesselPathParameters & p = Parameters;
+  const VesselPathParameters & last = PathParameters;
   // Stages rerun from the first whose inputs changed; each later stage reruns with it.
-  bool rerun = !m->PathValid || m->PathTree != m->Tree || last.BranchId != p.BranchId || last.HasRange != p.HasRange ||
+  bool rerun = !PathValid || PathTree != Tree || last.BranchId != p.BranchId || last.HasRange != p.HasRange ||
                last.RangeStart != p.RangeStart || last.RangeEnd != p.RangeEnd;
   if (rerun)
   {
-    m->FrameValid = m->ResamplingValid = m->MeasurementValid = false;
-    m->RunPath();
+    FrameValid = ResamplingValid = MeasurementValid = false;
+    StopIfAborted("path");
+    ReportProgress(0.05, "path");
+    RunPath();
   }
   const bool viewChanged = last.AutomaticUp != p.AutomaticUp || (!p.AutomaticUp && last.Up != p.Up) ||
                            last.ViewAngleInDegrees != p.ViewAngleInDegrees;
-  const bool frameStale = !m->FrameValid || m->FrameSectionSpacing != m->ResolvedSectionSpacing() || viewChanged ||
-                          (p.AutomaticUp && m->FrameVolume != ImageStamp::Of(m->Volume.GetPointer()));
-  m->PathParameters = p;
+  const bool frameStale = !FrameValid || FrameSectionSpacing != ResolvedSectionSpacing() || viewChanged ||
+                          (p.AutomaticUp && FrameVolume != ImageStamp::Of(Volume.GetPointer()));
+  PathParameters = p;
   if (frameStale)
   {
-    m->ResamplingValid = m->MeasurementValid = false;
-    m->RunFrame();
+    ResamplingValid = MeasurementValid = false;
+    StopIfAborted("frame");
+    ReportProgress(0.1, "frame");
+    RunFrame();
   }
-  const VesselPathParameters & sampled = m->ResampledParameters;
-  if (!m->ResamplingValid || m->ResampledVolume != ImageStamp::Of(m->Volume.GetPointer()) ||
-      m->ResampledRescale != m->Rescale || sampled.Reformation != p.Reformation ||
-      sampled.RollInDegrees != p.RollInDegrees || sampled.Width != p.Width || sampled.PixelSpacing != p.PixelSpacing ||
-      sampled.Interpolation != p.Interpolation || sampled.SlabThickness != p.SlabThickness ||
-      sampled.SlabMode != p.SlabMode || m->ResampledStack != m->CrossSectionsEnabled ||
-      m->ResampledPoints != m->PointImageEnabled)
+  const VesselPathParameters & sampled = ResampledParameters;
+  if (!ResamplingValid || ResampledVolume != ImageStamp::Of(Volume.GetPointer()) || ResampledRescale != Rescale ||
+      sampled.Reformation != p.Reformation || sampled.RollInDegrees != p.RollInDegrees || sampled.Width != p.Width ||
+      sampled.PixelSpacing != p.PixelSpacing || sampled.Interpolation != p.Interpolation ||
+      sampled.SlabThickness != p.SlabThickness || sampled.SlabMode != p.SlabMode ||
+      ResampledStack != CrossSectionsEnabled || ResampledPoints != PointImageEnabled)
   {
-    m->RunResampling();
+    StopIfAborted("resampling");
+    RunResampling();
   }
-  if (!m->MeasurementValid || m->MeasuredMask != ImageStamp::Of(m->Mask.GetPointer()) ||
-      m->MeasuredReferences != p.ReferencePoints || m->MeasuredMethod != p.ReferenceMethod ||
-      m->MeasuredScale != p.GradingScale)
+  if (!MeasurementValid || MeasuredMask != ImageStamp::Of(Mask.GetPointer()) ||
+      MeasuredReferences != p.ReferencePoints || MeasuredMethod != p.ReferenceMethod || MeasuredScale != p.GradingScale)
   {
-    m->RunMeasurement();
+    StopIfAborted("measurement");
+    ReportProgress(0.85, "measurement");
+    RunMeasurement();
   }
 
   // Warnings describe the results as they stand.
-  auto & warnings = m->Results.Warnings;
+  auto & warnings = Results.Warnings;
   warnings.clear();
-  if (m->Results.FoldedPixels > 0)
+  if (Results.FoldedPixels > 0)
   {
-    warnings.push_back(m->CPRFilter->GetFoldWarning());
+    warnings.push_back(CPRFilter->GetFoldWarning());
   }
-  const auto & lumen = m->Results.Lumen;
-  if (m->Mask && lumen.SectionsOutsideSegmentation > 0)
+  const auto & lumen = Results.Lumen;
+  if (Mask && lumen.SectionsOutsideSegmentation > 0)
   {
     warnings.push_back(std::to_string(lumen.SectionsOutsideSegmentation) + " of " +
-                       std::to_string(m->FrameSections.size()) + " cross-section centres lie outside " + m->MaskName +
+                       std::to_string(FrameSections.size()) + " cross-section centres lie outside " + MaskName +
                        ": no lumen measured there");
   }
-  if (m->Mask && lumen.ClippedSections > 0)
+  if (Mask && lumen.ClippedSections > 0)
   {
     warnings.push_back(std::to_string(lumen.ClippedSections) +
                        " cross-sections' lumen reaches the edge of the measured square: their areas are lower bounds");
   }
-  if (!m->Mask && !m->Results.HasLumen)
+  if (!Mask && !Results.HasLumen)
   {
     warnings.push_back("the lumen is not measured: the centerlines carry no radii and no segmentation was given");
   }
-  return m->Results;
 }
 
 itk::Point<double, 3>
@@ -503,23 +704,29 @@ VesselPathLogic::RowOfArcLength(double s) const
 itk::VesselPathSection
 VesselPathLogic::SectionAt(double s) const
 {
-  const auto & sections = m->Results.Sections;
+  return vr::SectionAt(m->Results, s);
+}
+
+itk::VesselPathSection
+SectionAt(const VesselPathOutputs & outputs, double s)
+{
+  const auto & sections = outputs.Sections;
   if (sections.empty())
   {
     throw InputError("no path: run Update() first");
   }
   // The frame between two sections: their Laterals blended, made normal to the tangent there.
-  const double           step = m->Results.SectionSpacing;
+  const double           step = outputs.SectionSpacing;
   const double           position = std::clamp(s / step, 0.0, static_cast<double>(sections.size() - 1));
   const auto             k = std::min(static_cast<std::size_t>(position), sections.size() - 1);
   const auto             next = std::min(k + 1, sections.size() - 1);
   const double           t = position - static_cast<double>(k);
   itk::VesselPathSection section = sections[k];
-  section.ArcLength = std::clamp(s, 0.0, m->Results.Path.GetLength());
-  section.Center = m->Results.Path.PointAt(section.ArcLength);
-  section.Tangent = m->Results.Path.TangentAt(section.ArcLength);
-  section.Radius = m->Results.Path.RadiusAt(section.ArcLength);
-  section.BranchId = m->Results.Path.BranchIdAt(section.ArcLength);
+  section.ArcLength = std::clamp(s, 0.0, outputs.Path.GetLength());
+  section.Center = outputs.Path.PointAt(section.ArcLength);
+  section.Tangent = outputs.Path.TangentAt(section.ArcLength);
+  section.Radius = outputs.Path.RadiusAt(section.ArcLength);
+  section.BranchId = outputs.Path.BranchIdAt(section.ArcLength);
   auto lateral = sections[k].Lateral * (1.0 - t) + sections[next].Lateral * t;
   lateral -= section.Tangent * (lateral * section.Tangent);
   lateral.Normalize();

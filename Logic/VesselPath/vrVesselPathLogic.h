@@ -9,9 +9,13 @@
 #include "itkCPRIntensityRescale.h"
 #include "vrPathSegments.h"
 #include "vrVesselStenosis.h"
+#include "vrCenterlineNode.h"
 #include "vrImageTypes.h"
+#include "vrReformationInputCache.h"
 #include "vrVesselPathParameters.h"
+#include "vrVolumeNode.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,12 +38,12 @@ struct VesselPathStageCounts
   unsigned int Measurement{ 0 };
 };
 
-/** \class VesselPathResults
+/** \class VesselPathOutputs
  * \brief What a single-vessel reading returns (docs/vessel-path.md): the path, its sections, the images and the
  * lumen. Images are ITK images in LPS; an image not asked for is null.
  * \ingroup VesselReformation
  */
-struct VesselPathResults
+struct VesselPathOutputs
 {
   using PointImageType = itk::Image<itk::Vector<float, 3>, 2>;
 
@@ -76,41 +80,76 @@ struct VesselPathResults
 
 /** "395.7 mm: ascending aorta → celiac trunk": the path's length and names, as the lumen table and the panel open. */
 std::string
-DescribePath(const VesselPathResults & results);
+DescribePath(const VesselPathOutputs & results);
+
+/** The section of \a outputs at arc length \a s (mm), interpolated along the frame: what a cross-section view shows.
+ * Reads \a outputs alone, so a host may call it on a copy of the outputs on any thread. Throws vr::InputError when
+ * \a outputs hold no path. */
+itk::VesselPathSection
+SectionAt(const VesselPathOutputs & outputs, double s);
 
 /** \class VesselPathLogic
  * \brief The single-vessel reading of the module (docs/vessel-path.md): one path of the centerline tree, its
  * straightened or stretched CPR, its cross-sections and its lumen, recomputing only what a change invalidates.
  *
+ * It takes the nodes vr::VesselReformationLogic takes (docs/module-logic.md): a volume node, a centerline node (RAS)
+ * and, for the lumen, a segmentation node, and converts them through a vr::ReformationInputCache (the one place RAS
+ * meets LPS; a host shares one cache between both logics to convert the nodes once), again only when a node changes.
+ *
  * A roll, a width, a spacing of the image or a sampling change reruns the resampling alone; a change of the path
  * (branch, range), the section spacing or the tree view reruns the frame, the resampling and the measurement; a
- * change of the segmentation, the reference points or method, or the grading scale reruns the measurement alone. The
- * lumen comes from the segmentation when one is set, else from the centerline radii, else it is not measured.
+ * change of the segmentation, the reference points or method, or the grading scale reruns the measurement alone; a
+ * new centerline node (or a change to it) reruns everything, a new volume node the frame (with an automatic up axis)
+ * and the resampling. The lumen comes from the segmentation when one is set, else from the centerline radii, else it
+ * is not measured. GetStageCounts() counts every stage's runs so that tests can check these rules. A stage that
+ * reruns makes new output images: the outputs of an earlier Update() stay as they were, so a host may keep and show
+ * them while the logic runs again on another thread.
  *
- * Errors are vr::InputError naming the parameter by its meaning (vr::ParameterName) or the segmentation.
- * \sa VesselPathParameters, itk::StraightenedCPRImageFilter, itk::CrossSectionStackImageFilter
+ * Errors are vr::InputError naming the parameter by its meaning (vr::ParameterName) or the node. AbortUpdate() stops a
+ * running Update(), which throws vr::Cancelled. Progress goes to the progress callback, warnings (folds, sections
+ * outside the segmentation, a path without radii) to the warning callback and GetWarnings(), as the tree logic's.
+ * \sa VesselPathParameters, VesselReformationLogic, itk::StraightenedCPRImageFilter, itk::CrossSectionStackImageFilter
  * \ingroup VesselReformation
  */
 class VesselPathLogic
 {
 public:
+  /** Receives the overall progress in [0, 1] and the name of the running stage (as the tree logic's). */
+  using ProgressCallback = std::function<void(double fraction, const std::string & stage)>;
+  /** Receives each warning, and the parameter it concerns by meaning (vr::ParameterName), or "". */
+  using WarningCallback = std::function<void(const std::string & message, const std::string & parameter)>;
+
   VesselPathLogic();
   ~VesselPathLogic();
   VesselPathLogic(const VesselPathLogic &) = delete;
   VesselPathLogic &
   operator=(const VesselPathLogic &) = delete;
 
-  /** The volume sampled (LPS): an itk::Image<T, 3> of a stored pixel type (vr::StoredVolume), read in place, and the
-   * rescale of its stored values to intensities. */
+  /** \param node the volume sampled (role "volume"), read in its stored pixel type without a copy; the logic keeps a
+   * reference. */
   void
-  SetVolume(const itk::ImageBase<3> * volume, const itk::CPRIntensityRescale & rescale = {});
-  /** The centerline tree the path is taken from (LPS mm). */
+  SetVolumeNode(VolumeNode * node);
+  VolumeNode *
+  GetVolumeNode() const;
+  /** \param node the centerlines the path is taken from (role "centerlines", RAS); the logic keeps a reference. */
   void
-  SetCenterlineTree(const itk::CenterlineTree & tree);
-  /** A vessel mask (1 = vessel) to measure the lumen on, with how messages name it ("segmentation aorta.nii.gz");
-   * null: measure from the centerline radii. */
+  SetCenterlineNode(CenterlineNode * node);
+  CenterlineNode *
+  GetCenterlineNode() const;
+  /** \param node a vessel segmentation to measure the lumen on (a label map, mask, level set or probability map node,
+   * vr::MakeSegmentationMask; every non-zero label is vessel), named in messages as the tree logic names it
+   * (ReformationInputCache::DescribeSegmentationNode); null: measure from the centerline radii. */
   void
-  SetSegmentationMask(const LabelMapVolumeType * mask, const std::string & name);
+  SetSegmentationNode(VolumeNode * node);
+  VolumeNode *
+  GetSegmentationNode() const;
+  /** \param cache where the nodes are converted (shared with the tree logic's to convert them once); null gives the
+   * logic a cache of its own again, as it has from construction. */
+  void
+  SetInputCache(std::shared_ptr<ReformationInputCache> cache);
+  std::shared_ptr<ReformationInputCache>
+  GetInputCache() const;
+
   /** Validates \a parameters (vr::InputError) and keeps them. */
   void
   SetParameters(const VesselPathParameters & parameters);
@@ -122,16 +161,32 @@ public:
   void
   SetPointImageEnabled(bool enabled);
 
-  /** Runs the stages a change since the last call invalidated. Throws vr::InputError without a volume or a tree,
-   * on an unknown branch, a range or reference point outside the path, a path shorter than one section, or a
-   * segmentation that contains no section's centre. */
-  const VesselPathResults &
+  /** \param callback receives progress during Update(); may be empty. */
+  void
+  SetProgressCallback(ProgressCallback callback);
+  /** \param callback receives the warnings of each Update(); may be empty. */
+  void
+  SetWarningCallback(WarningCallback callback);
+
+  /** Runs the stages a change since the last call invalidated. Throws vr::InputError without a volume or centerline
+   * node, on a node that does not convert, an unknown branch, a range or reference point outside the path, a path
+   * shorter than one section, or a segmentation that contains no section's centre; vr::Cancelled after
+   * AbortUpdate(). */
+  const VesselPathOutputs &
   Update();
-  /** The most recent results. */
-  const VesselPathResults &
-  GetResults() const;
+  /** Asks a running Update() (on another thread) to stop as soon as its current filter can; that Update() throws
+   * vr::Cancelled. Without a running Update() it does nothing. Thread-safe. */
+  void
+  AbortUpdate();
+  /** The most recent outputs. */
+  const VesselPathOutputs &
+  GetOutputs() const;
+  /** \return how many times each stage has run since construction. */
   const VesselPathStageCounts &
   GetStageCounts() const;
+  /** \return the warnings of the latest Update() (GetOutputs().Warnings). */
+  std::vector<std::string>
+  GetWarnings() const;
 
   /** The LPS point of continuous CPR pixel (column, row) of the last Update. */
   itk::Point<double, 3>
@@ -139,7 +194,7 @@ public:
   /** The continuous CPR row of arc length \a s (mm, on the path read). */
   double
   RowOfArcLength(double s) const;
-  /** The section at arc length \a s (mm), interpolated along the frame: what a cross-section view shows. */
+  /** The section at arc length \a s (mm): vr::SectionAt(GetOutputs(), s). */
   itk::VesselPathSection
   SectionAt(double s) const;
 

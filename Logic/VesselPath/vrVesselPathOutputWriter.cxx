@@ -18,7 +18,7 @@ VesselPathOutputWriter::CheckPath(VesselPathOutput output, const std::string & p
 }
 
 void
-VesselPathOutputWriter::Write(const VesselPathResults & results)
+VesselPathOutputWriter::Write(const VesselPathOutputs & results)
 {
   WriteReserved(
     [&results](VesselPathOutput output)

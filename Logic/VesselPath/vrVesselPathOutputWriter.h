@@ -38,7 +38,7 @@ public:
    * when an output asked for was not computed (a lumen table without a lumen), before anything is written, or naming
    * the flag when a write fails. */
   void
-  Write(const VesselPathResults & results);
+  Write(const VesselPathOutputs & results);
 
 protected:
   /** A lumen table is CSV or TSV by its extension (vr::LumenTableSeparator): any other is refused by Add(). */

@@ -57,7 +57,9 @@ struct DetailRegion
 };
 
 void
-PrintStages(const vr::ReformationOutputs & outputs, const vr::StageCounts & before, const vr::StageCounts & after)
+PrintStages(const vr::ReformationOutputs &     outputs,
+            const vr::ReformationStageCounts & before,
+            const vr::ReformationStageCounts & after)
 {
   auto line = [](const char * stage, double seconds, unsigned int runs)
   {
@@ -200,14 +202,14 @@ RunDemo(int argc, char * argv[])
     {
       parameters.Anisotropy = anisotropy;
       logic.SetParameters(parameters);
-      const auto   before = logic.GetStageExecutionCounts();
+      const auto   before = logic.GetStageCounts();
       const auto & outputs = logic.Update();
       std::cout << "  " << what << " relaxation (" << vr::DescribeFilterSettings(parameters) << ", "
                 << outputs.RelaxBackendUsed << "):" << std::endl;
       std::cout << "    backend    " << outputs.RelaxBackendUsed << ": " << outputs.RelaxBackendReason << std::endl;
       std::cout << "    view       depth map on " << outputs.DepthBackendUsed << ", resampling on "
                 << outputs.ResampleBackendUsed << std::endl;
-      PrintStages(outputs, before, logic.GetStageExecutionCounts());
+      PrintStages(outputs, before, logic.GetStageCounts());
       return Result{ vr::ConvertVolumeNodeToDepthImage(outputs.RelaxedDepth),
                      vr::ConvertVolumeNodeToDepthImage(outputs.CPR) };
     };

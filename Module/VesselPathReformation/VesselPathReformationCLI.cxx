@@ -10,6 +10,7 @@
 #include "vrInputError.h"
 #include "vrLumenMeasurement.h"
 #include "vrModuleExport.h"
+#include "vrNodeConversion.h"
 #include "vrParameterName.h"
 #include "vrReformationParameters.h"
 #include "vrText.h"
@@ -206,18 +207,22 @@ RunVesselPathReformation(const vr::CLIArguments & arguments, vr::CLIProgress & p
   };
   stopIfCancelled("reading");
 
+  // The logic takes nodes, as a platform holds them: the volume's voxels shared, the centerlines in RAS with the tree
+  // read as their conversion (the branches as the file numbers them).
   vr::VesselPathLogic logic;
-  logic.SetVolume(volume.Image, volume.Rescale);
-  logic.SetCenterlineTree(tree);
+  logic.SetVolumeNode(vr::ConvertStoredVolumeToVolumeNode(volume, "volume"));
+  const auto centerlines = vr::ConvertTreeToCenterlineNode(tree, "centerlines");
+  logic.GetInputCache()->SetCenterlines(centerlines, tree);
+  logic.SetCenterlineNode(centerlines);
   if (hasSegmentation)
   {
-    logic.SetSegmentationMask(segmentation.Mask, segmentationName);
+    logic.SetSegmentationNode(vr::MakeSegmentationNode(segmentation));
   }
   logic.SetParameters(parameters);
   logic.SetCrossSectionsEnabled(writer.Has(vr::VesselPathOutput::CrossSections));
   logic.SetPointImageEnabled(writer.Has(vr::VesselPathOutput::Points));
   progress.Update(0.5, "reformation");
-  const vr::VesselPathResults & results = logic.Update();
+  const vr::VesselPathOutputs & results = logic.Update();
   for (const std::string & warning : results.Warnings)
   {
     progress.Print(std::cerr, "warning: " + warning);

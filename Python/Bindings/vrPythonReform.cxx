@@ -15,9 +15,6 @@
 
 #include <pybind11/stl.h>
 
-#include <vtkFloatArray.h>
-#include <vtkPointData.h>
-
 #include <cmath>
 #include <map>
 
@@ -52,30 +49,6 @@ const std::map<std::string, ReformationOutput> OutputKeys = {
   { "owner_labels", ReformationOutput::OwnerLabels },
   { "surface", ReformationOutput::CutSurface },
 };
-
-/** A volume node over the voxels \a volume's image holds (no copy; the image outlives the node, which lives in one
- * reform() call), on the image's grid: what a platform hands the logic. */
-vtkSmartPointer<VolumeNode>
-NodeOver(const Volume & volume)
-{
-  const auto & region = volume.Image->GetBufferedRegion();
-  auto         voxels = vtkSmartPointer<vtkFloatArray>::New();
-  // save = 1: VTK never frees memory it does not own.
-  voxels->SetArray(volume.Image->GetBufferPointer(), static_cast<vtkIdType>(region.GetNumberOfPixels()), 1);
-  auto data = vtkSmartPointer<vtkImageData>::New();
-  data->SetExtent(0,
-                  static_cast<int>(region.GetSize(0)) - 1,
-                  0,
-                  static_cast<int>(region.GetSize(1)) - 1,
-                  0,
-                  static_cast<int>(region.GetSize(2)) - 1);
-  data->GetPointData()->SetScalars(voxels);
-  auto node = vtkSmartPointer<VolumeNode>::New();
-  node->SetName(volume.Name);
-  node->SetImageData(data);
-  node->SetIJKToRASMatrix(IJKToRASMatrixOf(*volume.Image));
-  return node;
-}
 
 py::dict
 ViewOf(const itk::CPRViewGeometry & view)

@@ -11,6 +11,7 @@
 #include "vrPythonVolume.h"
 #include "vrReformationParameters.h"
 #include "vrText.h"
+#include "vrNodeConversion.h"
 #include "vrVesselPathLogic.h"
 #include "vrVesselPathOutputWriter.h"
 
@@ -78,7 +79,7 @@ LumenColumns(const itk::VesselLumenProfile & profile)
 
 /** The module's returned values (vr::LumenSummaryValues) with numbers as numbers, lists as tuples, nothing as None. */
 py::dict
-SummaryOf(const VesselPathResults & results)
+SummaryOf(const VesselPathOutputs & results)
 {
   py::dict summary;
   for (const auto & [name, value] : LumenSummaryValues({ results.Lumen, results.Stenosis }))
@@ -199,7 +200,7 @@ VesselPath(const py::object & volumeArgument, const py::object & centerlinesArgu
         progress,
         [&](ProgressSink & sink)
         {
-          // The logic has no abort: a stop is honoured between its stages, as the module honours 3D Slicer's.
+          // A stop is honoured between the steps here, and within the logic's update through its AbortUpdate().
           const auto stopIfAsked = [&sink](const char * stage)
           {
             if (sink.StopRequested())
@@ -222,16 +223,21 @@ VesselPath(const py::object & volumeArgument, const py::object & centerlinesArgu
           }
           stopIfAsked("reading");
           sink.Report(0.5, "reformation");
-          logic.SetVolume(volume.Image);
-          logic.SetCenterlineTree(tree);
+          // Nodes, as reform() hands them: the volume's node over the array's voxels, given ready-made.
+          const auto node = NodeOver(volume);
+          logic.SetVolumeNode(node);
+          logic.GetInputCache()->SetVolume(node, volume.Image);
+          const auto centerlines = ConvertTreeToCenterlineNode(tree, "centerlines");
+          logic.GetInputCache()->SetCenterlines(centerlines, tree);
+          logic.SetCenterlineNode(centerlines);
           if (segmentation)
           {
-            logic.SetSegmentationMask(segmentation->Mask, segmentationName);
+            logic.SetSegmentationNode(MakeSegmentationNode(*segmentation));
           }
           logic.SetParameters(parameters);
           logic.SetCrossSectionsEnabled(crossSections || writer.Has(VesselPathOutput::CrossSections));
           logic.SetPointImageEnabled(pointImage || writer.Has(VesselPathOutput::Points));
-          const VesselPathResults & results = logic.Update();
+          const VesselPathOutputs & results = logic.Update();
           stopIfAsked("reformation");
           sink.Report(0.9, "writing");
           try
@@ -243,12 +249,12 @@ VesselPath(const py::object & volumeArgument, const py::object & centerlinesArgu
             throw FileError(error.what());
           }
         },
-        [] {});
+        [&logic] { logic.AbortUpdate(); });
     });
   OnFiles("", [&] { writer.CommitAll(); });
   result.Written = writer.Paths();
 
-  const VesselPathResults & results = logic.GetResults();
+  const VesselPathOutputs & results = logic.GetOutputs();
   result.CPR = ArrayOf(results.CPR.GetPointer());
   result.CrossSections = crossSections ? ArrayOf(results.CrossSections.GetPointer()) : py::object(py::none());
   result.Points = pointImage ? ArrayOfPoints(results.Points.GetPointer()) : py::object(py::none());

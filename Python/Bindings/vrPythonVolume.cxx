@@ -3,11 +3,16 @@
 
 #include "vrCenterlineExtraction.h"
 #include "vrCoordinateFrames.h"
+#include "vrNodeConversion.h"
 #include "vrPythonErrors.h"
 #include "vrPythonImages.h"
 #include "vrVolumeIO.h"
 
 #include <pybind11/stl.h>
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
 
 #include <cmath>
 #include <sstream>
@@ -459,4 +464,27 @@ Made by read_segmentation() or Segmentation.from_volume().)doc")
     py::arg("paths"),
     py::arg("labels") = std::vector<double>());
 }
+
+vtkSmartPointer<VolumeNode>
+NodeOver(const Volume & volume)
+{
+  const auto & region = volume.Image->GetBufferedRegion();
+  auto         voxels = vtkSmartPointer<vtkFloatArray>::New();
+  // save = 1: VTK never frees memory it does not own.
+  voxels->SetArray(volume.Image->GetBufferPointer(), static_cast<vtkIdType>(region.GetNumberOfPixels()), 1);
+  auto data = vtkSmartPointer<vtkImageData>::New();
+  data->SetExtent(0,
+                  static_cast<int>(region.GetSize(0)) - 1,
+                  0,
+                  static_cast<int>(region.GetSize(1)) - 1,
+                  0,
+                  static_cast<int>(region.GetSize(2)) - 1);
+  data->GetPointData()->SetScalars(voxels);
+  auto node = vtkSmartPointer<VolumeNode>::New();
+  node->SetName(volume.Name);
+  node->SetImageData(data);
+  node->SetIJKToRASMatrix(IJKToRASMatrixOf(*volume.Image));
+  return node;
+}
+
 } // namespace vr::python

@@ -5,6 +5,9 @@
 #include "vrCenterlineExtraction.h"
 #include "vrImageTypes.h"
 #include "vrSegmentationIO.h"
+#include "vrVolumeNode.h"
+
+#include <vtkSmartPointer.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -60,6 +63,11 @@ GeometryFromAffine(const py::object & affine);
 /** \return \a image (the caller keeps it alive through the capsule) as a Volume whose array views its voxels. */
 Volume
 VolumeFromImage(VolumeImageType::Pointer image, const std::string & name);
+
+/** A volume node over the voxels \a volume's image holds (no copy; the image outlives the node, which lives in one
+ * call of reform() or vessel_path()), on the image's grid: what a platform hands the logics. */
+vtkSmartPointer<VolumeNode>
+NodeOver(const Volume & volume);
 
 /** \return a mask (0/1, unsigned char) as a numpy array (k, j, i) viewing its voxels; the array keeps it alive. */
 py::array

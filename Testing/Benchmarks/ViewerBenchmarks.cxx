@@ -24,8 +24,8 @@
 //   VesselPathRoll     the single-vessel panel (docs/viewer.md) on the phantom's longest path (40 mm wide, 1.5 mm
 //                      pixels): one mouse event of a left-drag on the straightened CPR, 2 pixels (1 degree), from the
 //                      event to the new straightened CPR painted on screen (the logic's resampling of the CPR on the
-//                      GUI thread, then a synchronous repaint of the view). Counter logic_ms: VesselPathLogic::Update()
-//                      of those steps.
+//                      viewer's worker, then the result's synchronous repaint of the view on the GUI thread). Counter
+//                      logic_ms: VesselPathLogic::Update() of those steps.
 // Repetitions are single changes (or single drags); median and p95 are computed over them.
 #include "vrReformationInputs.h"
 #include "vrStraightenedCPRView.h"
@@ -459,7 +459,7 @@ VesselPathRoll(benchmark::State & state)
     state.SkipWithError("the longest path did not open");
     return;
   }
-  RunUntil([] { return true; });
+  RunUntil([panel] { return panel->HasPath() && !panel->IsUpdating(); });
   // Each repetition is one mouse step of a left-drag on the straightened CPR, 2 pixels (1 degree) on from the last
   // one's roll; the press before it and the release after it (which adds the cross-section stack) are not timed.
   vr::StraightenedCPRView * view = panel->GetStraightenedView();
@@ -480,15 +480,18 @@ VesselPathRoll(benchmark::State & state)
     send(QEvent::MouseButtonPress, start, Qt::LeftButton);
     const auto begin = Clock::now();
     send(QEvent::MouseMove, start + QPointF(2.0, 0.0), Qt::NoButton);
+    // The step is computed on the viewer's worker; the panel repaints the CPR as its result comes.
+    RunUntil([panel] { return !panel->IsUpdating(); });
     state.SetIterationTime(Seconds(begin, Clock::now()));
     logic.push_back(1000.0 * panel->GetLastUpdateSeconds());
     send(QEvent::MouseButtonRelease, start + QPointF(2.0, 0.0), Qt::LeftButton);
+    RunUntil([panel] { return !panel->IsUpdating(); });
   }
-  const auto size = panel->GetLogic().GetResults().CPR->GetLargestPossibleRegion().GetSize();
+  const auto size = panel->GetOutputs().CPR->GetLargestPossibleRegion().GetSize();
   state.counters["logic_ms"] = Percentile(logic, 0.5);
   state.counters["cpr_rows"] = static_cast<double>(size[1]);
   state.counters["cpr_columns"] = static_cast<double>(size[0]);
-  state.counters["sections"] = static_cast<double>(panel->GetLogic().GetResults().Sections.size());
+  state.counters["sections"] = static_cast<double>(panel->GetOutputs().Sections.size());
 }
 
 constexpr int Repetitions = 30;

@@ -211,14 +211,16 @@ TEST_P(LargeVolume, IsReadReformedAndReadAsOneVesselAtBothEnds)
 
   // The same vessel straightened: its first and last rows sample the end slices.
   vr::VesselPathLogic pathLogic;
-  pathLogic.SetVolume(stored.Image, stored.Rescale);
-  pathLogic.SetCenterlineTree(tree);
+  pathLogic.SetVolumeNode(node);
+  const auto pathCenterlines = vr::ConvertTreeToCenterlineNode(tree, "centerlines");
+  pathLogic.GetInputCache()->SetCenterlines(pathCenterlines, tree);
+  pathLogic.SetCenterlineNode(pathCenterlines);
   pathLogic.SetPointImageEnabled(true);
   vr::VesselPathParameters pathParameters;
   pathParameters.Width = 40.0;
   pathParameters.PixelSpacing = SliceSpacing;
   pathLogic.SetParameters(pathParameters);
-  const vr::VesselPathResults & results = pathLogic.Update();
+  const vr::VesselPathOutputs & results = pathLogic.Update();
   const auto                    size = results.CPR->GetLargestPossibleRegion().GetSize();
   int                           sampled[2] = { 0, 0 };
   for (itk::SizeValueType j = 0; j < size[1]; ++j)

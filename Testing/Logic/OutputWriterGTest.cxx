@@ -94,10 +94,10 @@ NumberedImage(const typename TImage::SizeType & size, TValue value)
 
 /** A single-vessel reading's results made by hand: a 3 x 4 CPR holding 0.5 k, a fold mask of alternate pixels, a
  * 2 x 2 x 3 cross-section stack holding k; no point image, no lumen. */
-vr::VesselPathResults
+vr::VesselPathOutputs
 HandMadeVesselPathResults()
 {
-  vr::VesselPathResults results;
+  vr::VesselPathOutputs results;
   results.CPR = NumberedImage<vr::DepthImageType>({ { 3, 4 } }, [](std::size_t k) { return 0.5f * k; });
   results.FoldMask = NumberedImage<vr::MaskImageType>({ { 3, 4 } }, [](std::size_t k) { return k % 2; });
   results.CrossSections =
@@ -260,7 +260,7 @@ TEST(OutputWriter, WritesNothingOnAnAbandonedRunAndRefusesAnEmptySelection)
 // The single-vessel writer: each reserved output, nothing else, with the hand-made results' pixels.
 TEST(VesselPathOutputWriter, WritesEachReservedOutputAndNothingElse)
 {
-  const vr::VesselPathResults results = HandMadeVesselPathResults();
+  const vr::VesselPathOutputs results = HandMadeVesselPathResults();
   ScopedTemporaryFolder       folder;
   vr::VesselPathOutputWriter  writer;
   writer.Add(vr::VesselPathOutput::CPR, folder.File("cpr.nrrd"), "--outputCPR");
@@ -301,7 +301,7 @@ TEST(VesselPathOutputWriter, WritesNothingWhenAnOutputWasNotComputed)
   for (const Case & missing : cases)
   {
     SCOPED_TRACE(missing.Flag);
-    vr::VesselPathResults results = HandMadeVesselPathResults();
+    vr::VesselPathOutputs results = HandMadeVesselPathResults();
     ScopedTemporaryFolder folder;
     vr::test::WriteTextFile(folder.File(missing.Name), "an older file");
     {

@@ -112,11 +112,11 @@ TEST(ReformationInputCache, TwoLogicsSharingOneCacheHoldOneVolume)
   EXPECT_TRUE(std::equal(shared->GetBufferPointer(), shared->GetBufferPointer() + count, own->GetBufferPointer()));
 
   // A logic given back a cache of its own converts again on its next update.
-  const unsigned int conversions = second.GetStageExecutionCounts().Conversion;
+  const unsigned int conversions = second.GetStageCounts().Conversion;
   second.SetInputCache(nullptr);
   EXPECT_NE(second.GetInputCache(), cache);
   second.Update();
-  EXPECT_EQ(second.GetStageExecutionCounts().Conversion, conversions + 1);
+  EXPECT_EQ(second.GetStageCounts().Conversion, conversions + 1);
   EXPECT_NE(second.GetResampleFilter()->GetVolume(), converted->Image.GetPointer());
 }
 } // namespace

@@ -9,6 +9,7 @@
 #include "vrPathSegments.h"
 #include "vrStenosisScale.h"
 #include "vrTestFiles.h"
+#include "vrNodeConversion.h"
 #include "vrVesselPathLogic.h"
 #include "vrVesselPathOutputWriter.h"
 
@@ -110,11 +111,13 @@ struct Reading
   vr::VolumeImageType::Pointer Volume = BlankVolume();
   vr::VesselPathLogic          Logic;
 
-  const vr::VesselPathResults &
+  const vr::VesselPathOutputs &
   Read(const itk::CenterlineTree & tree, int branch, vr::StenosisScale scale = vr::StenosisScale::Automatic)
   {
-    Logic.SetVolume(Volume);
-    Logic.SetCenterlineTree(tree);
+    Logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(Volume.GetPointer(), "blank"));
+    const auto centerlines = vr::ConvertTreeToCenterlineNode(tree, "tree");
+    Logic.GetInputCache()->SetCenterlines(centerlines, tree); // the tree as built, junctions and all
+    Logic.SetCenterlineNode(centerlines);
     vr::VesselPathParameters parameters;
     parameters.BranchId = branch;
     parameters.SectionSpacing = 0.5;
@@ -127,7 +130,7 @@ struct Reading
 
 /** The grading of the section at arc length \a s. */
 const vr::SectionGrading &
-MarkAt(const vr::VesselPathResults & results, double s)
+MarkAt(const vr::VesselPathOutputs & results, double s)
 {
   const auto & sections = results.Lumen.Sections;
   for (std::size_t k = 0; k < sections.size(); ++k)

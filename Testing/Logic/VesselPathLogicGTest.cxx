@@ -3,6 +3,7 @@
 // stages; the pixel-to-patient mapping against the path; errors naming the parameter.
 
 #include "vrInputError.h"
+#include "vrNodeConversion.h"
 #include "vrTestFiles.h"
 #include "vrTestImages.h"
 #include "vrTestSegmentations.h"
@@ -12,10 +13,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace
 {
 using vr::test::P;
 using PointType = itk::Point<double, 3>;
+using DepthImagePointer = vr::DepthImageType::Pointer;
 
 /** Two branches: a trunk along +z and a child leaving it at its middle along +x, radii known. */
 itk::CenterlineTree
@@ -55,6 +60,29 @@ MakeScene()
   return scene;
 }
 
+/** The scene's nodes, as a platform hands them to the logic (RAS; the logic converts them). */
+vtkSmartPointer<vr::VolumeNode>
+VolumeNodeOf(const Scene & scene)
+{
+  return vr::ConvertItkImageToVolumeNode(scene.Volume.GetPointer(), "tubes volume");
+}
+
+vtkSmartPointer<vr::CenterlineNode>
+CenterlineNodeOf(const itk::CenterlineTree & tree)
+{
+  return vr::ConvertTreeToCenterlineNode(tree, "two branches");
+}
+
+/** Hands \a logic a centerline node of \a tree with the tree itself as its conversion (as the modules do): the
+ * child leaves the trunk at its middle, which the node's polylines would cut into two branches. */
+void
+SetTree(vr::VesselPathLogic & logic, const itk::CenterlineTree & tree)
+{
+  const auto node = CenterlineNodeOf(tree);
+  logic.GetInputCache()->SetCenterlines(node, tree);
+  logic.SetCenterlineNode(node);
+}
+
 vr::VesselPathParameters
 Defaults()
 {
@@ -81,8 +109,8 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
 {
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
-  logic.SetVolume(scene.Volume);
-  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetVolumeNode(VolumeNodeOf(scene));
+  SetTree(logic, TwoBranchTree());
   vr::VesselPathParameters parameters = Defaults();
   logic.SetParameters(parameters);
   logic.Update();
@@ -113,12 +141,12 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   logic.SetParameters(parameters);
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 3);
-  EXPECT_NEAR(logic.GetResults().Path.GetLength(), 35.0, 1e-6);
+  EXPECT_NEAR(logic.GetOutputs().Path.GetLength(), 35.0, 1e-6);
   // The segmentation and the reference points: the measurement alone.
-  logic.SetSegmentationMask(scene.Mask, "segmentation tubes");
+  logic.SetSegmentationNode(vr::ConvertItkImageToVolumeNode(scene.Mask.GetPointer(), "tubes"));
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 4);
-  EXPECT_EQ(logic.GetResults().Lumen.Source, itk::VesselLumenSource::Segmentation);
+  EXPECT_EQ(logic.GetOutputs().Lumen.Source, itk::VesselLumenSource::Segmentation);
   parameters.ReferencePoints = { 5.0, 30.0 };
   logic.SetParameters(parameters);
   logic.Update();
@@ -128,7 +156,7 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   logic.SetParameters(parameters);
   logic.Update();
   ExpectCounts(logic.GetStageCounts(), 3, 3, 5, 6);
-  EXPECT_EQ(logic.GetResults().Stenosis.Method, vr::VesselReferenceMethod::RobustFit);
+  EXPECT_EQ(logic.GetOutputs().Stenosis.Method, vr::VesselReferenceMethod::RobustFit);
   // The section spacing: the frame, the resampling and the measurement.
   parameters.SectionSpacing = 1.0;
   logic.SetParameters(parameters);
@@ -136,37 +164,126 @@ TEST(VesselPathLogic, EachChangeRerunsOnlyWhatItInvalidates)
   ExpectCounts(logic.GetStageCounts(), 3, 4, 6, 7);
 }
 
+// The nodes as the tree logic takes them (docs/module-logic.md): a node changed reruns what its conversion feeds, an
+// unchanged one nothing; and the images an Update() handed out stay as they were when a stage reruns.
+TEST(VesselPathLogic, EachNodeChangeRerunsOnlyWhatItInvalidates)
+{
+  const Scene         scene = MakeScene();
+  const auto          volume = VolumeNodeOf(scene);
+  const auto          centerlines = CenterlineNodeOf(TwoBranchTree());
+  const auto          segmentation = vr::ConvertItkImageToVolumeNode(scene.Mask.GetPointer(), "tubes");
+  vr::VesselPathLogic logic;
+  logic.SetVolumeNode(volume);
+  logic.SetCenterlineNode(centerlines);
+  EXPECT_EQ(logic.GetVolumeNode(), volume.GetPointer());
+  EXPECT_EQ(logic.GetCenterlineNode(), centerlines.GetPointer());
+  vr::VesselPathParameters parameters = Defaults();
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 1, 1, 1);
+  const DepthImagePointer  firstCPR = logic.GetOutputs().CPR;
+  const std::vector<float> firstPixels(firstCPR->GetBufferPointer(),
+                                       firstCPR->GetBufferPointer() +
+                                         firstCPR->GetLargestPossibleRegion().GetNumberOfPixels());
+
+  // The volume node modified: the resampling alone (the frame does not read the volume with a fixed up axis).
+  volume->Modified();
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 1, 2, 1);
+  EXPECT_NE(logic.GetOutputs().CPR, firstCPR) << "a rerun stage makes a new image";
+  EXPECT_TRUE(std::equal(firstPixels.begin(), firstPixels.end(), firstCPR->GetBufferPointer()))
+    << "the image handed out before changed under its holder";
+  // With the automatic up axis, the frame reads the volume: a modified volume reruns it too.
+  parameters.AutomaticUp = true;
+  logic.SetParameters(parameters);
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 2, 3, 2);
+  volume->Modified();
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 3, 4, 3);
+  // The centerline node modified but holding the same tree: nothing.
+  centerlines->Modified();
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 1, 3, 4, 3);
+  // Another centerline node, another tree: everything.
+  itk::CenterlineTree longer;
+  longer.AddBranch(vr::test::TubeBranch(1, vr::test::SegmentPoints(P(0, 0, -30), P(0, 0, 34), 0.5), 3.0));
+  longer.AddBranch(vr::test::TubeBranch(2, vr::test::SegmentPoints(P(0, 0, 0), P(25, 0, 0), 0.5), 2.0));
+  logic.SetCenterlineNode(CenterlineNodeOf(longer));
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 2, 4, 5, 4);
+  // A segmentation node, and that node modified: the measurement alone, each time.
+  logic.SetSegmentationNode(segmentation);
+  EXPECT_EQ(logic.GetSegmentationNode(), segmentation.GetPointer());
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 2, 4, 5, 5);
+  EXPECT_EQ(logic.GetOutputs().Lumen.Source, itk::VesselLumenSource::Segmentation);
+  segmentation->Modified();
+  logic.Update();
+  ExpectCounts(logic.GetStageCounts(), 2, 4, 5, 6);
+  // An abort asked for with no update running changes nothing: the next update runs (and here has nothing to do).
+  logic.AbortUpdate();
+  EXPECT_NO_THROW(logic.Update());
+  ExpectCounts(logic.GetStageCounts(), 2, 4, 5, 6);
+}
+
+TEST(VesselPathLogic, WithoutNodesItSaysWhichIsMissing)
+{
+  const Scene         scene = MakeScene();
+  vr::VesselPathLogic logic;
+  logic.SetParameters(Defaults());
+  try
+  {
+    logic.Update();
+    ADD_FAILURE() << "no volume node, and no error";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_NE(std::string(error.what()).find("no volume"), std::string::npos) << error.what();
+  }
+  logic.SetVolumeNode(VolumeNodeOf(scene));
+  try
+  {
+    logic.Update();
+    ADD_FAILURE() << "no centerline node, and no error";
+  }
+  catch (const vr::InputError & error)
+  {
+    EXPECT_NE(std::string(error.what()).find("no centerlines"), std::string::npos) << error.what();
+  }
+}
+
 TEST(VesselPathLogic, ARefusedSegmentationLeavesNoStaleLumen)
 {
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
-  logic.SetVolume(scene.Volume);
-  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetVolumeNode(VolumeNodeOf(scene));
+  SetTree(logic, TwoBranchTree());
   logic.SetParameters(Defaults());
   ASSERT_TRUE(logic.Update().HasLumen) << "the tree carries radii";
-  const double fromRadii = logic.GetResults().Stenosis.MinimalLumenDiameter;
+  const double fromRadii = logic.GetOutputs().Stenosis.MinimalLumenDiameter;
   // A segmentation without the path in it is refused...
   auto empty = vr::test::LabelMap::New();
   empty->CopyInformation(scene.Mask);
   empty->SetRegions(scene.Mask->GetLargestPossibleRegion());
   empty->Allocate(true);
-  logic.SetSegmentationMask(empty, "segmentation empty");
+  logic.SetSegmentationNode(vr::ConvertItkImageToVolumeNode(empty.GetPointer(), "empty"));
   EXPECT_THROW(logic.Update(), vr::InputError);
   // ...and going back to none measures from the radii again (the failed run had cleared the lumen).
-  logic.SetSegmentationMask(nullptr, "");
+  logic.SetSegmentationNode(nullptr);
   ASSERT_TRUE(logic.Update().HasLumen);
-  EXPECT_EQ(logic.GetResults().Lumen.Source, itk::VesselLumenSource::CenterlineRadius);
-  EXPECT_EQ(logic.GetResults().Stenosis.MinimalLumenDiameter, fromRadii);
+  EXPECT_EQ(logic.GetOutputs().Lumen.Source, itk::VesselLumenSource::CenterlineRadius);
+  EXPECT_EQ(logic.GetOutputs().Stenosis.MinimalLumenDiameter, fromRadii);
 }
 
 TEST(VesselPathLogic, TheDefaultPathIsTheLongestAndPixelsMapBackToIt)
 {
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
-  logic.SetVolume(scene.Volume);
-  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetVolumeNode(VolumeNodeOf(scene));
+  SetTree(logic, TwoBranchTree());
   logic.SetParameters(Defaults());
-  const vr::VesselPathResults & results = logic.Update();
+  const vr::VesselPathOutputs & results = logic.Update();
   // Root to the trunk's far end is 60 mm; root to the child's end 30 + 25 = 55 mm.
   EXPECT_NEAR(results.Path.GetLength(), 60.0, 1e-6);
   const auto   size = results.CPR->GetLargestPossibleRegion().GetSize();
@@ -185,7 +302,7 @@ TEST(VesselPathLogic, TheDefaultPathIsTheLongestAndPixelsMapBackToIt)
   child.BranchId = 2;
   logic.SetParameters(child);
   EXPECT_NEAR(logic.Update().Path.GetLength(), 55.0, 0.6);
-  EXPECT_EQ(logic.GetResults().Path.GetBranchChain(), (std::vector<int>{ 1, 2 }));
+  EXPECT_EQ(logic.GetOutputs().Path.GetBranchChain(), (std::vector<int>{ 1, 2 }));
 }
 
 TEST(VesselPathLogic, ErrorsNameTheParameter)
@@ -206,8 +323,8 @@ TEST(VesselPathLogic, ErrorsNameTheParameter)
     return std::string("(no error)");
   };
   EXPECT_EQ(parameterOf(Defaults()), "") << "no volume and no tree: an error about no parameter";
-  logic.SetVolume(scene.Volume);
-  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetVolumeNode(VolumeNodeOf(scene));
+  SetTree(logic, TwoBranchTree());
   vr::VesselPathParameters parameters = Defaults();
   parameters.BranchId = 9;
   EXPECT_EQ(parameterOf(parameters), vr::ParameterName::Branch);
@@ -235,8 +352,8 @@ TEST(VesselPathLogic, ANarrowerWidthAfterAWiderOneIsResampledWhole)
   // (it failed with "Requested region is (at least partially) outside the largest possible region").
   const Scene         scene = MakeScene();
   vr::VesselPathLogic logic;
-  logic.SetVolume(scene.Volume);
-  logic.SetCenterlineTree(TwoBranchTree());
+  logic.SetVolumeNode(VolumeNodeOf(scene));
+  SetTree(logic, TwoBranchTree());
   logic.SetCrossSectionsEnabled(true);
   vr::VesselPathParameters parameters = Defaults();
   parameters.Width = 40.0;

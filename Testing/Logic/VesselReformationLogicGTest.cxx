@@ -12,23 +12,23 @@ using namespace vr::test::logic;
 TEST_F(VesselReformationLogicTest, RecomputesOnlyWhatAChangeInvalidates)
 {
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 1u);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 1u);
+  ExpectCounts(m_Logic.GetStageCounts(), 1, 1, 1, 1, 1);
+  EXPECT_EQ(m_Logic.GetStageCounts().Conversion, 1u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Surface, 1u);
 
   // Unchanged parameters: nothing reruns.
   m_Logic.SetParameters(m_Logic.GetParameters());
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 1u);
+  ExpectCounts(m_Logic.GetStageCounts(), 1, 1, 1, 1, 1);
+  EXPECT_EQ(m_Logic.GetStageCounts().Surface, 1u);
 
   // A new w: relax and the relaxed CPR, not depth, not the unfiltered CPR.
   ReformationParameters parameters = m_Logic.GetParameters();
   parameters.Relaxation = 0.5;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 2, 2, 1, 2);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 2u);
+  ExpectCounts(m_Logic.GetStageCounts(), 1, 2, 2, 1, 2);
+  EXPECT_EQ(m_Logic.GetStageCounts().Surface, 2u);
 
   // A new a, then a new N: the same.
   parameters.Anisotropy = 2.0;
@@ -37,20 +37,20 @@ TEST_F(VesselReformationLogicTest, RecomputesOnlyWhatAChangeInvalidates)
   parameters.Iterations = 10;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 4, 4, 1, 4);
+  ExpectCounts(m_Logic.GetStageCounts(), 1, 4, 4, 1, 4);
 
   // A new angle: all three.
   parameters.AngleInDegrees = 30.0;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 5, 2, 5);
+  ExpectCounts(m_Logic.GetStageCounts(), 2, 5, 5, 2, 5);
 
   // A new window and level: nothing.
   parameters.Window = 400.0;
   parameters.Level = 500.0;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 5, 2, 5);
+  ExpectCounts(m_Logic.GetStageCounts(), 2, 5, 5, 2, 5);
   double window = 0.0;
   double level = 0.0;
   m_Logic.GetDisplayWindowLevel(window, level);
@@ -61,33 +61,33 @@ TEST_F(VesselReformationLogicTest, RecomputesOnlyWhatAChangeInvalidates)
   parameters.Interpolation = itk::CPRInterpolationMode::Nearest;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 6, 3, 6);
+  ExpectCounts(m_Logic.GetStageCounts(), 2, 5, 6, 3, 6);
 
   // A new slab: the same.
   parameters.SlabThickness = 2.0;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 5, 7, 4, 7);
+  ExpectCounts(m_Logic.GetStageCounts(), 2, 5, 7, 4, 7);
 
   // A new mode: everything.
   parameters.Mode = itk::CPRDepthMode::Nearest;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 3, 6, 8, 5, 8);
+  ExpectCounts(m_Logic.GetStageCounts(), 3, 6, 8, 5, 8);
 
   // Modified centerlines (the platform edited the polydata): conversion and everything.
   m_Centerlines->GetPolyData()->GetPoints()->SetPoint(0, -15.0, -20.0, 6.0);
   m_Centerlines->GetPolyData()->GetPoints()->Modified();
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 4, 7, 9, 6, 9);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 2u);
+  ExpectCounts(m_Logic.GetStageCounts(), 4, 7, 9, 6, 9);
+  EXPECT_EQ(m_Logic.GetStageCounts().Conversion, 2u);
 
   // Another volume node of the same geometry (another phase of the scan): conversion and resampling only; the
   // depth map and its relaxation depend on the volume's geometry alone.
   m_Logic.SetVolumeNode(MakeVolumeNode(m_Vessels));
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 4, 7, 10, 7, 10);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, 3u);
+  ExpectCounts(m_Logic.GetStageCounts(), 4, 7, 10, 7, 10);
+  EXPECT_EQ(m_Logic.GetStageCounts().Conversion, 3u);
 
   // A volume of another spacing changes the view's default pixel spacing: everything.
   auto finer = MakeVolumeNode(m_Vessels);
@@ -97,7 +97,7 @@ TEST_F(VesselReformationLogicTest, RecomputesOnlyWhatAChangeInvalidates)
   finer->SetIJKToRASMatrix(matrix);
   m_Logic.SetVolumeNode(finer);
   m_Logic.Update();
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 5, 8, 11, 8, 11);
+  ExpectCounts(m_Logic.GetStageCounts(), 5, 8, 11, 8, 11);
 }
 
 TEST_F(VesselReformationLogicTest, KeepsOneFilterOfEachKindAcrossParameterChanges)
@@ -129,7 +129,7 @@ TEST_F(VesselReformationLogicTest, KeepsOneFilterOfEachKindAcrossParameterChange
     EXPECT_EQ(m_Logic.GetResampleFilter(), resample.GetPointer());
   }
   // Every change reran something, so the same filters did the work.
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().RelaxedSamplings, updates);
+  EXPECT_EQ(m_Logic.GetStageCounts().RelaxedSamplings, updates);
 }
 
 TEST_F(VesselReformationLogicTest, AbortUpdateStopsTheRelaxationAndTheNextUpdateRecovers)
@@ -148,7 +148,7 @@ TEST_F(VesselReformationLogicTest, AbortUpdateStopsTheRelaxationAndTheNextUpdate
     });
   EXPECT_THROW(m_Logic.Update(), vr::Cancelled);
   EXPECT_LT(relaxReports, 10u) << "the relaxation went on after the abort";
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().RelaxedSamplings, 0u);
+  EXPECT_EQ(m_Logic.GetStageCounts().RelaxedSamplings, 0u);
 
   // Without an abort the same logic finishes, and gives what a fresh logic gives.
   m_Logic.SetProgressCallback({});
@@ -183,7 +183,7 @@ TEST_F(VesselReformationLogicTest, NewBackendRerunsRelaxAndResample)
   m_Logic.SetOpenCLDeviceQuery([](const std::string &) { return vr::OpenCLDeviceKind{ "", "0:0 stub", "CPU" }; });
   m_Logic.Update();
   EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendUsed, "cpu");
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
+  ExpectCounts(m_Logic.GetStageCounts(), 1, 1, 1, 1, 1);
 
   std::string whyNot;
   if (vr::TryCreateOpenCLRelaxFilter("", whyNot))
@@ -195,14 +195,14 @@ TEST_F(VesselReformationLogicTest, NewBackendRerunsRelaxAndResample)
     m_Logic.Update();
     EXPECT_EQ(m_Logic.GetOutputs().RelaxBackendUsed, "opencl");
     EXPECT_EQ(m_Logic.GetOutputs().DepthBackendUsed, "opencl");
-    ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 2, 2, 2, 2);
+    ExpectCounts(m_Logic.GetStageCounts(), 2, 2, 2, 2, 2);
 
     // Back to the CPU: its filters are still up to date, nothing reruns, and the outputs are theirs again.
     parameters.Backend = vr::RelaxBackend::CPU;
     m_Logic.SetParameters(parameters);
     m_Logic.Update();
     EXPECT_EQ(m_Logic.GetOutputs().DepthBackendUsed, "cpu");
-    ExpectCounts(m_Logic.GetStageExecutionCounts(), 2, 2, 2, 2, 2);
+    ExpectCounts(m_Logic.GetStageCounts(), 2, 2, 2, 2, 2);
   }
 }
 
@@ -211,12 +211,12 @@ TEST_F(VesselReformationLogicTest, SurfaceIsBuiltOnlyWhenEnabled)
   m_Logic.SetSurfaceEnabled(false);
   const auto & outputs = m_Logic.Update();
   EXPECT_EQ(outputs.Surface, nullptr);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 0u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Surface, 0u);
   m_Logic.SetSurfaceEnabled(true);
   m_Logic.Update();
   ASSERT_NE(m_Logic.GetOutputs().Surface, nullptr);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Surface, 1u);
-  ExpectCounts(m_Logic.GetStageExecutionCounts(), 1, 1, 1, 1, 1);
+  EXPECT_EQ(m_Logic.GetStageCounts().Surface, 1u);
+  ExpectCounts(m_Logic.GetStageCounts(), 1, 1, 1, 1, 1);
 }
 
 TEST_F(VesselReformationLogicTest, CenterlinePixelsShowLumenAndFixedPixelsKeepTheirValue)

@@ -232,7 +232,7 @@ TEST_F(VesselReformationLogicTest, BadParametersAreNamedWithTheirValue)
   m_Logic.SetParameters(parameters);
   ExpectInputError(m_Logic, { "slab thickness", "nan" }, vr::ParameterName::SlabThickness);
 
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Depth, 0u);
 }
 
 TEST_F(VesselReformationLogicTest, ViewThatDoesNotFitInMemoryIsRefusedBeforeAllocating)
@@ -242,7 +242,7 @@ TEST_F(VesselReformationLogicTest, ViewThatDoesNotFitInMemoryIsRefusedBeforeAllo
   parameters.ImageSize[1] = 100000000;
   m_Logic.SetParameters(parameters);
   ExpectInputError(m_Logic, { "view size", "100000000,100000000", "memory" }, vr::ParameterName::ViewSize);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Depth, 0u);
 
   // The logic recovers: a sensible size runs.
   parameters.ImageSize[0] = 64;

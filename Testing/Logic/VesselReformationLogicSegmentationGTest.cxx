@@ -143,7 +143,7 @@ TEST_F(LogicWithSegmentation, ExtractsTheCenterlinesThenReformsAlongThem)
     }
   }
   EXPECT_LT(vr::test::Median(distances), 0.5);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Extraction, 1u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Extraction, 1u);
   EXPECT_GT(outputs.Times.Extraction, 0.0);
   EXPECT_TRUE(m_Warnings.empty()) << m_Warnings.front();
   // The fixed pixels (centerline and lumen) show lumen.
@@ -164,14 +164,14 @@ TEST_F(LogicWithSegmentation, ExtractsTheCenterlinesThenReformsAlongThem)
 TEST_F(LogicWithSegmentation, ExtractsAgainOnlyWhenTheSegmentationOrItsParametersChange)
 {
   m_Logic.Update();
-  auto counts = m_Logic.GetStageExecutionCounts();
+  auto counts = m_Logic.GetStageCounts();
   ASSERT_EQ(counts.Extraction, 1u);
   ASSERT_EQ(counts.Depth, 1u);
   const unsigned conversions = counts.Conversion;
 
   // Nothing changed: nothing runs.
   m_Logic.Update();
-  counts = m_Logic.GetStageExecutionCounts();
+  counts = m_Logic.GetStageCounts();
   EXPECT_EQ(counts.Extraction, 1u);
   EXPECT_EQ(counts.Depth, 1u);
   EXPECT_EQ(counts.Conversion, conversions);
@@ -181,7 +181,7 @@ TEST_F(LogicWithSegmentation, ExtractsAgainOnlyWhenTheSegmentationOrItsParameter
   parameters.AngleInDegrees = 40.0;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  counts = m_Logic.GetStageExecutionCounts();
+  counts = m_Logic.GetStageCounts();
   EXPECT_EQ(counts.Extraction, 1u);
   EXPECT_EQ(counts.Depth, 2u);
 
@@ -191,7 +191,7 @@ TEST_F(LogicWithSegmentation, ExtractsAgainOnlyWhenTheSegmentationOrItsParameter
   extraction.MinimumBranchLength = 2.0;
   m_Logic.SetCenterlineExtractionParameters(extraction);
   m_Logic.Update();
-  counts = m_Logic.GetStageExecutionCounts();
+  counts = m_Logic.GetStageCounts();
   EXPECT_EQ(counts.Extraction, 2u);
   EXPECT_EQ(counts.Depth, 2u);
 
@@ -199,7 +199,7 @@ TEST_F(LogicWithSegmentation, ExtractsAgainOnlyWhenTheSegmentationOrItsParameter
   extraction.RootPointsRAS = { vr::LPSToRAS(P(40.2, 30.1, 53.0)) };
   m_Logic.SetCenterlineExtractionParameters(extraction);
   const itk::CenterlineTree rooted = vr::ConvertCenterlineNodeToTree(m_Logic.Update().ExtractedCenterlines);
-  counts = m_Logic.GetStageExecutionCounts();
+  counts = m_Logic.GetStageCounts();
   EXPECT_EQ(counts.Extraction, 3u);
   EXPECT_EQ(counts.Depth, 3u);
   EXPECT_LT(rooted.GetBranches().front().Points.front().EuclideanDistanceTo(P(40.2, 30.1, 53.0)), 3.0);
@@ -207,7 +207,7 @@ TEST_F(LogicWithSegmentation, ExtractsAgainOnlyWhenTheSegmentationOrItsParameter
   // The segmentation node modified: converted and extracted again.
   m_Segmentation->Modified();
   m_Logic.Update();
-  counts = m_Logic.GetStageExecutionCounts();
+  counts = m_Logic.GetStageCounts();
   EXPECT_EQ(counts.Extraction, 4u);
   EXPECT_EQ(counts.Conversion, conversions + 1);
   EXPECT_EQ(counts.Depth, 3u) << "the same tree again reruns nothing after the extraction";
@@ -216,7 +216,7 @@ TEST_F(LogicWithSegmentation, ExtractsAgainOnlyWhenTheSegmentationOrItsParameter
   parameters.Relaxation = 0.5;
   m_Logic.SetParameters(parameters);
   m_Logic.Update();
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Extraction, 4u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Extraction, 4u);
 }
 
 TEST_F(LogicWithSegmentation, LabelsChooseTheVesselsAndAreAConversionChange)
@@ -226,11 +226,11 @@ TEST_F(LogicWithSegmentation, LabelsChooseTheVesselsAndAreAConversionChange)
   m_Logic.SetCenterlineExtractionParameters(extraction);
   const itk::CenterlineTree trunk = vr::ConvertCenterlineNodeToTree(m_Logic.Update().ExtractedCenterlines);
   EXPECT_EQ(trunk.GetNumberOfBranches(), 1u);
-  const unsigned conversions = m_Logic.GetStageExecutionCounts().Conversion;
+  const unsigned conversions = m_Logic.GetStageCounts().Conversion;
   extraction.Labels = { TrunkLabel, BranchLabel };
   m_Logic.SetCenterlineExtractionParameters(extraction);
   EXPECT_EQ(vr::ConvertCenterlineNodeToTree(m_Logic.Update().ExtractedCenterlines).GetNumberOfBranches(), 3u);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Conversion, conversions + 1);
+  EXPECT_EQ(m_Logic.GetStageCounts().Conversion, conversions + 1);
 
   // Labels that no voxel has: the error names them and the parameter.
   extraction.Labels = { 9 };
@@ -268,7 +268,7 @@ TEST_F(LogicWithSegmentation, TakesOneOfTheTwoCenterlineSourcesAndSwitchesBetwee
   const vr::ReformationOutputs & fromSegmentation = m_Logic.Update();
   ASSERT_NE(fromSegmentation.ExtractedCenterlines, nullptr);
   EXPECT_EQ(m_Logic.GetDepthFilter()->GetCenterlineTree(), extracted);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Extraction, 1u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Extraction, 1u);
   // Neither.
   m_Logic.SetSegmentationNode(nullptr);
   try
@@ -333,7 +333,7 @@ TEST_F(LogicWithSegmentation, AbortDuringTheExtractionCancelsAndTheNextUpdateRec
       }
     });
   EXPECT_THROW(m_Logic.Update(), vr::Cancelled);
-  EXPECT_EQ(m_Logic.GetStageExecutionCounts().Depth, 0u);
+  EXPECT_EQ(m_Logic.GetStageCounts().Depth, 0u);
   m_Logic.SetProgressCallback({});
   const vr::ReformationOutputs & outputs = m_Logic.Update();
   ASSERT_NE(outputs.ExtractedCenterlines, nullptr);

@@ -199,12 +199,12 @@ protected:
 };
 
 inline void
-ExpectCounts(const vr::StageCounts & counts,
-             unsigned                depth,
-             unsigned                relax,
-             unsigned                resample,
-             unsigned                unfiltered,
-             unsigned                relaxed)
+ExpectCounts(const vr::ReformationStageCounts & counts,
+             unsigned                           depth,
+             unsigned                           relax,
+             unsigned                           resample,
+             unsigned                           unfiltered,
+             unsigned                           relaxed)
 {
   EXPECT_EQ(counts.Depth, depth);
   EXPECT_EQ(counts.Relax, relax);

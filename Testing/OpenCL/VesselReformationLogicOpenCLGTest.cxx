@@ -161,7 +161,7 @@ TEST(VesselReformationLogicOpenCL, TurningTheViewUploadsTheVolumeOnce)
   ASSERT_NE(resample, nullptr);
   EXPECT_TRUE(resample->GetDepthWasOnDevice());
   EXPECT_EQ(resample->GetSession()->GetVolumeUploads(), 1u);
-  EXPECT_EQ(logic.GetStageExecutionCounts().Depth, 4u);
+  EXPECT_EQ(logic.GetStageCounts().Depth, 4u);
 }
 
 // Cubic interpolation has no kernel: the depth map and the relaxation stay on the device, the sampling runs on the

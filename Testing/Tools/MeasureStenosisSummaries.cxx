@@ -11,6 +11,7 @@
 #include "vrLumenMeasurement.h"
 #include "vrPathSegments.h"
 #include "vrSegmentationIO.h"
+#include "vrNodeConversion.h"
 #include "vrVesselPathLogic.h"
 #include "vrVolumeIO.h"
 
@@ -36,13 +37,15 @@ Report(const std::string &            data,
   for (const int end : ends)
   {
     vr::VesselPathLogic logic;
-    logic.SetVolume(volume);
-    logic.SetCenterlineTree(tree);
-    logic.SetSegmentationMask(mask, maskName);
+    logic.SetVolumeNode(vr::ConvertItkImageToVolumeNode(volume, "volume"));
+    const auto centerlines = vr::ConvertTreeToCenterlineNode(tree, "centerlines");
+    logic.GetInputCache()->SetCenterlines(centerlines, tree);
+    logic.SetCenterlineNode(centerlines);
+    logic.SetSegmentationNode(mask ? vr::ConvertItkImageToVolumeNode(mask, maskName) : nullptr);
     vr::VesselPathParameters parameters;
     parameters.BranchId = end;
     logic.SetParameters(parameters);
-    const vr::VesselPathResults & results = logic.Update();
+    const vr::VesselPathOutputs & results = logic.Update();
     std::vector<std::string>      names;
     for (const int id : results.Path.GetBranchChain())
     {

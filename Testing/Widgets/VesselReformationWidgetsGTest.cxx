@@ -73,10 +73,10 @@ TEST_F(WidgetsTest, StartsOnThePhantomAndShowsTheLogicsCPR)
 
 TEST_F(WidgetsTest, MovingTheAngleSliderRerunsDepthRelaxAndResampleOnceAndShowsTheLogicsCPRAtThatAngle)
 {
-  const StageCounts before = Controller().GetStageExecutionCounts();
+  const ReformationStageCounts before = Controller().GetStageCounts();
   Window().GetPanel()->GetAngleSlider()->setValue(-450); // tenths of a degree
   ASSERT_TRUE(WaitUntilSettled(Window()));
-  const Runs runs = Difference(Controller().GetStageExecutionCounts(), before);
+  const Runs runs = Difference(Controller().GetStageCounts(), before);
   EXPECT_EQ(runs.Conversion, 0u);
   EXPECT_EQ(runs.Depth, 1u);
   EXPECT_EQ(runs.Relax, 1u);
@@ -120,14 +120,14 @@ TEST_F(WidgetsTest, OnASoftwareRendererTheViewsDrawWithoutMultisampling)
 
 TEST_F(WidgetsTest, ChangingTheWindowRerunsNothingAndRedrawsThroughTheNewWindow)
 {
-  const StageCounts       before = Controller().GetStageExecutionCounts();
-  const RequestStatistics requestsBefore = Controller().GetStatistics();
-  const auto              shownBefore = Window().GetCPRView()->GetResult();
+  const ReformationStageCounts before = Controller().GetStageCounts();
+  const RequestStatistics      requestsBefore = Controller().GetStatistics();
+  const auto                   shownBefore = Window().GetCPRView()->GetResult();
   Window().GetPanel()->GetWindowSpinBox()->setValue(400.0);
   Window().GetPanel()->GetLevelSpinBox()->setValue(40.0);
   QTest::qWait(300);
   ASSERT_TRUE(WaitUntilSettled(Window()));
-  const Runs runs = Difference(Controller().GetStageExecutionCounts(), before);
+  const Runs runs = Difference(Controller().GetStageCounts(), before);
   EXPECT_EQ(runs.Conversion + runs.Depth + runs.Relax + runs.Resample + runs.Surface, 0u);
   EXPECT_EQ(Controller().GetStatistics().Displayed, requestsBefore.Displayed);
   EXPECT_EQ(Window().GetCPRView()->GetResult(), shownBefore);
@@ -146,7 +146,7 @@ TEST_F(WidgetsTest, ChangingTheWindowRerunsNothingAndRedrawsThroughTheNewWindow)
   EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetWindow(), 600.0);
   EXPECT_DOUBLE_EQ(Window().GetCPRView()->GetLevel(), 90.0);
   EXPECT_DOUBLE_EQ(Window().GetPanel()->GetWindowSpinBox()->value(), 600.0);
-  const Runs after = Difference(Controller().GetStageExecutionCounts(), before);
+  const Runs after = Difference(Controller().GetStageCounts(), before);
   EXPECT_EQ(after.Conversion + after.Depth + after.Relax + after.Resample + after.Surface, 0u);
 }
 

@@ -332,15 +332,15 @@ TEST(ReformationControllerSurface, AFinalRequestsCutSurfaceWaitsUntilItsImagesAr
   ASSERT_TRUE(WaitUntil([&] { return !run.Results.empty(); }));
   EXPECT_EQ(run.Results.front()->RequestId, id);
   EXPECT_FALSE(run.Results.front()->HasFullSurface());
-  const unsigned int surfacesBefore = run.Controller.GetStageExecutionCounts().Surface;
+  const unsigned int surfacesBefore = run.Controller.GetStageCounts().Surface;
   // Without ImageShown the surface does not come (the small phantom's takes a few milliseconds once started).
   EXPECT_FALSE(WaitUntil([&] { return run.Results.size() > 1; }, 1.0));
-  EXPECT_EQ(run.Controller.GetStageExecutionCounts().Surface, surfacesBefore);
+  EXPECT_EQ(run.Controller.GetStageCounts().Surface, surfacesBefore);
   run.Controller.ImageShown(id);
   ASSERT_TRUE(WaitUntil([&] { return run.Results.size() > 1; }));
   EXPECT_EQ(run.Results.back()->RequestId, id);
   EXPECT_TRUE(run.Results.back()->HasFullSurface());
-  EXPECT_EQ(run.Controller.GetStageExecutionCounts().Surface, surfacesBefore + 1);
+  EXPECT_EQ(run.Controller.GetStageCounts().Surface, surfacesBefore + 1);
 }
 
 TEST(ReformationControllerSurface, WithoutADisplayTheCutSurfaceComesAfterTheTimeLimit)

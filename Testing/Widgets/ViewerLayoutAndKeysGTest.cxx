@@ -293,7 +293,7 @@ TEST_F(ViewerLayoutTest, EachWindowKeyWorksWithTheFocusInASpinBoxTheTreeViewAndT
 {
   OpenPath();
   VesselPathPanel * panel = Window().GetPathPanel();
-  const int         sections = static_cast<int>(panel->GetLogic().GetResults().Sections.size());
+  const int         sections = static_cast<int>(panel->GetOutputs().Sections.size());
   ASSERT_GT(sections, 30);
   QWidget *    targets[] = { Window().GetPanel()->GetAngleSpinBox(),
                              Window().GetCPRView()->GetRenderWidget(),
@@ -423,7 +423,8 @@ TEST_F(ViewerLayoutTest, TheFoldWarningOffersItsWidthThroughTheWidthSetting)
   VesselPathPanel * panel = Window().GetPathPanel();
   // A width far beyond the path's radius of curvature: it folds.
   panel->SetWidth(200.0);
-  const auto & folded = panel->GetLogic().GetResults();
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const VesselPathOutputs folded = panel->GetOutputs();
   ASSERT_GT(folded.FoldedPixels, 0u);
   const QString                 html = panel->GetReportView()->toHtml();
   const QRegularExpressionMatch link = QRegularExpression(QStringLiteral("href=\"(vr:width=([0-9.]+))\"")).match(html);
@@ -431,14 +432,16 @@ TEST_F(ViewerLayoutTest, TheFoldWarningOffersItsWidthThroughTheWidthSetting)
   const double offered = link.captured(2).toDouble();
   EXPECT_LE(offered, 2.0 * folded.FoldFreeHalfWidth + 1e-9);
   emit panel->GetReportView()->anchorClicked(QUrl(link.captured(1)));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
   EXPECT_DOUBLE_EQ(panel->GetSettings()->GetWidthSpinBox()->value(), offered);
   EXPECT_DOUBLE_EQ(panel->GetParameters().Width, offered);
-  EXPECT_EQ(panel->GetLogic().GetResults().FoldedPixels, 0u);
+  EXPECT_EQ(panel->GetOutputs().FoldedPixels, 0u);
   // The settings reach the logic: a range cuts the path, and a bad one is refused with the path kept.
   panel->GetSettings()->GetRangeCheckBox()->setChecked(true);
   panel->GetSettings()->GetRangeStartSpinBox()->setValue(10.0);
   panel->GetSettings()->GetRangeEndSpinBox()->setValue(60.0);
-  EXPECT_NEAR(panel->GetLogic().GetResults().Path.GetLength(), 50.0, 1e-6);
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  EXPECT_NEAR(panel->GetOutputs().Path.GetLength(), 50.0, 1e-6);
   QLineEdit * points = panel->GetSettings()->GetReferencePointsField();
   points->setText(QStringLiteral("5, x"));
   points->setModified(true);

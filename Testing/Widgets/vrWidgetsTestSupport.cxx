@@ -117,7 +117,7 @@ NodePixels(VolumeNode * node)
 }
 
 Runs
-Difference(const StageCounts & after, const StageCounts & before)
+Difference(const ReformationStageCounts & after, const ReformationStageCounts & before)
 {
   return { after.Conversion - before.Conversion,
            after.Depth - before.Depth,

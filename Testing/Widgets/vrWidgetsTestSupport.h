@@ -59,7 +59,7 @@ struct Runs
   unsigned int Conversion, Depth, Relax, Resample, UnfilteredSamplings, RelaxedSamplings, Surface;
 };
 Runs
-Difference(const StageCounts & after, const StageCounts & before);
+Difference(const ReformationStageCounts & after, const ReformationStageCounts & before);
 
 /** The grey value VTK shows for \a value through window/level, read back from the CPR view's frame. */
 int

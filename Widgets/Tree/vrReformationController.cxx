@@ -17,10 +17,10 @@ namespace vr
 namespace
 {
 /** The logic's stage counts of \a after minus \a before. */
-StageCounts
-Difference(const StageCounts & after, const StageCounts & before)
+ReformationStageCounts
+Difference(const ReformationStageCounts & after, const ReformationStageCounts & before)
 {
-  StageCounts counts;
+  ReformationStageCounts counts;
   counts.Conversion = after.Conversion - before.Conversion;
   counts.Extraction = after.Extraction - before.Extraction;
   counts.Depth = after.Depth - before.Depth;
@@ -51,22 +51,7 @@ ReformationController::ReformationController(QObject * parent)
   : QObject(parent)
 {
   RegisterMetaTypes();
-  m_Logic.SetProgressCallback(
-    [this](double fraction, const std::string & stage)
-    {
-      // Throttled by time: the relaxation reports every few iterations, the status bar needs a few steps per second,
-      // and each repaint of the window costs the processor the logic runs on (its OpenGL views are composed again).
-      const auto now = std::chrono::steady_clock::now();
-      if (fraction < 1.0 && m_ProgressStarted &&
-          std::chrono::duration<double>(now - m_LastProgressTime).count() < ProgressIntervalSeconds)
-      {
-        return;
-      }
-      m_ProgressStarted = true;
-      m_LastProgressTime = now;
-      const QString name = QString::fromStdString(stage);
-      Post([this, fraction, name] { emit progressChanged(fraction, name); });
-    });
+  m_Logic.SetProgressCallback([this](double fraction, const std::string & stage) { PostProgress(fraction, stage); });
   m_Logic.SetWarningCallback(
     [this](const std::string & message, const std::string &)
     {
@@ -86,6 +71,7 @@ ReformationController::~ReformationController()
     m_Quit = true;
     m_PendingJob.reset();
     m_PendingLoad.reset();
+    m_PendingTasks.clear();
     if (m_Running)
     {
       m_Logic.AbortUpdate();
@@ -93,6 +79,66 @@ ReformationController::~ReformationController()
   }
   m_Wake.notify_all();
   m_Worker.join();
+}
+
+void
+ReformationController::PostProgress(double fraction, const std::string & stage)
+{
+  // Throttled by time: the relaxation reports every few iterations, the status bar needs a few steps per second,
+  // and each repaint of the window costs the processor the logic runs on (its OpenGL views are composed again).
+  const auto now = std::chrono::steady_clock::now();
+  if (fraction < 1.0 && m_ProgressStarted &&
+      std::chrono::duration<double>(now - m_LastProgressTime).count() < ProgressIntervalSeconds)
+  {
+    return;
+  }
+  m_ProgressStarted = true;
+  m_LastProgressTime = now;
+  const QString name = QString::fromStdString(stage);
+  Post([this, fraction, name] { emit progressChanged(fraction, name); });
+}
+
+void
+ReformationController::RunTask(const std::string & lane, Task task)
+{
+  {
+    std::lock_guard<std::mutex> lock(m_Mutex);
+    m_PendingTasks[lane] = std::move(task);
+  }
+  SetBusy(true);
+  m_Wake.notify_all();
+}
+
+void
+ReformationController::ReportTaskProgress(double fraction, const std::string & stage)
+{
+  PostProgress(fraction, stage);
+}
+
+void
+ReformationController::RunPendingTasks(std::unique_lock<std::mutex> & lock)
+{
+  while (!m_Quit && !m_PendingTasks.empty())
+  {
+    const auto first = m_PendingTasks.begin();
+    Task       task = std::move(first->second);
+    m_PendingTasks.erase(first);
+    lock.unlock();
+    m_ProgressStarted = false;
+    try
+    {
+      task.Run();
+    }
+    catch (...)
+    {
+      // A task reports its own failures (LogicWorker); nothing may leave the worker thread.
+    }
+    if (task.Done)
+    {
+      Post(std::move(task.Done));
+    }
+    lock.lock();
+  }
 }
 
 void
@@ -215,8 +261,8 @@ ReformationController::IsIdle() const
   return !m_Busy;
 }
 
-StageCounts
-ReformationController::GetStageExecutionCounts() const
+ReformationStageCounts
+ReformationController::GetStageCounts() const
 {
   std::lock_guard<std::mutex> lock(m_Mutex);
   return m_Counts;
@@ -272,9 +318,22 @@ ReformationController::WorkerLoop()
     std::optional<Load> load;
     {
       std::unique_lock<std::mutex> lock(m_Mutex);
-      m_Wake.wait(lock, [this] { return m_Quit || m_PendingLoad || m_PendingJob; });
-      if (!m_Quit && !m_PendingLoad && m_PendingJob->Kind == RequestKind::Interactive && m_SurfaceWaitsForDisplay &&
-          m_ShownId < m_DeliveredId)
+      m_Wake.wait(lock, [this] { return m_Quit || m_PendingLoad || m_PendingJob || !m_PendingTasks.empty(); });
+      // The other features' tasks go before a request: they are short beside a reformation, so none waits behind one.
+      if (!m_Quit && !m_PendingLoad && !m_PendingTasks.empty())
+      {
+        m_Running = true;
+        RunPendingTasks(lock);
+        m_Running = false;
+        if (!m_PendingJob && !m_PendingLoad)
+        {
+          lock.unlock();
+          PostIdle();
+          continue;
+        }
+      }
+      if (!m_Quit && !m_PendingLoad && m_PendingJob && m_PendingJob->Kind == RequestKind::Interactive &&
+          m_SurfaceWaitsForDisplay && m_ShownId < m_DeliveredId)
       {
         // One image of a drag in flight: the next step starts once the view has shown the last one (or a time limit
         // passed), so that the worker's threads leave the processor to the drawing, and the steps that came meanwhile
@@ -284,8 +343,12 @@ ReformationController::WorkerLoop()
                         [this]
                         {
                           return m_Quit || m_PendingLoad || !m_PendingJob || m_PendingJob->Kind == RequestKind::Final ||
-                                 !m_SurfaceWaitsForDisplay || m_ShownId >= m_DeliveredId;
+                                 !m_SurfaceWaitsForDisplay || m_ShownId >= m_DeliveredId || !m_PendingTasks.empty();
                         });
+        if (!m_PendingTasks.empty())
+        {
+          continue; // the tasks first, the step after them
+        }
       }
       if (!m_Quit && !m_PendingLoad && !m_PendingJob)
       {
@@ -322,26 +385,32 @@ ReformationController::WorkerLoop()
     {
       std::lock_guard<std::mutex> lock(m_Mutex);
       m_Running = false;
-      idle = !m_PendingJob && !m_PendingLoad;
+      idle = !m_PendingJob && !m_PendingLoad && m_PendingTasks.empty();
     }
     if (idle)
     {
-      // Posted after the results, so when busyChanged(false) arrives every result has been delivered.
-      Post(
-        [this]
-        {
-          bool idleNow = false;
-          {
-            std::lock_guard<std::mutex> lock(m_Mutex);
-            idleNow = !m_Running && !m_PendingJob && !m_PendingLoad;
-          }
-          if (idleNow)
-          {
-            SetBusy(false);
-          }
-        });
+      PostIdle();
     }
   }
+}
+
+void
+ReformationController::PostIdle()
+{
+  // Posted after the results, so when busyChanged(false) arrives every result has been delivered.
+  Post(
+    [this]
+    {
+      bool idleNow = false;
+      {
+        std::lock_guard<std::mutex> lock(m_Mutex);
+        idleNow = !m_Running && !m_PendingJob && !m_PendingLoad && m_PendingTasks.empty();
+      }
+      if (idleNow)
+      {
+        SetBusy(false);
+      }
+    });
 }
 
 void
@@ -413,7 +482,7 @@ ReformationController::ExtractCenterlines(const ReformationInputs &             
     const ReformationOutputs & outputs = m_Logic.Update();
     {
       std::lock_guard<std::mutex> lock(m_Mutex);
-      m_Counts = m_Logic.GetStageExecutionCounts();
+      m_Counts = m_Logic.GetStageCounts();
     }
     return WithExtractedCenterlines(inputs, outputs.ExtractedCenterlines);
   }
@@ -429,7 +498,7 @@ ReformationController::ExtractCenterlines(const ReformationInputs &             
       m_Logic.SetSegmentationNode(nullptr);
     }
     std::lock_guard<std::mutex> lock(m_Mutex);
-    m_Counts = m_Logic.GetStageExecutionCounts();
+    m_Counts = m_Logic.GetStageCounts();
     throw;
   }
 }
@@ -470,9 +539,15 @@ ReformationController::RunJob(const Job & job)
     const auto                   superseded = [this] { return m_PendingJob || m_PendingLoad || m_Quit; };
     if (m_SurfaceWaitsForDisplay)
     {
-      m_Wake.wait_for(lock,
-                      std::chrono::duration<double>(m_SurfaceWaitSeconds),
-                      [&] { return superseded() || !m_SurfaceWaitsForDisplay || m_ShownId >= job.Id; });
+      // Tasks that come meanwhile run while the surface waits.
+      const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                             std::chrono::duration<double>(m_SurfaceWaitSeconds));
+      const auto shown = [&] { return superseded() || !m_SurfaceWaitsForDisplay || m_ShownId >= job.Id; };
+      while (!shown() && m_Wake.wait_until(lock, deadline, [&] { return shown() || !m_PendingTasks.empty(); }))
+      {
+        RunPendingTasks(lock);
+      }
     }
     if (superseded())
     {
@@ -506,10 +581,10 @@ ReformationController::Update(const Job &                   job,
   // The occlusion strip's profile at the full view's spacing: a preview's would be computed again at its own.
   m_Logic.SetOcclusionProfileEnabled(factor == 1);
   m_ProgressStarted = false;
-  const StageCounts before = m_Logic.GetStageExecutionCounts();
-  const auto        start = Clock::now();
-  std::string       failure;
-  std::string       parameter;
+  const ReformationStageCounts before = m_Logic.GetStageCounts();
+  const auto                   start = Clock::now();
+  std::string                  failure;
+  std::string                  parameter;
   try
   {
     const ReformationOutputs & outputs = m_Logic.Update();
@@ -545,7 +620,7 @@ ReformationController::Update(const Job &                   job,
     result->UpdateSeconds = seconds;
     result->RequestTime = job.Time;
     result->StartTime = start;
-    result->CountsAfter = m_Logic.GetStageExecutionCounts();
+    result->CountsAfter = m_Logic.GetStageCounts();
     result->StagesRun = Difference(result->CountsAfter, before);
     m_Logic.GetDisplayWindowLevel(result->LogicWindow, result->LogicLevel);
     result->Warnings = m_Logic.GetWarnings();
@@ -580,7 +655,7 @@ ReformationController::Update(const Job &                   job,
   catch (const Cancelled &)
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
-    m_Counts = m_Logic.GetStageExecutionCounts();
+    m_Counts = m_Logic.GetStageCounts();
     ++m_Statistics.Aborted;
     return nullptr;
   }
@@ -595,7 +670,7 @@ ReformationController::Update(const Job &                   job,
   }
   {
     std::lock_guard<std::mutex> lock(m_Mutex);
-    m_Counts = m_Logic.GetStageExecutionCounts();
+    m_Counts = m_Logic.GetStageCounts();
     ++m_Statistics.Failed;
   }
   const std::uint64_t id = job.Id;

@@ -2,6 +2,7 @@
 #ifndef vrReformationController_h
 #define vrReformationController_h
 
+#include "vrLogicWorker.h"
 #include "vrPreviewPolicy.h"
 #include "vrProgressiveRefinement.h"
 #include "vrReformationInputs.h"
@@ -18,6 +19,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <map>
 #include <optional>
 #include <string>
 #include <array>
@@ -69,9 +71,9 @@ struct ReformationResult
   vtkSmartPointer<vtkPolyData> PreviewSurface;
   unsigned int                 PreviewStride{ 1 };
   /** How many times each stage ran for this result (the logic's stage counts, after minus before). */
-  StageCounts StagesRun;
+  ReformationStageCounts StagesRun;
   /** The logic's stage counts after this result's update. */
-  StageCounts CountsAfter;
+  ReformationStageCounts CountsAfter;
   /** Wall time of VesselReformationLogic::Update() for this result, in seconds. */
   double UpdateSeconds{ 0.0 };
   /** Wall time of building PreviewSurface on the worker after the update, in seconds (0 when not built). */
@@ -143,10 +145,17 @@ struct RequestStatistics
  * parameters, without the cut surface), and when that fails the logic goes back to the inputs in use and the message
  * comes through inputsFailed() as a file's would; inputsLoaded() carries the extracted centerlines.
  *
- * \sa VesselReformationLogic, CPRView, ThreeDView
+ * It is the viewer's vr::LogicWorker as well: the other features' tasks (the one-vessel reading's,
+ * vr::VesselPathPanel) run on the same worker thread, between the reformation's updates and before waiting requests,
+ * each feature's logic touched by its own tasks only; their progress comes through progressChanged() as the
+ * reformation's does, and IsIdle() waits for them too.
+ *
+ * \sa VesselReformationLogic, CPRView, ThreeDView, LogicWorker
  * \ingroup VesselReformation
  */
-class ReformationController : public QObject
+class ReformationController
+  : public QObject
+  , public LogicWorker
 {
   Q_OBJECT
 
@@ -171,6 +180,11 @@ public:
   std::uint64_t
   Request(const ReformationParameters & parameters, RequestKind kind);
 
+  void
+  RunTask(const std::string & lane, Task task) override;
+  void
+  ReportTaskProgress(double fraction, const std::string & stage) override;
+
   /** \return the inputs the next request runs on (null before the first load). GUI thread. */
   std::shared_ptr<const ReformationInputs>
   GetInputs() const;
@@ -178,8 +192,8 @@ public:
   bool
   IsIdle() const;
   /** \return the logic's stage counts after its latest update (any thread). */
-  StageCounts
-  GetStageExecutionCounts() const;
+  ReformationStageCounts
+  GetStageCounts() const;
   /** \return what happened to requests so far. */
   RequestStatistics
   GetStatistics() const;
@@ -253,6 +267,15 @@ private:
 
   void
   WorkerLoop();
+  /** Runs the waiting tasks, \a lock (on m_Mutex) released while each runs; their Done goes to the GUI thread. */
+  void
+  RunPendingTasks(std::unique_lock<std::mutex> & lock);
+  /** Posts the check that sets busy off once nothing runs or waits. */
+  void
+  PostIdle();
+  /** Posts progress to the GUI thread, at most every ProgressIntervalSeconds (worker thread). */
+  void
+  PostProgress(double fraction, const std::string & stage);
   void
   RunLoad(Load & load);
   void
@@ -290,7 +313,9 @@ private:
   std::condition_variable m_Wake;
   std::optional<Job>      m_PendingJob;
   std::optional<Load>     m_PendingLoad;
-  bool                    m_Running{ false };
+  /** The waiting task of each lane. */
+  std::map<std::string, Task> m_PendingTasks;
+  bool                        m_Running{ false };
   /** The running work is a load: requests do not abort it (a newer load does). */
   bool        m_RunningLoad{ false };
   RequestKind m_RunningKind{ RequestKind::Final };
@@ -311,7 +336,7 @@ private:
   std::optional<DisplayTiming> m_AwaitingDisplay;
   bool                         m_Quit{ false };
   std::uint64_t                m_NextId{ 1 };
-  StageCounts                  m_Counts;
+  ReformationStageCounts       m_Counts;
   RequestStatistics            m_Statistics;
   bool                         m_SurfaceWaitsForDisplay{ false };
   double                       m_SurfaceWaitSeconds{ 1.0 };

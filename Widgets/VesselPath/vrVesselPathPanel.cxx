@@ -3,9 +3,8 @@
 
 #include "vrCrossSectionView.h"
 #include "vrLumenProfilePlot.h"
+#include "vrInputError.h"
 #include "vrLumenMeasurement.h"
-#include "vrNodeConversion.h"
-#include "vrSegmentationIO.h"
 #include "vrStraightenedCPRView.h"
 #include "vrVesselPathReport.h"
 #include "vrVesselPathSettings.h"
@@ -15,6 +14,7 @@
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPointer>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
@@ -48,9 +48,15 @@ WrapDegrees(double degrees)
 }
 } // namespace
 
+/** The logic of one inputs' reading: made with the inputs, then touched by the worker's tasks only. */
+struct VesselPathPanel::Session
+{
+  VesselPathLogic Logic;
+};
+
 VesselPathPanel::VesselPathPanel(QWidget * parent)
   : QWidget(parent)
-  , m_Logic(std::make_unique<VesselPathLogic>())
+  , m_Session(std::make_shared<Session>())
 {
   m_Branches = new QComboBox;
   m_Branches->setToolTip(tr("The path shown: from the tree's root to this branch's far end. Ctrl+click a vessel in the "
@@ -123,7 +129,7 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
           [this]
           {
             m_DragStartRoll = GetRoll();
-            m_Logic->SetCrossSectionsEnabled(false);
+            m_CrossSections = false;
           });
   connect(m_CPR,
           &StraightenedCPRView::rollDragged,
@@ -132,12 +138,12 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
           {
             if (finished)
             {
-              m_Logic->SetCrossSectionsEnabled(true);
+              m_CrossSections = true;
             }
             SetRoll(m_DragStartRoll + degrees);
-            if (finished && m_HasPath && !m_Logic->GetResults().CrossSections)
+            if (finished && HasPath() && !m_RequestedCrossSections)
             {
-              Run();
+              Request(Purpose::Look, m_Parameters);
             }
           });
   connect(m_CPR,
@@ -145,17 +151,17 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
           this,
           [this](double row)
           {
-            if (!m_HasPath)
+            if (!HasPath())
             {
               return;
             }
             // The section whose row lies nearest (rows need not be evenly spaced in arc length: stretched).
-            const auto & sections = m_Logic->GetResults().Sections;
+            const auto & rows = m_Shown->SectionRows;
             int          best = 0;
             double       distance = std::numeric_limits<double>::infinity();
-            for (std::size_t i = 0; i < sections.size(); ++i)
+            for (std::size_t i = 0; i < rows.size(); ++i)
             {
-              const double d = std::abs(m_Logic->RowOfArcLength(sections[i].ArcLength) - row);
+              const double d = std::abs(rows[i] - row);
               if (d < distance)
               {
                 distance = d;
@@ -173,13 +179,26 @@ VesselPathPanel::VesselPathPanel(QWidget * parent)
 VesselPathPanel::~VesselPathPanel() = default;
 
 void
+VesselPathPanel::SetWorker(LogicWorker * worker)
+{
+  m_Worker = worker;
+}
+
+const VesselPathOutputs &
+VesselPathPanel::GetOutputs() const
+{
+  static const VesselPathOutputs none{};
+  return m_Shown ? m_Shown->Outputs : none;
+}
+
+void
 VesselPathPanel::SetInputs(std::shared_ptr<const ReformationInputs> inputs)
 {
   m_Inputs = std::move(inputs);
-  m_Logic = std::make_unique<VesselPathLogic>();
-  m_Volume = StoredVolume();
-  m_LogicReady = false;
-  m_HasPath = false;
+  // A logic of their own for new inputs: a task still running for the old ones keeps the old session and is not shown.
+  m_Session = std::make_shared<Session>();
+  m_Shown = nullptr;
+  m_AnsweredId = m_RequestedId;
   m_Section = 0;
   m_Branches->clear();
   m_CPR->SetImage(nullptr, m_Window, m_Level);
@@ -207,77 +226,190 @@ VesselPathPanel::SetViewParameters(const ReformationParameters & parameters)
   m_View = parameters;
 }
 
-QString
-VesselPathPanel::SetLumenSegmentation(vtkSmartPointer<VolumeNode> segmentation, const QString & name)
+void
+VesselPathPanel::SetLumenSegmentation(vtkSmartPointer<VolumeNode> segmentation)
 {
-  const LabelMapVolumeType::Pointer previousMask = m_Mask;
-  const std::string                 previousName = m_MaskName;
-  try
+  const vtkSmartPointer<VolumeNode> previous = m_Segmentation;
+  m_Segmentation = segmentation;
+  if (HasPath())
   {
-    LabelMapVolumeType::Pointer mask;
-    if (segmentation)
-    {
-      mask = MakeSegmentationMask(ConvertVolumeNodeToItkImage(segmentation).GetPointer(), {}, name.toStdString());
-    }
-    m_Mask = mask;
-    m_MaskName = segmentation ? name.toStdString() : std::string();
+    // The answer brings the previous segmentation back on a refusal.
+    Request(Purpose::Segmentation, m_Parameters, 0.0, previous);
   }
-  catch (const std::exception & error)
-  {
-    m_LastError = QString::fromUtf8(error.what());
-    return m_LastError;
-  }
-  m_LogicReady = false;
-  if (m_HasPath && !Run(false))
-  {
-    // Refused (e.g. no section's centre inside it): the path goes back to what it was measured on.
-    const QString error = m_LastError;
-    m_Mask = previousMask;
-    m_MaskName = previousName;
-    m_LogicReady = false;
-    Run();
-    m_LastError = error;
-    return error;
-  }
-  return QString();
+}
+
+void
+VesselPathPanel::ReportError(const QString & message)
+{
+  m_LastError = message;
+  emit errorOccurred(message);
 }
 
 bool
-VesselPathPanel::PrepareLogic()
+VesselPathPanel::Request(Purpose                      purpose,
+                         const VesselPathParameters & previous,
+                         double                       keepArcLength,
+                         vtkSmartPointer<VolumeNode>  previousSegmentation)
 {
-  if (m_LogicReady)
+  if (!m_Worker)
   {
-    return true;
-  }
-  if (!m_Inputs || !m_Inputs->Volume)
-  {
-    m_LastError = tr("no volume to read a vessel path in");
+    ReportError(tr("no worker to read the vessel path on"));
     return false;
   }
-  if (!m_Volume.Image)
+  if (!m_Inputs || !m_Inputs->Volume || !m_Inputs->Centerlines)
   {
-    // The node's voxels, shared: the panel reads the volume the tree view reads, in its stored type.
-    m_Volume = ConvertVolumeNodeToStoredVolume(m_Inputs->Volume);
+    ReportError(tr("no volume and centerlines to read a vessel path in"));
+    return false;
   }
-  m_Logic->SetVolume(m_Volume.Image, m_Volume.Rescale);
-  m_Logic->SetCenterlineTree(m_Inputs->Tree);
-  LabelMapVolumeType::Pointer mask = m_Mask;
-  std::string                 name = m_MaskName;
-  if (!mask && m_Inputs->Segmentation)
+  const std::uint64_t id = ++m_RequestedId;
+  // What the task hands the logic, copied now: the worker never reads the panel.
+  auto                              session = m_Session;
+  const auto                        inputs = m_Inputs;
+  const vtkSmartPointer<VolumeNode> segmentation = m_Segmentation ? m_Segmentation : m_Inputs->Segmentation;
+  const VesselPathParameters        parameters = m_Parameters;
+  const bool                        crossSections = m_CrossSections;
+  m_RequestedCrossSections = crossSections;
+  LogicWorker * const worker = m_Worker;
+  auto                result = std::make_shared<VesselPathResult>();
+  auto                error = std::make_shared<QString>();
+  LogicWorker::Task   task;
+  task.Run = [session, inputs, segmentation, parameters, crossSections, worker, result, error, id]
   {
-    name = "segmentation " + m_Inputs->Segmentation->GetName();
-    mask = MakeSegmentationMask(ConvertVolumeNodeToItkImage(m_Inputs->Segmentation).GetPointer(), {}, name);
-  }
-  m_Logic->SetSegmentationMask(mask.GetPointer(), name);
-  m_Logic->SetCrossSectionsEnabled(true);
-  m_LogicReady = true;
+    VesselPathLogic & logic = session->Logic;
+    try
+    {
+      logic.SetProgressCallback([worker](double fraction, const std::string & stage)
+                                { worker->ReportTaskProgress(fraction, "vessel path: " + stage); });
+      logic.SetVolumeNode(inputs->Volume);
+      logic.SetCenterlineNode(inputs->Centerlines);
+      logic.SetSegmentationNode(segmentation);
+      logic.SetCrossSectionsEnabled(crossSections);
+      logic.SetParameters(parameters);
+      const VesselPathStageCounts before = logic.GetStageCounts();
+      const auto                  start = std::chrono::steady_clock::now();
+      const VesselPathOutputs &   outputs = logic.Update();
+      result->UpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      result->RequestId = id;
+      result->Parameters = parameters;
+      result->Outputs = outputs;
+      for (const auto & section : outputs.Sections)
+      {
+        result->SectionRows.push_back(logic.RowOfArcLength(section.ArcLength));
+      }
+      const VesselPathStageCounts & after = logic.GetStageCounts();
+      result->StagesRun = { after.Path - before.Path,
+                            after.Frame - before.Frame,
+                            after.Resampling - before.Resampling,
+                            after.Measurement - before.Measurement };
+    }
+    catch (const std::exception & failure)
+    {
+      *error = QString::fromUtf8(failure.what());
+    }
+  };
+  QPointer<VesselPathPanel> panel(this);
+  task.Done = [panel, id, purpose, result, error, previous, keepArcLength, previousSegmentation]
+  {
+    if (panel)
+    {
+      panel->Answer(
+        id, purpose, error->isEmpty() ? result : nullptr, *error, previous, keepArcLength, previousSegmentation);
+    }
+  };
+  m_Worker->RunTask(WorkerLane, std::move(task));
   return true;
+}
+
+void
+VesselPathPanel::Answer(std::uint64_t                           id,
+                        Purpose                                 purpose,
+                        std::shared_ptr<const VesselPathResult> result,
+                        const QString &                         error,
+                        const VesselPathParameters &            previous,
+                        double                                  keepArcLength,
+                        vtkSmartPointer<VolumeNode>             previousSegmentation)
+{
+  if (id <= m_AnsweredId)
+  {
+    return; // for inputs replaced since (SetInputs answers every request made before)
+  }
+  // Tasks run in order: a request answered after this one was superseded while it waited, never ran.
+  const bool latest = id == m_RequestedId;
+  m_AnsweredId = id;
+  if (!result)
+  {
+    if (!latest)
+    {
+      return;
+    }
+    // Refused: what is shown stays, and so do the parameters and the segmentation it was computed with.
+    m_Parameters = m_Shown ? m_Shown->Parameters : previous;
+    if (purpose == Purpose::Segmentation)
+    {
+      m_Segmentation = previousSegmentation;
+    }
+    if (HasPath())
+    {
+      m_Settings->Show(m_Parameters, m_PathLength);
+      const QSignalBlocker blockRoll(m_Roll);
+      m_Roll->setValue(m_Parameters.RollInDegrees);
+      const QSignalBlocker blockStretched(m_Stretched);
+      m_Stretched->setChecked(m_Parameters.Reformation == PathReformation::Stretched);
+    }
+    ReportError(error);
+    return;
+  }
+  m_Shown = std::move(result);
+  m_LastError.clear();
+  ShowResults();
+  m_CPR->repaint();
+  if (!latest)
+  {
+    return; // a step of a drag: shown; what the request was for waits for the latest
+  }
+  const auto & outputs = m_Shown->Outputs;
+  switch (purpose)
+  {
+    case Purpose::Open:
+    {
+      const int            branchId = m_Shown->Parameters.BranchId;
+      const QSignalBlocker block(m_Branches);
+      m_Branches->setCurrentIndex(std::max(0, m_Branches->findData(branchId)));
+      // Open on the headline: the MLD of a graded stenosis, the aorta's maximum diameter; else the path's middle.
+      m_PathLength = outputs.Path.GetLength();
+      m_Settings->Show(m_Parameters, m_PathLength);
+      const auto & stenosis = outputs.Stenosis;
+      if (outputs.HasLumen && !stenosis.Grade.empty() && std::isfinite(stenosis.MinimalLumenDiameterArcLength))
+      {
+        SetArcLength(stenosis.MinimalLumenDiameterArcLength);
+      }
+      else if (outputs.HasLumen && std::isfinite(stenosis.MaximumDiameterArcLength))
+      {
+        SetArcLength(stenosis.MaximumDiameterArcLength);
+      }
+      else
+      {
+        SetSectionIndex(static_cast<int>(outputs.Sections.size() / 2));
+      }
+      emit pathOpened(branchId);
+      break;
+    }
+    case Purpose::Change:
+      m_Settings->Show(m_Parameters, m_PathLength);
+      // The cross-section stays at the same place of the vessel when a range moves the path's start.
+      SetArcLength(keepArcLength - outputs.Path.GetArcLengthOffset());
+      break;
+    case Purpose::Look:
+    case Purpose::Segmentation:
+      break;
+  }
 }
 
 bool
 VesselPathPanel::OpenBranch(int branchId)
 {
-  VesselPathParameters parameters = m_Parameters;
+  const VesselPathParameters previous = m_Parameters;
+  VesselPathParameters       parameters = m_Parameters;
   parameters.BranchId = branchId;
   parameters.HasRange = false;
   parameters.ReferencePoints.clear();
@@ -285,39 +417,12 @@ VesselPathPanel::OpenBranch(int branchId)
   parameters.AutomaticUp = m_View.AutomaticUp;
   parameters.Up = m_View.Up;
   parameters.ViewAngleInDegrees = m_View.AngleInDegrees;
-  const VesselPathParameters previous = m_Parameters;
-  const bool                 hadPath = m_HasPath;
   m_Parameters = parameters;
-  if (!Run())
+  if (!Request(Purpose::Open, previous))
   {
     m_Parameters = previous;
-    m_HasPath = hadPath;
-    if (hadPath)
-    {
-      Run();
-    }
     return false;
   }
-  const QSignalBlocker block(m_Branches);
-  m_Branches->setCurrentIndex(std::max(0, m_Branches->findData(branchId)));
-  // Open on the headline: the MLD of a graded stenosis, the aorta's maximum diameter; else the path's middle.
-  const auto & results = m_Logic->GetResults();
-  m_PathLength = results.Path.GetLength();
-  m_Settings->Show(m_Parameters, m_PathLength);
-  const auto & stenosis = results.Stenosis;
-  if (results.HasLumen && !stenosis.Grade.empty() && std::isfinite(stenosis.MinimalLumenDiameterArcLength))
-  {
-    SetArcLength(stenosis.MinimalLumenDiameterArcLength);
-  }
-  else if (results.HasLumen && std::isfinite(stenosis.MaximumDiameterArcLength))
-  {
-    SetArcLength(stenosis.MaximumDiameterArcLength);
-  }
-  else
-  {
-    SetSectionIndex(static_cast<int>(results.Sections.size() / 2));
-  }
-  emit pathOpened(branchId);
   return true;
 }
 
@@ -325,25 +430,21 @@ bool
 VesselPathPanel::RunWith(const VesselPathParameters & parameters)
 {
   const VesselPathParameters previous = m_Parameters;
-  const double               s = GetArcLength() + m_Logic->GetResults().Path.GetArcLengthOffset();
+  const double               s = GetArcLength() + GetOutputs().Path.GetArcLengthOffset();
   m_Parameters = parameters;
-  if (!Run())
+  if (!Request(Purpose::Change, previous, s))
   {
     m_Parameters = previous;
-    Run(false);
     m_Settings->Show(m_Parameters, m_PathLength);
     return false;
   }
-  m_Settings->Show(m_Parameters, m_PathLength);
-  // The cross-section stays at the same place of the vessel when a range moves the path's start.
-  SetArcLength(s - m_Logic->GetResults().Path.GetArcLengthOffset());
   return true;
 }
 
 bool
 VesselPathPanel::ApplySettings()
 {
-  if (!m_HasPath)
+  if (!HasPath())
   {
     return false;
   }
@@ -351,8 +452,7 @@ VesselPathPanel::ApplySettings()
   const QString        problem = m_Settings->Apply(parameters);
   if (!problem.isEmpty())
   {
-    m_LastError = problem;
-    emit errorOccurred(problem);
+    ReportError(problem);
     m_Settings->Show(m_Parameters, m_PathLength);
     return false;
   }
@@ -364,7 +464,7 @@ VesselPathPanel::SetWidth(double width)
 {
   VesselPathParameters parameters = m_Parameters;
   parameters.Width = width;
-  if (!m_HasPath)
+  if (!HasPath())
   {
     m_Parameters = parameters;
     m_Settings->Show(m_Parameters, m_PathLength);
@@ -392,48 +492,15 @@ VesselPathPanel::FollowReportLink(const QUrl & link)
   }
 }
 
-bool
-VesselPathPanel::Run(bool report)
-{
-  try
-  {
-    if (!PrepareLogic())
-    {
-      if (report)
-      {
-        emit errorOccurred(m_LastError);
-      }
-      return false;
-    }
-    const auto start = std::chrono::steady_clock::now();
-    m_Logic->SetParameters(m_Parameters);
-    m_Logic->Update();
-    m_LastUpdateSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-  catch (const std::exception & error)
-  {
-    m_LastError = QString::fromUtf8(error.what());
-    if (report)
-    {
-      emit errorOccurred(m_LastError);
-    }
-    return false;
-  }
-  m_HasPath = true;
-  m_LastError.clear();
-  ShowResults();
-  return true;
-}
-
 void
 VesselPathPanel::ShowResults()
 {
-  const auto & results = m_Logic->GetResults();
-  const bool   stretched = m_Parameters.Reformation == PathReformation::Stretched;
+  const auto &                 results = GetOutputs();
+  const VesselPathParameters & shown = m_Shown->Parameters;
+  const bool                   stretched = shown.Reformation == PathReformation::Stretched;
   m_CPR->SetImage(results.CPR.GetPointer(), m_Window, m_Level);
-  m_CPR->SetCaption(tr("%1, roll %2°")
-                      .arg(stretched ? tr("stretched") : tr("straightened"))
-                      .arg(m_Parameters.RollInDegrees, 0, 'f', 1));
+  m_CPR->SetCaption(
+    tr("%1, roll %2°").arg(stretched ? tr("stretched") : tr("straightened")).arg(shown.RollInDegrees, 0, 'f', 1));
   if (results.HasLumen)
   {
     m_Plot->SetProfile(results.Lumen, results.Stenosis);
@@ -458,12 +525,13 @@ VesselPathPanel::SetRoll(double degrees)
   {
     return;
   }
+  const VesselPathParameters previous = m_Parameters;
   m_Parameters.RollInDegrees = roll;
-  if (m_HasPath)
+  if (HasPath())
   {
-    Run();
-    // The new picture goes on screen now, not at the next idle paint: what the roll's latency is measured on.
-    m_CPR->repaint();
+    // The new picture goes on screen as soon as it comes (Answer repaints at once: what the roll's latency is
+    // measured on).
+    Request(Purpose::Look, previous);
   }
 }
 
@@ -485,10 +553,11 @@ VesselPathPanel::SetStretched(bool stretched)
   {
     return;
   }
+  const VesselPathParameters previous = m_Parameters;
   m_Parameters.Reformation = reformation;
-  if (m_HasPath)
+  if (HasPath())
   {
-    Run();
+    Request(Purpose::Look, previous);
   }
 }
 
@@ -501,11 +570,11 @@ VesselPathPanel::IsStretched() const
 void
 VesselPathPanel::SetSectionIndex(int index)
 {
-  if (!m_HasPath)
+  if (!HasPath())
   {
     return;
   }
-  const int count = static_cast<int>(m_Logic->GetResults().Sections.size());
+  const int count = static_cast<int>(GetOutputs().Sections.size());
   m_Section = std::clamp(index, 0, std::max(0, count - 1));
   ShowPosition();
 }
@@ -519,11 +588,11 @@ VesselPathPanel::StepSections(int sections)
 void
 VesselPathPanel::SetArcLength(double arcLength)
 {
-  if (!m_HasPath)
+  if (!HasPath())
   {
     return;
   }
-  const auto & sections = m_Logic->GetResults().Sections;
+  const auto & sections = GetOutputs().Sections;
   const auto   nearest = std::min_element(sections.begin(),
                                         sections.end(),
                                         [arcLength](const auto & a, const auto & b) {
@@ -538,20 +607,20 @@ VesselPathPanel::SetArcLength(double arcLength)
 double
 VesselPathPanel::GetArcLength() const
 {
-  const auto & sections = m_Logic->GetResults().Sections;
-  return m_HasPath && !sections.empty() ? sections[static_cast<std::size_t>(m_Section)].ArcLength : 0.0;
+  const auto & sections = GetOutputs().Sections;
+  return HasPath() && !sections.empty() ? sections[static_cast<std::size_t>(m_Section)].ArcLength : 0.0;
 }
 
 void
 VesselPathPanel::ShowPosition()
 {
-  const auto & results = m_Logic->GetResults();
-  if (!m_HasPath || results.Sections.empty())
+  const auto & results = GetOutputs();
+  if (!HasPath() || results.Sections.empty())
   {
     return;
   }
   const double s = GetArcLength();
-  m_CPR->SetPositionRow(m_Logic->RowOfArcLength(s));
+  m_CPR->SetPositionRow(m_Shown->SectionRows[static_cast<std::size_t>(m_Section)]);
   m_Plot->SetPosition(s);
   double diameter = std::numeric_limits<double>::quiet_NaN();
   if (results.HasLumen && static_cast<std::size_t>(m_Section) < results.Lumen.Sections.size())
@@ -566,14 +635,14 @@ VesselPathPanel::ShowPosition()
   m_CrossSection->SetDiameter(diameter);
   m_CrossSection->SetCaption(tr("cross-section at s = %1 mm").arg(s, 0, 'f', 1));
   ShowMeasurements();
-  emit positionChanged(m_Logic->SectionAt(s).Center);
+  emit positionChanged(SectionAt(results, s).Center);
 }
 
 void
 VesselPathPanel::ShowMeasurements()
 {
-  const auto &  results = m_Logic->GetResults();
-  const QString html = VesselPathReportHTML(results, static_cast<std::size_t>(m_Section), m_Parameters.Width);
+  const auto &  results = GetOutputs();
+  const QString html = VesselPathReportHTML(results, static_cast<std::size_t>(m_Section), m_Shown->Parameters.Width);
   // Laid out again only when it changed (a roll changes nothing in it), and where it was scrolled to.
   if (html != m_ReportHTML)
   {
@@ -608,13 +677,13 @@ VesselPathPanel::SetWindowLevel(double window, double level)
 QString
 VesselPathPanel::WriteLumenTable(const QString & path) const
 {
-  if (!m_HasPath || !m_Logic->GetResults().HasLumen)
+  if (!HasPath() || !GetOutputs().HasLumen)
   {
     return tr("no lumen measured: open a vessel path first");
   }
   try
   {
-    const auto & results = m_Logic->GetResults();
+    const auto & results = GetOutputs();
     vr::WriteLumenTable(
       results.Lumen, path.toStdString(), LumenTableNotesOf({ results.Lumen, results.Stenosis }, DescribePath(results)));
   }

@@ -2,16 +2,18 @@
 #ifndef vrVesselPathPanel_h
 #define vrVesselPathPanel_h
 
+#include "vrLogicWorker.h"
 #include "vrReformationInputs.h"
 #include "vrReformationParameters.h"
-#include "vrStoredVolume.h"
 #include "vrVesselPathLogic.h"
 
 #include <QString>
 #include <QUrl>
 #include <QWidget>
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -25,6 +27,22 @@ class CrossSectionView;
 class LumenProfilePlot;
 class StraightenedCPRView;
 class VesselPathSettings;
+
+/** What the panel shows of one request: the logic's outputs (images the logic no longer writes to), the rows of the
+ * sections in the CPR, and the parameters they were computed with. Made on the worker, read on the GUI thread.
+ * \ingroup VesselReformation
+ */
+struct VesselPathResult
+{
+  std::uint64_t        RequestId{ 0 };
+  VesselPathParameters Parameters;
+  VesselPathOutputs    Outputs;
+  /** The continuous CPR row of each of Outputs.Sections (VesselPathLogic::RowOfArcLength). */
+  std::vector<double>   SectionRows;
+  VesselPathStageCounts StagesRun;
+  /** Wall time of VesselPathLogic::Update(), seconds. */
+  double UpdateSeconds{ 0.0 };
+};
 
 /** \class VesselPathPanel
  * \brief The single-vessel reading in the viewer (docs/viewer.md): one path of the centerline tree as a
@@ -49,27 +67,37 @@ public:
   explicit VesselPathPanel(QWidget * parent = nullptr);
   ~VesselPathPanel() override;
 
-  /** New data: lists its branches, closes the path shown. The volume and the tree are handed to the logic when a
-   * path is first opened. */
+  /** The worker the logic runs on (not owned; it must outlive the panel's use of it, or be set to null first). Without
+   * one, nothing is computed and opening a path says so. */
+  void
+  SetWorker(LogicWorker * worker);
+  /** New data: lists its branches, closes the path shown. The nodes are handed to the logic with the next request. */
   void
   SetInputs(std::shared_ptr<const ReformationInputs> inputs);
   /** The tree view whose look the path's frame takes at roll 0 (its up axis and angle), used at the next open. */
   void
   SetViewParameters(const ReformationParameters & parameters);
   /** A segmentation to measure the lumen on (a label map, mask, level set or probability map node; null: the
-   * inputs' own segmentation, else the centerline radii), named \a name in messages. \return an error message, or
-   * empty. Remeasures an open path. */
-  QString
-  SetLumenSegmentation(vtkSmartPointer<VolumeNode> segmentation, const QString & name);
+   * inputs' own segmentation, else the centerline radii), named in messages by its node's name. Remeasures an open
+   * path; when the logic refuses it, the segmentation measured before comes back and errorOccurred() says why. */
+  void
+  SetLumenSegmentation(vtkSmartPointer<VolumeNode> segmentation);
 
-  /** Opens the path from the tree's root to branch \a branchId's far end (0: the longest path). \return false, with
-   * GetLastError() and errorOccurred(), when the logic refuses it; the path shown stays. */
+  /** Asks for the path from the tree's root to branch \a branchId's far end (0: the longest path); pathOpened() when
+   * it is shown. \return false, with GetLastError() and errorOccurred(), when it cannot even be asked (no inputs, no
+   * worker); a refusal of the logic comes later through errorOccurred(), and the path shown stays. */
   bool
   OpenBranch(int branchId);
   bool
   HasPath() const
   {
-    return m_HasPath;
+    return m_Shown != nullptr;
+  }
+  /** \return true while a request is still to be answered. */
+  bool
+  IsUpdating() const
+  {
+    return m_RequestedId > m_AnsweredId;
   }
   QString
   GetLastError() const
@@ -118,11 +146,16 @@ public:
   QString
   WriteLumenTable(const QString & path) const;
 
-  const VesselPathLogic &
-  GetLogic() const
+  /** \return the result shown (null before a path is open). */
+  std::shared_ptr<const VesselPathResult>
+  GetResult() const
   {
-    return *m_Logic;
+    return m_Shown;
   }
+  /** \return the outputs shown (empty before a path is open). */
+  const VesselPathOutputs &
+  GetOutputs() const;
+  /** \return the parameters asked for (the result shown was computed with GetResult()->Parameters). */
   const VesselPathParameters &
   GetParameters() const
   {
@@ -168,12 +201,14 @@ public:
   {
     return m_Tabs;
   }
-  /** \return seconds the latest logic update took. */
+  /** \return seconds the logic's update of the result shown took. */
   double
   GetLastUpdateSeconds() const
   {
-    return m_LastUpdateSeconds;
+    return m_Shown ? m_Shown->UpdateSeconds : 0.0;
   }
+  /** The worker's lane of the panel's tasks. */
+  static constexpr const char * WorkerLane = "vessel path";
 
 signals:
   /** A path was opened: \a branchId as asked (0: the longest). */
@@ -186,37 +221,68 @@ signals:
   errorOccurred(const QString & message);
 
 private:
-  /** Updates the logic and shows its results. \return false on an error (m_LastError), which \a report also emits. */
+  /** What a request does once answered, beyond showing its result. */
+  enum class Purpose
+  {
+    /** Opening a path: the branch list, the settings, the cross-section at the headline. */
+    Open,
+    /** A change of the settings: the cross-section kept at the same place of the vessel. */
+    Change,
+    /** A roll or the stretched mode: the same section. */
+    Look,
+    /** Another segmentation: on a refusal, the previous one comes back. */
+    Segmentation
+  };
+  struct Session;
+  /** Sends the parameters asked for to the worker. \return false (with m_LastError) when there is no worker or no
+   * volume. */
   bool
-  Run(bool report = true);
+  Request(Purpose                      purpose,
+          const VesselPathParameters & previous,
+          double                       keepArcLength = 0.0,
+          vtkSmartPointer<VolumeNode>  previousSegmentation = nullptr);
+  /** The answer to a request, on the GUI thread. */
+  void
+  Answer(std::uint64_t                           id,
+         Purpose                                 purpose,
+         std::shared_ptr<const VesselPathResult> result,
+         const QString &                         error,
+         const VesselPathParameters &            previous,
+         double                                  keepArcLength,
+         vtkSmartPointer<VolumeNode>             previousSegmentation);
+  void
+  ReportError(const QString & message);
   void
   ShowResults();
   void
   ShowPosition();
   void
   ShowMeasurements();
-  bool
-  PrepareLogic();
-  /** Runs the logic with \a parameters; on a refusal puts the previous parameters back (and their results). */
+  /** Changes the parameters (a settings edit or a width): the request, with the cross-section kept. */
   bool
   RunWith(const VesselPathParameters & parameters);
   void
   FollowReportLink(const QUrl & link);
 
-  std::unique_ptr<VesselPathLogic>         m_Logic;
+  LogicWorker * m_Worker{ nullptr };
+  /** The logic and what it was last given, touched by the worker's tasks only (shared with them). */
+  std::shared_ptr<Session>                 m_Session;
   std::shared_ptr<const ReformationInputs> m_Inputs;
-  StoredVolume                             m_Volume;
-  LabelMapVolumeType::Pointer              m_Mask;
-  std::string                              m_MaskName;
-  bool                                     m_LogicReady{ false };
-  VesselPathParameters                     m_Parameters;
-  ReformationParameters                    m_View;
-  bool                                     m_HasPath{ false };
-  int                                      m_Section{ 0 };
-  double                                   m_DragStartRoll{ 0.0 };
-  double                                   m_Window{ 400.0 };
-  double                                   m_Level{ 200.0 };
-  double                                   m_LastUpdateSeconds{ 0.0 };
+  /** The segmentation chosen for the lumen (null: the inputs' own, if any). */
+  vtkSmartPointer<VolumeNode>             m_Segmentation;
+  std::shared_ptr<const VesselPathResult> m_Shown;
+  std::uint64_t                           m_RequestedId{ 0 };
+  std::uint64_t                           m_AnsweredId{ 0 };
+  /** Whether requests compute the cross-section stack (off while a drag rolls the image). */
+  bool m_CrossSections{ true };
+  /** Whether the latest request computes them. */
+  bool                  m_RequestedCrossSections{ true };
+  VesselPathParameters  m_Parameters;
+  ReformationParameters m_View;
+  int                   m_Section{ 0 };
+  double                m_DragStartRoll{ 0.0 };
+  double                m_Window{ 400.0 };
+  double                m_Level{ 200.0 };
   /** The whole path's length (without a range), the range's limit. */
   double  m_PathLength{ 0.0 };
   QString m_LastError;

@@ -78,7 +78,7 @@ SegmentLine(const SegmentGrading & grading, std::size_t index)
 
 /** The widest lumen along the path (mm): what a fold-free width is compared with. */
 double
-VesselDiameter(const VesselPathResults & results)
+VesselDiameter(const VesselPathOutputs & results)
 {
   double widest = std::numeric_limits<double>::quiet_NaN();
   for (const auto & section : results.Lumen.Sections)
@@ -93,7 +93,7 @@ VesselDiameter(const VesselPathResults & results)
 } // namespace
 
 QString
-VesselPathReportHTML(const VesselPathResults & results, std::size_t section, double width)
+VesselPathReportHTML(const VesselPathOutputs & results, std::size_t section, double width)
 {
   const auto & stenosis = results.Stenosis;
   QString      text = Tr("<b>Path</b> %1 mm: %2").arg(Number(results.Path.GetLength(), 1), Escaped(results.PathName));

@@ -24,7 +24,7 @@ constexpr const char * Stretched = "vr:stretched";
  * the warning with links to a width that does not fold (ReportLink::Width) and to the stretched CPR
  * (ReportLink::Stretched) when that width is narrower than the vessel. Every value is the logic's. */
 QString
-VesselPathReportHTML(const VesselPathResults & results, std::size_t section, double width);
+VesselPathReportHTML(const VesselPathOutputs & results, std::size_t section, double width);
 } // namespace vr
 
 #endif
