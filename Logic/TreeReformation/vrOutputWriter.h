@@ -53,7 +53,7 @@ struct OutputSelection
 /** \class OutputWriter
  * \brief The one writer of a reformation's outputs (the command-line module, the viewer and the demo use it), all or
  * nothing on the shape every output writer shares (vr::StagedOutputWriter: reserve before the work, write into
- * staging, publish together; docs/design.md section 5).
+ * staging, publish together; docs/design.md "Bad input").
  *
  * What is its own: the outputs (vr::ReformationOutput), what each needs when it is reserved (the cut surface, the
  * hidden labels and lengths of Visibility mode, the occlusion profile), and how each is written. The cut surface is

@@ -30,7 +30,7 @@ PAPER = {
     "total GPU": {(256, 768): 74, (512, 1024): 189},
 }
 
-# docs/design.md section 4 and issue 5, at 512 x 1024 on the 2-core machine.
+# docs/design.md "Numbers", at 512 x 1024 on the 2-core machine.
 TARGETS = [
     ("CPU relax, 500 iterations", "Relax_CPU", 150.0),
     ("depth + resample for a new angle", "DepthResample", 30.0),

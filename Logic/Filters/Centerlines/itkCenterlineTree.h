@@ -52,7 +52,7 @@ struct CenterlineBranch
 };
 
 /** \class CenterlineTree
- * \brief The centerlines of a vessel tree (docs/design.md section 3.3): branches in LPS millimetres.
+ * \brief The centerlines of a vessel tree (docs/design.md "Centerline tree"): branches in LPS millimetres.
  *
  * A small value type that the reformation filters take as a parameter. It converts to and from the
  * ITK-native representation, itk::TubeSpatialObject branches under an itk::GroupSpatialObject, which is what

@@ -13,7 +13,7 @@ namespace itk
 {
 
 /** \class CPRViewSpecification
- * \brief What a user asks of a view (docs/design.md section 3.2); unset parts take defaults from the centerline tree
+ * \brief What a user asks of a view (docs/design.md "View"); unset parts take defaults from the centerline tree
  * and the volume when CPRViewGeometry::Resolve() completes it.
  * \ingroup VesselReformation
  */
@@ -59,7 +59,7 @@ struct CPRViewSpecification
 };
 
 /** \class CPRViewGeometry
- * \brief A complete, resolved view of a multipath CPR (docs/design.md section 3.2).
+ * \brief A complete, resolved view of a multipath CPR (docs/design.md "View").
  *
  * Screen-right u, view direction v and the rotation axis up form a right-handed frame with u = v x up. At
  * theta = 0 and up = superior the view looks from anterior to posterior: v = LPS (0, 1, 0), u = LPS (1, 0, 0).

@@ -11,7 +11,7 @@ namespace vr
 /** \class AtomicOutput
  * \brief One output file written into a staging folder beside its final path and published on Commit(), so an
  * existing result is never half-overwritten and a killed run leaves nothing the next one does not clean up
- * (docs/design.md section 5). A vr::StagedOutputs of one file; see there for the staging and its recovery.
+ * (docs/design.md "Bad input"). A vr::StagedOutputs of one file; see there for the staging and its recovery.
  *
  * The staged file keeps the final name (so ITK and VTK writers still pick the format from its extension). Without
  * Commit() the destructor removes it. A URI name (vr::IsURIName) is written directly.

@@ -9,7 +9,7 @@
 namespace vr
 {
 /** \class StagedOutputs
- * \brief All-or-nothing output files of a run, published together and recoverably (docs/design.md section 5).
+ * \brief All-or-nothing output files of a run, published together and recoverably (docs/design.md "Bad input").
  *
  * Each output is reserved before any work (its folder is checked then, so a bad path fails in a second, not after
  * the computation) and written into a staging folder, ".vr-staging-<pid>-XXXXXX", created beside the outputs in their
