@@ -241,11 +241,11 @@ ReadWithITK(itk::ImageIOBase * io, const std::string & path, const std::string &
   return volume;
 }
 
-/** A NIfTI volume whose voxels our own reader puts straight into the image's buffer (vrNiftiVoxels.h); the grid is
- * the one ITK's reader gives the file. */
+/** An image of TPixel on the grid ITK's reader gives the file (from its header alone), allocated but not zeroed: the
+ * caller reads every voxel into its buffer itself. */
 template<typename TPixel>
 typename itk::Image<TPixel, 3>::Pointer
-ReadNifti(itk::ImageIOBase * io, const std::string & path, const std::string & where)
+AllocateOnTheHeadersGrid(itk::ImageIOBase * io, const std::string & path, const std::string & where)
 {
   using ImageType = itk::Image<TPixel, 3>;
   auto reader = itk::ImageFileReader<ImageType>::New();
@@ -267,38 +267,27 @@ ReadNifti(itk::ImageIOBase * io, const std::string & path, const std::string & w
   volume->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
   volume->SetMetaDataDictionary(io->GetMetaDataDictionary());
   volume->Allocate();
+  return volume;
+}
+
+/** A NIfTI volume whose voxels our own reader puts straight into the image's buffer (vrNiftiVoxels.h). */
+template<typename TPixel>
+typename itk::Image<TPixel, 3>::Pointer
+ReadNifti(itk::ImageIOBase * io, const std::string & path, const std::string & where)
+{
+  auto                               volume = AllocateOnTheHeadersGrid<TPixel>(io, path, where);
   const detail::ScopedConsoleCapture console;
   detail::ReadNiftiVoxels(
     path, volume->GetBufferPointer(), volume->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(TPixel), where);
   return volume;
 }
 
-/** A raw NRRD whose voxels are read straight into the image's buffer (vrNrrdRawVoxels.h), at \a offset; the grid is
- * the one ITK's reader gives the file. */
+/** A raw NRRD whose voxels are read straight into the image's buffer (vrNrrdRawVoxels.h), at \a offset. */
 template<typename TPixel>
 typename itk::Image<TPixel, 3>::Pointer
 ReadRawNrrd(itk::ImageIOBase * io, const std::string & path, std::uint64_t offset, const std::string & where)
 {
-  using ImageType = itk::Image<TPixel, 3>;
-  auto reader = itk::ImageFileReader<ImageType>::New();
-  reader->SetImageIO(io);
-  reader->SetFileName(path);
-  {
-    const detail::ScopedConsoleCapture console;
-    try
-    {
-      reader->UpdateOutputInformation();
-    }
-    catch (const itk::ExceptionObject & exception)
-    {
-      throw InputError(where + ": the header cannot be read: " + detail::CondenseITKMessage(exception));
-    }
-  }
-  auto volume = ImageType::New();
-  volume->CopyInformation(reader->GetOutput());
-  volume->SetRegions(reader->GetOutput()->GetLargestPossibleRegion());
-  volume->SetMetaDataDictionary(io->GetMetaDataDictionary());
-  volume->Allocate(); // not zeroed: every byte is read over
+  auto volume = AllocateOnTheHeadersGrid<TPixel>(io, path, where);
   detail::ReadRawVoxels(path,
                         offset,
                         volume->GetBufferPointer(),
