@@ -417,3 +417,126 @@ TEST(VolumeStoredType, RawNrrdIsReadStraightIntoTheBufferAndEveryOtherThroughITK
   EXPECT_MESSAGE_HAS(message, cut);
   EXPECT_MESSAGE_HAS(message, "voxel data");
 }
+
+namespace
+{
+/** \a bytes deflated as a zlib stream (what MetaIO writes), or a gzip one. */
+std::string
+Deflated(const std::string & bytes, bool gzip)
+{
+  z_stream stream{};
+  EXPECT_EQ(deflateInit2(&stream, 6, Z_DEFLATED, gzip ? 15 + 16 : 15, 8, Z_DEFAULT_STRATEGY), Z_OK);
+  std::string out(deflateBound(&stream, bytes.size()) + 32, '\0');
+  stream.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(bytes.data()));
+  stream.avail_in = static_cast<uInt>(bytes.size());
+  stream.next_out = reinterpret_cast<Bytef *>(out.data());
+  stream.avail_out = static_cast<uInt>(out.size());
+  EXPECT_EQ(deflate(&stream, Z_FINISH), Z_STREAM_END);
+  out.resize(stream.total_out);
+  deflateEnd(&stream);
+  return out;
+}
+} // namespace
+
+// A compressed MetaImage is inflated straight into the volume's buffer (vrMetaImageVoxels.h), in pieces, in either
+// byte order, LOCAL or detached, zlib or gzip; a stream cut short, damaged or longer than the header says is refused.
+// The expected voxels are the ones written, byte for byte.
+TEST(VolumeStoredType, CompressedMetaImageIsInflatedStraightIntoTheBuffer)
+{
+  const vr::test::ScopedTemporaryFolder folder;
+  const std::vector<short>              voxels = RandomShorts(9 * 7 * 5, 23);
+  auto                                  bytesOf = [&](bool bigEndian)
+  {
+    std::string bytes;
+    for (const short voxel : voxels)
+    {
+      char raw[2];
+      std::memcpy(raw, &voxel, 2);
+      if (bigEndian)
+      {
+        std::swap(raw[0], raw[1]);
+      }
+      bytes.append(raw, 2);
+    }
+    return bytes;
+  };
+  const auto header = [](bool bigEndian, const std::string & dataFile)
+  {
+    return "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = " +
+           std::string(bigEndian ? "True" : "False") +
+           "\nCompressedData = True\nTransformMatrix = 1 0 0 0 1 0 0 0 1\nOffset = 1 2 3\n"
+           "ElementSpacing = 0.5 0.75 1.25\nDimSize = 9 7 5\nElementType = MET_SHORT\nElementDataFile = " +
+           dataFile + "\n";
+  };
+  struct Case
+  {
+    std::string Name;
+    std::string Header;
+    std::string DataFile; // empty: LOCAL
+    std::string Stream;
+  };
+  const std::vector<Case> cases{
+    { "local", header(false, "LOCAL"), "", Deflated(bytesOf(false), false) },
+    { "big-endian", header(true, "LOCAL"), "", Deflated(bytesOf(true), false) },
+    { "gzip", header(false, "LOCAL"), "", Deflated(bytesOf(false), true) },
+    { "detached", header(false, "detached.zraw"), "detached.zraw", Deflated(bytesOf(false), false) },
+  };
+  for (const Case & c : cases)
+  {
+    SCOPED_TRACE(c.Name);
+    const std::string path = folder.File(c.Name + (c.DataFile.empty() ? ".mha" : ".mhd"));
+    if (c.DataFile.empty())
+    {
+      std::ofstream(path, std::ios::binary) << c.Header << c.Stream;
+    }
+    else
+    {
+      std::ofstream(path, std::ios::binary) << c.Header;
+      std::ofstream(folder.File(c.DataFile), std::ios::binary) << c.Stream;
+    }
+    const vr::StoredVolume stored = vr::ReadStoredVolume(path);
+    ASSERT_EQ(stored.GetPixelType(), itk::IOComponentEnum::SHORT);
+    const auto * image = dynamic_cast<const Volume<short> *>(stored.Image.GetPointer());
+    ASSERT_NE(image, nullptr);
+    EXPECT_EQ(std::vector<short>(image->GetBufferPointer(), image->GetBufferPointer() + voxels.size()), voxels);
+    EXPECT_EQ(image->GetLargestPossibleRegion().GetSize(), (itk::Size<3>{ { 9, 7, 5 } }));
+    EXPECT_DOUBLE_EQ(image->GetSpacing()[1], 0.75);
+    EXPECT_DOUBLE_EQ(image->GetOrigin()[2], 3.0);
+  }
+
+  const std::string stream = Deflated(bytesOf(false), false);
+  const auto        refusal = [&](const std::string & name, const std::string & text)
+  {
+    const std::string path = folder.File(name + ".mha");
+    std::ofstream(path, std::ios::binary) << text;
+    const std::string message = InputErrorOf([&] { vr::ReadStoredVolume(path); });
+    EXPECT_MESSAGE_HAS(message, path);
+    EXPECT_MESSAGE_HAS(message, "voxel data");
+    return message;
+  };
+  {
+    SCOPED_TRACE("cut short");
+    const std::string message = refusal("cut", header(false, "LOCAL") + stream.substr(0, stream.size() / 2));
+    EXPECT_MESSAGE_HAS(message, "truncated");
+  }
+  {
+    SCOPED_TRACE("damaged");
+    std::string damaged = stream;
+    for (std::size_t k = 2; k < damaged.size() - 4; k += 7)
+    {
+      damaged[k] = static_cast<char>(damaged[k] ^ 0x5A);
+    }
+    refusal("damaged", header(false, "LOCAL") + damaged);
+  }
+  {
+    SCOPED_TRACE("longer than the header says");
+    const std::string message =
+      refusal("longer", header(false, "LOCAL") + Deflated(bytesOf(false) + std::string("\x01\x02", 2), false));
+    EXPECT_MESSAGE_HAS(message, "holds more than the header's 630 voxel bytes");
+  }
+  {
+    SCOPED_TRACE("not compressed at all");
+    const std::string message = refusal("plain", header(false, "LOCAL") + bytesOf(false));
+    EXPECT_MESSAGE_HAS(message, "damaged");
+  }
+}

@@ -13,6 +13,7 @@
 #include "vrText.h"
 
 #include "itkImageFileWriter.h"
+#include "itkImageIOFactory.h"
 
 #include <chrono>
 #include <iostream>
@@ -39,15 +40,27 @@ Write(itk::CTAPhantomKind kind, const itk::Size<3> & size, double intercept, con
 int
 main(int argc, char ** argv)
 {
-  if (argc < 2)
+  const char * const usage = "usage: WriteClinicalVolume <output> [--phantom runoff|thorax] [--size X,Y,Z] "
+                             "[--type int16|uint16|float32|float64] [--centerlines <file>] [--compress]\n";
+  if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
   {
-    std::cerr << "usage: WriteClinicalVolume <output> [--phantom runoff|thorax] [--size X,Y,Z] "
-                 "[--type int16|uint16|float32|float64] [--centerlines <file>] [--compress]\n";
+    std::cout << usage;
+    return 0;
+  }
+  if (argc < 2 || argv[1][0] == '-')
+  {
+    std::cerr << usage;
     return 2;
   }
   try
   {
-    const std::string   output = argv[1];
+    const std::string output = argv[1];
+    // Before minutes of drawing: a name no ITK writer takes is refused now.
+    if (itk::ImageIOFactory::CreateImageIO(output.c_str(), itk::ImageIOFactory::FileModeEnum::WriteMode).IsNull())
+    {
+      throw std::invalid_argument(output + ": no ITK writer takes this extension (.nrrd, .nhdr, .nii, .nii.gz, "
+                                           ".mha or .mhd)");
+    }
     itk::CTAPhantomKind kind = itk::CTAPhantomKind::Runoff;
     itk::Size<3>        size = { { 512, 512, 1200 } };
     std::string         type = "int16";

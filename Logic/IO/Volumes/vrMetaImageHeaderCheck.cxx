@@ -147,7 +147,7 @@ IsMetaIOElementType(const std::string & type)
 }
 } // namespace
 
-void
+std::size_t
 CheckMetaImageHeaderBytes(const char * bytes, std::size_t count, const std::string & where)
 {
   std::size_t           at = 0;
@@ -230,7 +230,7 @@ CheckMetaImageHeaderBytes(const char * bytes, std::size_t count, const std::stri
           fail("= " + value.substr(0, 40) + ": a file list or pattern must be words separated by single spaces, " +
                "each of at most " + std::to_string(MaximumMetaIOWordLength) + " characters");
         }
-        return; // MetaIO's header ends here; the voxels (or a file list) follow.
+        return at; // MetaIO's header ends here; the voxels (or a file list) follow.
       }
       continue;
     }
@@ -311,7 +311,7 @@ CheckMetaImageHeaderBytes(const char * bytes, std::size_t count, const std::stri
   fail("ends without ElementDataFile; not a whole MetaImage header");
 }
 
-void
+std::size_t
 CheckMetaImageHeader(const std::string & path, const std::string & where)
 {
   std::ifstream input(path, std::ios::binary);
@@ -321,6 +321,6 @@ CheckMetaImageHeader(const std::string & path, const std::string & where)
   }
   std::vector<char> bytes(MaximumHeaderBytes + MaximumLineLength + 2);
   input.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  CheckMetaImageHeaderBytes(bytes.data(), static_cast<std::size_t>(input.gcount()), where);
+  return CheckMetaImageHeaderBytes(bytes.data(), static_cast<std::size_t>(input.gcount()), where);
 }
 } // namespace vr::detail

@@ -21,12 +21,15 @@ namespace vr::detail
  * decimal numbers as MetaIO reads (NDims for DimSize, ElementSpacing, Offset and the like, NDims x NDims for
  * TransformMatrix, 4 for Color), all finite, whole and in range where MetaIO stores an integer (DimSize >= 1,
  * HeaderSize >= -1); ElementType one of MetaIO's type names; the header ending at ElementDataFile within 64 KiB. Fields
- * MetaIO does not know are kept as text by MetaIO and are accepted here when well formed. */
-void
+ * MetaIO does not know are kept as text by MetaIO and are accepted here when well formed.
+ *
+ * Returns the header's length in bytes: where MetaIO's stream stands after the ElementDataFile line, the first byte of
+ * the voxels when they follow the header (LOCAL). */
+std::size_t
 CheckMetaImageHeader(const std::string & path, const std::string & where);
 
 /** CheckMetaImageHeader() on \a count bytes of a file already read. */
-void
+std::size_t
 CheckMetaImageHeaderBytes(const char * bytes, std::size_t count, const std::string & where);
 } // namespace vr::detail
 

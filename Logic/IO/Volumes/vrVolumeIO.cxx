@@ -8,6 +8,7 @@
 #include "vrInputError.h"
 #include "vrImageIOChoice.h"
 #include "vrInputFileChecks.h"
+#include "vrMetaImageVoxels.h"
 #include "vrNiftiVoxels.h"
 #include "vrNrrdRawVoxels.h"
 #include "vrURINames.h"
@@ -296,6 +297,23 @@ ReadRawNrrd(itk::ImageIOBase * io, const std::string & path, std::uint64_t offse
   return volume;
 }
 
+/** A compressed MetaImage whose voxels are inflated straight into the image's buffer (vrMetaImageVoxels.h). */
+template<typename TPixel>
+typename itk::Image<TPixel, 3>::Pointer
+ReadCompressedMetaImage(itk::ImageIOBase *                        io,
+                        const std::string &                       path,
+                        const detail::CompressedMetaImageVoxels & compressed,
+                        const std::string &                       where)
+{
+  auto volume = AllocateOnTheHeadersGrid<TPixel>(io, path, where);
+  detail::InflateMetaImageVoxels(compressed,
+                                 volume->GetBufferPointer(),
+                                 volume->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(TPixel),
+                                 sizeof(TPixel),
+                                 where);
+  return volume;
+}
+
 /** Reads the volume as an image of TPixel, checks its voxels are finite and returns it with \a rescale. */
 template<typename TPixel>
 StoredVolume
@@ -308,16 +326,24 @@ ReadAs(itk::ImageIOBase *               io,
 {
   RequireMemoryForVoxels(
     voxels, sizeof(TPixel), StoredPixelTypeName(itk::ImageIOBase::MapPixelType<TPixel>::CType), where);
-  std::optional<std::uint64_t> rawNrrd;
-  if (!nifti && std::string(io->GetNameOfClass()) == "NrrdImageIO" && !IsURIName(path) &&
-      io->GetNumberOfDimensions() == 3 && io->GetComponentType() == itk::ImageIOBase::MapPixelType<TPixel>::CType &&
-      io->GetNumberOfComponents() == 1)
+  std::optional<std::uint64_t>                     rawNrrd;
+  std::optional<detail::CompressedMetaImageVoxels> compressedMeta;
+  const bool ownReadable = !nifti && !IsURIName(path) && io->GetNumberOfDimensions() == 3 &&
+                           io->GetComponentType() == itk::ImageIOBase::MapPixelType<TPixel>::CType &&
+                           io->GetNumberOfComponents() == 1;
+  if (ownReadable && std::string(io->GetNameOfClass()) == "NrrdImageIO")
   {
     rawNrrd = detail::RawNrrdVoxelOffset(path, voxels * sizeof(TPixel), sizeof(TPixel));
   }
+  else if (ownReadable)
+  {
+    compressedMeta = detail::FindCompressedMetaImageVoxels(*io, path, where);
+  }
   typename itk::Image<TPixel, 3>::Pointer volume = nifti     ? ReadNifti<TPixel>(io, path, where)
                                                    : rawNrrd ? ReadRawNrrd<TPixel>(io, path, *rawNrrd, where)
-                                                             : ReadWithITK<TPixel>(io, path, where);
+                                                   : compressedMeta
+                                                     ? ReadCompressedMetaImage<TPixel>(io, path, *compressedMeta, where)
+                                                     : ReadWithITK<TPixel>(io, path, where);
   RequireFiniteVoxels(*volume, where);
   return StoredVolume{ volume.GetPointer(), rescale };
 }
