@@ -8,8 +8,7 @@
 #include "vrCoordinateFrames.h"
 #include "vrAvailableMemory.h"
 #include "vrInputError.h"
-
-#include "itkImportImageContainer.h"
+#include "vrSharedVoxelContainer.h"
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -108,33 +107,6 @@ WrapVoxels(void * voxels, int vtkType, vtkIdType count, std::shared_ptr<const vo
   array->GetInformation()->Set(VoxelOwnerKey(), holder);
   return array;
 }
-
-/** An ITK pixel container reading voxels in place, holding what owns them (a VTK array, another image's container). */
-template<typename TPixel>
-class SharedVoxelContainer : public itk::ImportImageContainer<itk::SizeValueType, TPixel>
-{
-public:
-  ITK_DISALLOW_COPY_AND_MOVE(SharedVoxelContainer);
-  using Self = SharedVoxelContainer;
-  using Superclass = itk::ImportImageContainer<itk::SizeValueType, TPixel>;
-  using Pointer = itk::SmartPointer<Self>;
-  itkNewMacro(Self);
-  itkTypeMacro(SharedVoxelContainer, ImportImageContainer);
-
-  void
-  Share(TPixel * voxels, itk::SizeValueType count, std::shared_ptr<const void> owner)
-  {
-    this->SetImportPointer(voxels, count, false);
-    m_Owner = std::move(owner);
-  }
-
-protected:
-  SharedVoxelContainer() = default;
-  ~SharedVoxelContainer() override = default;
-
-private:
-  std::shared_ptr<const void> m_Owner;
-};
 
 /** The VTK scalar type of a stored pixel type; -1 for another type. */
 int
@@ -431,7 +403,7 @@ ShareNodeVoxels(const NodeGrid & grid, vtkDataArray * scalars, const itk::CPRInt
 {
   auto image = itk::Image<TPixel, 3>::New();
   grid.ConfigureImage(*image);
-  auto container = SharedVoxelContainer<TPixel>::New();
+  auto container = detail::SharedVoxelContainer<TPixel>::New();
   container->Share(static_cast<TPixel *>(scalars->GetVoidPointer(0)),
                    grid.Region.GetNumberOfPixels(),
                    std::make_shared<vtkSmartPointer<vtkDataArray>>(scalars));
@@ -619,15 +591,15 @@ ConvertStoredVolumeToVolumeNode(const StoredVolume & volume, const std::string &
   auto data = ImageDataOfGrid(*volume.Image);
   // The node's array reads the image's buffer and holds its pixel container (the buffer's owner).
   itk::VisitStoredVolume(volume.Image.GetPointer(),
-                                 [&data, vtkType](auto * image)
-                                 {
-                                   auto owner = std::make_shared<itk::Object::Pointer>(image->GetPixelContainer());
-                                   data->GetPointData()->SetScalars(
-                                     WrapVoxels(image->GetBufferPointer(),
-                                                vtkType,
-                                                static_cast<vtkIdType>(image->GetBufferedRegion().GetNumberOfPixels()),
-                                                std::move(owner)));
-                                 });
+                         [&data, vtkType](auto * image)
+                         {
+                           auto owner = std::make_shared<itk::Object::Pointer>(image->GetPixelContainer());
+                           data->GetPointData()->SetScalars(
+                             WrapVoxels(image->GetBufferPointer(),
+                                        vtkType,
+                                        static_cast<vtkIdType>(image->GetBufferedRegion().GetNumberOfPixels()),
+                                        std::move(owner)));
+                         });
   auto node = MakeNodeOfImage(*volume.Image, data, name);
   node->SetIntensityRescale(volume.Rescale);
   return node;
@@ -651,8 +623,8 @@ WrapVoxelBuffer(void *                           voxels,
   if (vtkType < 0)
   {
     std::ostringstream message;
-    message << what << ": pixel type " << pixelType << " is not one a volume is kept in ("
-            << itk::CPRStoredPixelTypes << ")";
+    message << what << ": pixel type " << pixelType << " is not one a volume is kept in (" << itk::CPRStoredPixelTypes
+            << ")";
     throw InputError(message.str());
   }
   if (dimensions[0] < 1 || dimensions[1] < 1 || dimensions[2] < 1)

@@ -3,9 +3,9 @@
 
 #include "vrDICOMVolumeHandOver.h"
 #include "vrInputError.h"
+#include "vrSharedVoxelContainer.h"
 
 #include "itkImage.h"
-#include "itkImportImageContainer.h"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -47,33 +47,6 @@ private:
   std::size_t m_Length;
 };
 
-/** An ITK pixel container reading voxels in a mapping it holds (ITK's own container would free them with delete[]). */
-template<typename TPixel>
-class MappedVoxelContainer : public itk::ImportImageContainer<itk::SizeValueType, TPixel>
-{
-public:
-  ITK_DISALLOW_COPY_AND_MOVE(MappedVoxelContainer);
-  using Self = MappedVoxelContainer;
-  using Superclass = itk::ImportImageContainer<itk::SizeValueType, TPixel>;
-  using Pointer = itk::SmartPointer<Self>;
-  itkNewMacro(Self);
-  itkTypeMacro(MappedVoxelContainer, ImportImageContainer);
-
-  void
-  Share(const std::shared_ptr<Mapping> & mapping, itk::SizeValueType count)
-  {
-    this->SetImportPointer(reinterpret_cast<TPixel *>(mapping->Bytes() + DICOMVolumeVoxelOffset), count, false);
-    m_Mapping = mapping;
-  }
-
-protected:
-  MappedVoxelContainer() = default;
-  ~MappedVoxelContainer() override = default;
-
-private:
-  std::shared_ptr<Mapping> m_Mapping;
-};
-
 template<typename TPixel>
 itk::ImageBase<3>::Pointer
 WrapMapping(const std::shared_ptr<Mapping> & mapping, const DICOMVolumeHeader & header)
@@ -98,8 +71,9 @@ WrapMapping(const std::shared_ptr<Mapping> & mapping, const DICOMVolumeHeader & 
   image->SetSpacing(spacing);
   image->SetOrigin(origin);
   image->SetDirection(direction);
-  auto container = MappedVoxelContainer<TPixel>::New();
-  container->Share(mapping, region.GetNumberOfPixels());
+  auto container = SharedVoxelContainer<TPixel>::New();
+  container->Share(
+    reinterpret_cast<TPixel *>(mapping->Bytes() + DICOMVolumeVoxelOffset), region.GetNumberOfPixels(), mapping);
   image->SetPixelContainer(container);
   return image.GetPointer();
 }
