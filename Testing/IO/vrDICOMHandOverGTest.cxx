@@ -207,7 +207,9 @@ TEST(DICOMHandOver, AHandOverCutShortOrUnfinishedIsRefusedAndNothingIsLeftBehind
       "truncate -s 5536 /proc/self/fd/3\n",
       "the DICOM reader process handed over a volume it did not finish" },
     // The real reader, then an abort: its exit status says it died, whatever the file holds.
-    { "aborted", "\"$REAL\" \"$@\" || exit $?\nulimit -c 0\nkill -ABRT $$\n", "(SIGABRT, an assertion or abort)" },
+    { "aborted",
+      "\"$REAL\" \"$@\" || exit $?\nulimit -c 0\nkill -ABRT $$\n",
+      "the DICOM reader process died handing the series it read over (SIGABRT, an assertion or abort)" },
   };
   for (const StandIn & standIn : standIns)
   {

@@ -474,7 +474,8 @@ ReadDICOMSeriesInChildProcess(const std::string & folder, const std::string & se
       throw InputError(where + ": the DICOM file " + lastFile + " is corrupt: GDCM's reader died reading it" + detail +
                        "; the series is not read: remove or replace that file");
     }
-    throw InputError(where + ": GDCM's reader died " + step + detail + "; the series is not read");
+    // Not at a file: the process itself died (killed, out of memory, a fault outside GDCM's reading of a file).
+    throw InputError(where + ": the DICOM reader process died " + step + detail + "; the series is not read");
   }
   read.Volume = ReceiveDICOMVolume(handOver.Descriptor(), where);
   for (const auto & [key, value] : identity)
