@@ -41,7 +41,7 @@ BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
         toRight += f.template Weight<1, 1>(px) + f.template Weight<1, -1>(px);
       }
       const float across = f.template Weight<0, 1>(px) + f.template Weight<0, -1>(px);
-      float       denominator = f.C[px] - across;
+      float       denominator = f.C[px] - f.template Weight<0, 1>(px) - f.template Weight<0, -1>(px);
       denominator = denominator > 0.0f ? denominator : toLeft + toRight;
       if (denominator > 0.0f && !(toLeft + toRight < Multigrid::WeakInterpolation * across))
       {
@@ -62,7 +62,7 @@ BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
         toAbove += f.template Weight<1, 1>(py) + f.template Weight<-1, 1>(py);
       }
       const float across = f.template Weight<1, 0>(py) + f.template Weight<-1, 0>(py);
-      float       denominator = f.C[py] - across;
+      float       denominator = f.C[py] - f.template Weight<1, 0>(py) - f.template Weight<-1, 0>(py);
       denominator = denominator > 0.0f ? denominator : toBelow + toAbove;
       if (denominator > 0.0f && !(toBelow + toAbove < Multigrid::WeakInterpolation * across))
       {
