@@ -15,7 +15,10 @@ namespace
  * fine point between two coarse points along x collapses its stencil along y (its couplings above and below are
  * taken as if to itself) and takes each side in proportion to its couplings to that side's column, divided by its
  * collapsed diagonal, so that a point anchored by fixed neighbours interpolates less than all, and a point beside a
- * depth jump takes nothing from across it; likewise along y. No weight goes to an inactive coarse point. */
+ * depth jump takes nothing from across it; likewise along y. A point whose couplings towards the two coarse points
+ * are below Multigrid::WeakInterpolation times its couplings across (a line of pixels between two depth steps,
+ * coupled along the line only) takes nothing either: collapsing would divide next to nothing by next to nothing and
+ * join the two sides of the line on the coarser levels. No weight goes to an inactive coarse point. */
 template<bool NinePoint>
 void
 BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
@@ -37,9 +40,10 @@ BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
         toLeft += f.template Weight<-1, 1>(px) + f.template Weight<-1, -1>(px);
         toRight += f.template Weight<1, 1>(px) + f.template Weight<1, -1>(px);
       }
-      float denominator = f.C[px] - f.template Weight<0, 1>(px) - f.template Weight<0, -1>(px);
+      const float across = f.template Weight<0, 1>(px) + f.template Weight<0, -1>(px);
+      float       denominator = f.C[px] - f.template Weight<0, 1>(px) - f.template Weight<0, -1>(px);
       denominator = denominator > 0.0f ? denominator : toLeft + toRight;
-      if (denominator > 0.0f)
+      if (denominator > 0.0f && !(toLeft + toRight < Multigrid::WeakInterpolation * across))
       {
         xa = toLeft / denominator;
         xb = toRight / denominator;
@@ -57,9 +61,10 @@ BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
         toBelow += f.template Weight<1, -1>(py) + f.template Weight<-1, -1>(py);
         toAbove += f.template Weight<1, 1>(py) + f.template Weight<-1, 1>(py);
       }
-      float denominator = f.C[py] - f.template Weight<1, 0>(py) - f.template Weight<-1, 0>(py);
+      const float across = f.template Weight<1, 0>(py) + f.template Weight<-1, 0>(py);
+      float       denominator = f.C[py] - f.template Weight<1, 0>(py) - f.template Weight<-1, 0>(py);
       denominator = denominator > 0.0f ? denominator : toBelow + toAbove;
-      if (denominator > 0.0f)
+      if (denominator > 0.0f && !(toBelow + toAbove < Multigrid::WeakInterpolation * across))
       {
         ya = toBelow / denominator;
         yb = toAbove / denominator;
