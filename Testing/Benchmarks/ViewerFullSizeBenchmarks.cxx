@@ -54,6 +54,9 @@ using vr::benchmarks::P95;
 using vr::benchmarks::RunUntil;
 using vr::benchmarks::Seconds;
 
+/** How long a raised window is given to draw before a change is timed in it. */
+constexpr double RaiseSettleSeconds = 1.0;
+
 struct Study
 {
   std::string Volume;
@@ -248,13 +251,18 @@ FullSizeViewer(long slices)
   return *viewer;
 }
 
-/** Raises \a viewer's window above the other one and lets it draw what that uncovered. */
+/** Raises \a viewer's window above the other one and lets it draw what that uncovered: the whole window, composed
+ * again with its two OpenGL views on the software renderer, takes both cores for a while after the raise, and an
+ * angle change timed meanwhile would share them with it. */
 void
 Raise(BenchmarkViewer & viewer)
 {
-  viewer.Window().raise();
-  const auto start = Clock::now();
-  RunUntil([&] { return Seconds(start, Clock::now()) > 0.05; });
+  if (QApplication::topLevelAt(viewer.Window().geometry().center()) != &viewer.Window())
+  {
+    viewer.Window().raise();
+    const auto start = Clock::now();
+    RunUntil([&] { return Seconds(start, Clock::now()) > RaiseSettleSeconds; });
+  }
   viewer.Settle();
 }
 
@@ -297,6 +305,8 @@ FullSize_AngleChange(benchmark::State & state)
     state.counters["phantom_resample_ms"] = 1000.0 * phantomTimes.Resample;
     state.counters["phantom_logic_rest_ms"] = 1000.0 * phantomTimes.LogicRest;
     state.counters["phantom_relax_ms"] = 1000.0 * phantomTimes.Relax;
+    state.counters["cpu_ms"] = 1000.0 * fullTimes.ProcessCPU;
+    state.counters["phantom_cpu_ms"] = 1000.0 * phantomTimes.ProcessCPU;
     state.counters["progress_shown"] = fullTimes.ProgressShown ? 1.0 : 0.0;
     state.counters["phantom_progress_shown"] = phantomTimes.ProgressShown ? 1.0 : 0.0;
   }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <iostream>
 
 namespace vr::benchmarks
@@ -141,6 +142,15 @@ PhantomViewer()
 
 namespace
 {
+/** The processor time of the process, all threads, in seconds. */
+double
+ProcessSeconds()
+{
+  timespec time{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &time);
+  return static_cast<double>(time.tv_sec) + 1e-9 * static_cast<double>(time.tv_nsec);
+}
+
 /** Notes when the widget it watches is shown. */
 class ShowWatcher : public QObject
 {
@@ -193,6 +203,7 @@ TimeSettledAngleChange(BenchmarkViewer & viewer, AngleChangeTimes & times, std::
     bar->installEventFilter(&progress);
   }
   const double angle = viewer.NextAngle();
+  const double cpuStart = ProcessSeconds();
   const auto   start = Clock::now();
   window.GetPanel()->SetAngle(angle, RequestKind::Final);
   if (window.GetPanel()->GetAngle() != angle)
@@ -209,6 +220,7 @@ TimeSettledAngleChange(BenchmarkViewer & viewer, AngleChangeTimes & times, std::
       return shownId != 0 && result && result->RequestId == shownId &&
              result->Outputs.View.GetAngleInDegrees() == angle;
     });
+  const double cpuEnd = ProcessSeconds();
   QObject::disconnect(displayed);
   QObject::disconnect(handled);
   if (!shown)
@@ -231,6 +243,7 @@ TimeSettledAngleChange(BenchmarkViewer & viewer, AngleChangeTimes & times, std::
   times.Resample = result->Outputs.Times.Resample;
   times.LogicRest = times.Logic - times.Depth - times.Relax - times.Resample;
   times.ProgressShown = progress.Shown;
+  times.ProcessCPU = cpuEnd - cpuStart;
   if (result->StagesRun.Depth != 1 || result->StagesRun.Relax != 1)
   {
     error = "the angle change did not rerun depth and relaxation";

@@ -111,6 +111,8 @@ struct AngleChangeTimes
   /** Whether the status bar's progress bar was shown during the change (it is shown once an update has run
    * ViewerWindow::ProgressDelayMilliseconds; showing it repaints the window). */
   bool ProgressShown{ false };
+  /** The processor time the whole process (all its threads) spent from the change to the new CPR on screen. */
+  double ProcessCPU{ 0.0 };
 };
 
 /** Settles \a viewer, types the next angle into its panel (a Final request) and runs the event loop until the new
