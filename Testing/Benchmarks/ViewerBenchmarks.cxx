@@ -26,7 +26,8 @@
 //                      event to the new straightened CPR painted on screen (the logic's resampling of the CPR on the
 //                      viewer's worker, then the result's synchronous repaint of the view on the GUI thread). Counter
 //                      logic_ms: VesselPathLogic::Update() of those steps.
-// Repetitions are single changes (or single drags); median and p95 are computed over them.
+// Repetitions are single changes (or single drags); median and p95 are computed over them. The same on full-size
+// studies opened from their files, beside the phantom: ViewerFullSizeBenchmarks.cxx.
 #include "vrReformationInputs.h"
 #include "vrStraightenedCPRView.h"
 #include "vrVesselReformationLogic.h"
