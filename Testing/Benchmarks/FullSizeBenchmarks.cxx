@@ -7,10 +7,13 @@
 //   FullSize_DepthResample/512/1024/slices:N  depth + resample for a new angle, the volume sampled as int16 through
 //                                             itk::ImageBase<3> as the logic samples it; slices:0 is the phantom
 //                                             (float, 1.5 mm voxels, 254 x 160 x 680): the reference of the ratio
+//   FullSize_Resample/512/1024/slices:N       the resampling alone, of one depth map at the design angle, again and
+//                                             again: how the volume's size and layout weigh on the sampling
 //   FullSize_Pipeline_CPU/512/1024/slices:N   depth + 500 Jacobi passes + resample: the logic's work for a settled
 //                                             angle change, the rest of which (drawing) does not depend on the volume
-// Each iteration turns the view by a quarter degree from the phantom's design angle; the volumes are made once per
-// process, outside any timing (about 10 s per 1 000 slices on 2 cores).
+// The volumes are runoff-N.nrrd of the folder VR_FULL_SIZE_STUDIES where it names one (WriteClinicalVolume's files),
+// else drawn in the process. Each iteration turns the view by a quarter degree from the phantom's design angle; the
+// volumes are made once per process, outside any timing (about 10 s per 1 000 slices on 2 cores).
 #include "vrBenchmarkScene.h"
 #include "vrClinicalVolume.h"
 #include "vrVolumeIO.h"
@@ -22,6 +25,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <fcntl.h>
 #include <filesystem>
 #include <map>
@@ -46,6 +51,18 @@ VolumeOf(long slices)
     return vr::benchmarks::PhantomScene::Instance().GetVolume();
   }
   auto & volume = volumes[slices];
+  if (!volume)
+  {
+    // runoff-N.nrrd as WriteClinicalVolume writes it, where VR_FULL_SIZE_STUDIES names a folder that holds it:
+    // read in a second where drawing it takes a minute.
+    const char * folder = std::getenv("VR_FULL_SIZE_STUDIES");
+    const auto   file =
+      std::filesystem::path(folder != nullptr ? folder : "") / ("runoff-" + std::to_string(slices) + ".nrrd");
+    if (folder != nullptr && *folder != '\0' && std::filesystem::exists(file))
+    {
+      volume = dynamic_cast<ShortVolume *>(vr::ReadStoredVolume(file.string()).Image.GetPointer());
+    }
+  }
   if (!volume)
   {
     volume = vr::test::MakeClinicalVolume<short>(itk::CTAPhantomKind::Runoff,
@@ -158,6 +175,38 @@ FullSize_DepthResample(benchmark::State & state)
 }
 
 void
+FullSize_Resample(benchmark::State & state)
+{
+  const itk::ImageBase<3> * volume = VolumeOf(state.range(2));
+  auto                      depth = MakeDepthFilter(volume, state.range(0), state.range(1));
+  depth->Update();
+  auto resample = ResampleFilter::New();
+  resample->SetVolume(volume);
+  resample->SetDepth(depth->GetDepthOutput());
+  resample->Update();  // not timed: the volume's minimum, once per volume
+  for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
+  {
+    resample->Modified();
+    resample->Update();
+    benchmark::DoNotOptimize(resample->GetOutput()->GetBufferPointer());
+  }
+  // The share of the view's pixels that sample the volume (the others take the default value at once): a square
+  // field of view holds more of a view than the phantom's box around the body.
+  constexpr float Outside = -12345.0F;
+  auto            marked = ResampleFilter::New();
+  marked->SetVolume(volume);
+  marked->SetDepth(depth->GetDepthOutput());
+  marked->SetDefaultValue(Outside);
+  marked->Update();
+  const auto * values = marked->GetOutput()->GetBufferPointer();
+  const auto   pixels = marked->GetOutput()->GetBufferedRegion().GetNumberOfPixels();
+  const auto   inside = pixels - static_cast<std::size_t>(std::count(values, values + pixels, Outside));
+  state.counters["inside_fraction"] = static_cast<double>(inside) / static_cast<double>(pixels);
+  state.counters["inside_samples_per_s"] = benchmark::Counter(
+    static_cast<double>(state.iterations()) * static_cast<double>(inside), benchmark::Counter::kIsRate);
+}
+
+void
 FullSize_Pipeline_CPU(benchmark::State & state)
 {
   const itk::ImageBase<3> * volume = VolumeOf(state.range(2));
@@ -209,6 +258,15 @@ const bool Registered = []
       ->Unit(benchmark::kMillisecond)
       ->UseRealTime()
       ->Repetitions(5)
+      ->ReportAggregatesOnly();
+    benchmark::RegisterBenchmark("FullSize_Resample", FullSize_Resample)
+      ->ArgNames({ "", "", "slices" })
+      ->Args({ 512, 1024, slices })
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime()
+      ->Repetitions(9)
+      ->ComputeStatistics(
+        "min", [](const std::vector<double> & values) { return *std::min_element(values.begin(), values.end()); })
       ->ReportAggregatesOnly();
     benchmark::RegisterBenchmark("FullSize_Pipeline_CPU", FullSize_Pipeline_CPU)
       ->ArgNames({ "", "", "slices" })

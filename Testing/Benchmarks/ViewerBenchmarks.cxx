@@ -26,10 +26,12 @@
 //                      event to the new straightened CPR painted on screen (the logic's resampling of the CPR on the
 //                      viewer's worker, then the result's synchronous repaint of the view on the GUI thread). Counter
 //                      logic_ms: VesselPathLogic::Update() of those steps.
-// Repetitions are single changes (or single drags); median and p95 are computed over them.
+// Repetitions are single changes (or single drags); median and p95 are computed over them. The same on full-size
+// studies opened from their files, beside the phantom: ViewerFullSizeBenchmarks.cxx.
 #include "vrReformationInputs.h"
 #include "vrStraightenedCPRView.h"
 #include "vrVesselReformationLogic.h"
+#include "vrViewerBenchmarkSupport.h"
 #include "vrViewerWindow.h"
 
 #include <QApplication>
@@ -52,237 +54,51 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
-constexpr double DesignAngle = 30.0;
+using vr::benchmarks::BenchmarkParameters;
+using vr::benchmarks::BenchmarkViewer;
+using vr::benchmarks::Clock;
+using vr::benchmarks::P95;
+using vr::benchmarks::Percentile;
+using vr::benchmarks::RunUntil;
+using vr::benchmarks::Seconds;
+constexpr double DesignAngle = vr::benchmarks::ViewerDesignAngle;
 
-double
-Seconds(Clock::time_point start, Clock::time_point end)
-{
-  return std::chrono::duration<double>(end - start).count();
-}
-
-double
-Percentile(std::vector<double> values, double fraction)
-{
-  if (values.empty())
-  {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const double position = fraction * static_cast<double>(values.size() - 1);
-  const auto   low = static_cast<std::size_t>(std::floor(position));
-  const auto   high = std::min(values.size() - 1, low + 1);
-  return values[low] + (position - static_cast<double>(low)) * (values[high] - values[low]);
-}
-
-double
-P95(const std::vector<double> & values)
-{
-  return Percentile(values, 0.95);
-}
-
-vr::ReformationParameters
-BenchmarkParameters(double angle)
-{
-  vr::ReformationParameters parameters;
-  parameters.AngleInDegrees = angle;
-  parameters.ImageSize[0] = 512;
-  parameters.ImageSize[1] = 1024;
-  parameters.Iterations = 500;
-  parameters.Relaxation = 1.0;
-  parameters.Anisotropy = 0.5;
-  parameters.Backend = vr::RelaxBackend::CPU;
-  parameters.Window = 900.0;
-  parameters.Level = 200.0;
-  return parameters;
-}
-
-const vr::ReformationInputs &
-Phantom()
-{
-  static const vr::ReformationInputs inputs = vr::MakePhantomInputs("runoff", 1.5);
-  return inputs;
-}
-
-/** Runs the event loop until \a done() (checked after each event batch) or \a seconds pass; a 1 ms heartbeat wakes the
- * loop so that the check also runs when no event comes. \return done(). */
-bool
-RunUntil(const std::function<bool()> & done, double seconds = 120.0)
-{
-  QTimer heartbeat;
-  heartbeat.start(1);
-  const auto start = Clock::now();
-  while (!done())
-  {
-    if (Seconds(start, Clock::now()) > seconds)
-    {
-      std::cerr << "timed out after " << seconds << " s" << std::endl;
-      return false;
-    }
-    QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
-  }
-  return true;
-}
-
-/** The viewer window on the phantom, made once, settled after every use. */
-class Viewer
-{
-public:
-  static Viewer &
-  Instance()
-  {
-    static Viewer viewer;
-    return viewer;
-  }
-
-  vr::ViewerWindow &
-  Window()
-  {
-    return *m_Window;
-  }
-
-  /** Waits until nothing runs and the 3D view has drawn the full surface of the latest request. */
-  void
-  Settle()
-  {
-    if (!RunUntil(
-          [this]
-          {
-            return m_Window->GetController()->IsIdle() && m_Window->GetThreeDView()->IsShowingFullSurface() &&
-                   !m_Window->GetThreeDView()->IsInteracting() && m_RenderedFull;
-          }))
-    {
-      std::cerr << "not settled: idle " << m_Window->GetController()->IsIdle() << ", full surface shown "
-                << m_Window->GetThreeDView()->IsShowingFullSurface() << ", interacting "
-                << m_Window->GetThreeDView()->IsInteracting() << ", rendered full " << m_RenderedFull << std::endl;
-    }
-  }
-
-  /** The next angle: 30, 30.5, ... 39.5, 30, ... (the panel's angle has one decimal). */
-  double
-  NextAngle()
-  {
-    return DesignAngle + 0.5 * static_cast<double>(++m_Step % 20);
-  }
-
-  bool m_RenderedFull{ false };
-
-private:
-  Viewer()
-  {
-    // The window must go before the QApplication it lives in: Qt calls its post routines first when it shuts down
-    // (a static's destructor would run after main() has destroyed the application).
-    qAddPostRoutine([] { Instance().m_Window.reset(); });
-    m_Window = std::make_unique<vr::ViewerWindow>();
-    m_Window->resize(1600, 1000);
-    m_Window->GetPanel()->SetParameters(BenchmarkParameters(DesignAngle));
-    m_Window->show();
-    QObject::connect(m_Window->GetThreeDView(),
-                     &vr::ThreeDView::rendered,
-                     m_Window.get(),
-                     [this](double, bool full) { m_RenderedFull = full; });
-    QObject::connect(m_Window->GetController(),
-                     &vr::ReformationController::resultReady,
-                     m_Window.get(),
-                     [this] { m_RenderedFull = false; });
-    m_Window->GetController()->LoadInputs([] { return Phantom(); }, QStringLiteral("the run-off phantom"));
-    RunUntil([this] { return m_Window->GetCPRView()->GetResult() != nullptr; }, 600.0);
-    Settle();
-  }
-
-  std::unique_ptr<vr::ViewerWindow> m_Window;
-  std::size_t                       m_Step{ 0 };
-};
+using vr::benchmarks::PhantomInputs;
+using vr::benchmarks::PhantomViewer;
 
 void
 AngleChange(benchmark::State & state)
 {
-  Viewer &           viewer = Viewer::Instance();
-  vr::ViewerWindow & window = viewer.Window();
+  BenchmarkViewer & viewer = PhantomViewer();
   // One change per repetition: its parts go into counters, whose median and p95 over the repetitions Google
   // Benchmark reports beside the time's.
-  double logic = 0.0, preview = 0.0, request = 0.0, queue = 0.0, handover = 0.0, show = 0.0, render = 0.0, swap = 0.0,
-         overhead = 0.0;
+  vr::benchmarks::AngleChangeTimes times;
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
-    viewer.Settle();
-    std::uint64_t     shownId = 0;
-    Clock::time_point shownTime;
-    Clock::time_point handledTime;
-    auto              displayed = QObject::connect(window.GetCPRView(),
-                                      &vr::CPRView::imageDisplayed,
-                                      window.GetCPRView(),
-                                      [&](std::uint64_t id)
-                                      {
-                                        shownId = id;
-                                        shownTime = Clock::now();
-                                      });
-    // Connected after the window's own slot, so it runs when the window has handled the result.
-    auto         handled = QObject::connect(window.GetController(),
-                                    &vr::ReformationController::resultReady,
-                                    window.GetCPRView(),
-                                    [&](const std::shared_ptr<const vr::ReformationResult> & result)
-                                    {
-                                      if (!result->HasFullSurface())
-                                      {
-                                        handledTime = Clock::now();
-                                      }
-                                    });
-    const double angle = viewer.NextAngle();
-    const auto   start = Clock::now();
-    window.GetPanel()->SetAngle(angle, vr::RequestKind::Final);
-    if (window.GetPanel()->GetAngle() != angle)
+    std::string error;
+    if (!vr::benchmarks::TimeSettledAngleChange(viewer, times, error))
     {
-      state.SkipWithError("the panel did not take the angle");
+      state.SkipWithError(error.c_str());
       break;
     }
-    const bool shown = RunUntil(
-      [&]
-      {
-        const auto result = window.GetCPRView()->GetResult();
-        return shownId != 0 && result && result->RequestId == shownId &&
-               result->Outputs.View.GetAngleInDegrees() == angle;
-      });
-    QObject::disconnect(displayed);
-    QObject::disconnect(handled);
-    if (!shown)
-    {
-      state.SkipWithError("the new angle's CPR was not displayed");
-      break;
-    }
-    const auto   result = window.GetCPRView()->GetResult();
-    const double total = Seconds(start, shownTime);
-    state.SetIterationTime(total);
-    logic = result->UpdateSeconds;
-    preview = result->PreviewSeconds;
-    request = Seconds(start, result->RequestTime);
-    queue = Seconds(result->RequestTime, result->StartTime);
-    handover = Seconds(result->StartTime, result->ReadyTime) - logic - preview;
-    show = Seconds(result->ReadyTime, handledTime);
-    render = window.GetCPRView()->GetLastRenderSeconds();
-    swap = Seconds(handledTime, shownTime);
-    overhead = total - logic;
-    if (result->StagesRun.Depth != 1 || result->StagesRun.Relax != 1)
-    {
-      state.SkipWithError("the angle change did not rerun depth and relaxation");
-    }
+    state.SetIterationTime(times.Total);
   }
-  state.counters["logic_ms"] = 1000.0 * logic;
-  state.counters["gui_overhead_ms"] = 1000.0 * overhead;
-  state.counters["to_request_ms"] = 1000.0 * request;
-  state.counters["to_worker_ms"] = 1000.0 * queue;
-  state.counters["worker_rest_ms"] = 1000.0 * handover;
-  state.counters["preview_surface_ms"] = 1000.0 * preview;
-  state.counters["show_ms"] = 1000.0 * show;
-  state.counters["render_2d_ms"] = 1000.0 * render;
-  state.counters["to_frame_ms"] = 1000.0 * swap;
+  state.counters["logic_ms"] = 1000.0 * times.Logic;
+  state.counters["gui_overhead_ms"] = 1000.0 * (times.Total - times.Logic);
+  state.counters["to_request_ms"] = 1000.0 * times.ToRequest;
+  state.counters["to_worker_ms"] = 1000.0 * times.ToWorker;
+  state.counters["worker_rest_ms"] = 1000.0 * times.WorkerRest;
+  state.counters["preview_surface_ms"] = 1000.0 * times.PreviewSurface;
+  state.counters["show_ms"] = 1000.0 * times.Show;
+  state.counters["render_2d_ms"] = 1000.0 * times.RenderCPR;
+  state.counters["to_frame_ms"] = 1000.0 * times.ToFrame;
   viewer.Settle();
 }
 
 void
 Drag(benchmark::State & state)
 {
-  Viewer &            viewer = Viewer::Instance();
+  BenchmarkViewer &   viewer = PhantomViewer();
   vr::ViewerWindow &  window = viewer.Window();
   QWidget *           target = window.GetCPRView()->GetRenderWidget();
   std::vector<double> latencies;
@@ -396,8 +212,8 @@ void
 Logic_AngleChange(benchmark::State & state)
 {
   vr::VesselReformationLogic logic;
-  logic.SetVolumeNode(Phantom().Volume);
-  logic.SetCenterlineNode(Phantom().Centerlines);
+  logic.SetVolumeNode(PhantomInputs().Volume);
+  logic.SetCenterlineNode(PhantomInputs().Centerlines);
   logic.SetSurfaceEnabled(false);
   logic.SetParameters(BenchmarkParameters(DesignAngle));
   logic.Update();
@@ -414,9 +230,9 @@ Logic_AngleChange(benchmark::State & state)
 void
 ThreeDView_Render(benchmark::State & state)
 {
-  Viewer &         viewer = Viewer::Instance();
-  vr::ThreeDView * view = viewer.Window().GetThreeDView();
-  const bool       full = state.range(0) == 1;
+  BenchmarkViewer & viewer = PhantomViewer();
+  vr::ThreeDView *  view = viewer.Window().GetThreeDView();
+  const bool        full = state.range(0) == 1;
   viewer.Settle();
   view->SetInteracting(!full);
   long long points = 0;
@@ -438,7 +254,7 @@ ThreeDView_Render(benchmark::State & state)
 void
 Window_Repaint(benchmark::State & state)
 {
-  Viewer & viewer = Viewer::Instance();
+  BenchmarkViewer & viewer = PhantomViewer();
   viewer.Settle();
   for (auto _ : state) // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
   {
@@ -451,7 +267,7 @@ Window_Repaint(benchmark::State & state)
 void
 VesselPathRoll(benchmark::State & state)
 {
-  Viewer &              viewer = Viewer::Instance();
+  BenchmarkViewer &     viewer = PhantomViewer();
   vr::VesselPathPanel * panel = viewer.Window().GetPathPanel();
   viewer.Settle();
   if (!panel->HasPath() && !viewer.Window().OpenVesselPath(0))
