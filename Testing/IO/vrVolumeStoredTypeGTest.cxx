@@ -187,6 +187,24 @@ WriteNiftiInt16(const std::string &        path,
   file.write(reinterpret_cast<const char *>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
 }
 
+/** The bytes of \a voxels as a file holds them: in the machine's (little-endian) order, swapped for \a bigEndian. */
+std::string
+BytesOf(const std::vector<short> & voxels, bool bigEndian)
+{
+  std::string bytes;
+  for (const short voxel : voxels)
+  {
+    char raw[2];
+    std::memcpy(raw, &voxel, 2);
+    if (bigEndian)
+    {
+      std::swap(raw[0], raw[1]);
+    }
+    bytes.append(raw, 2);
+  }
+  return bytes;
+}
+
 std::vector<short>
 RandomShorts(std::size_t count, unsigned int seed)
 {
@@ -353,21 +371,7 @@ TEST(VolumeStoredType, RawNrrdIsReadStraightIntoTheBufferAndEveryOtherThroughITK
 {
   const vr::test::ScopedTemporaryFolder folder;
   const std::vector<short>              voxels = RandomShorts(4 * 3 * 2, 11);
-  auto                                  bytesOf = [&](bool bigEndian)
-  {
-    std::string bytes;
-    for (const short voxel : voxels)
-    {
-      char raw[2];
-      std::memcpy(raw, &voxel, 2);
-      if (bigEndian)
-      {
-        std::swap(raw[0], raw[1]);
-      }
-      bytes.append(raw, 2);
-    }
-    return bytes;
-  };
+  const auto                            bytesOf = [&](bool bigEndian) { return BytesOf(voxels, bigEndian); };
   const std::string fields = "type: short\ndimension: 3\nspace: left-posterior-superior\nsizes: 4 3 2\n"
                              "space directions: (0.5,0,0) (0,0.75,0) (0,0,1.25)\nspace origin: (1,2,3)\n"
                              "encoding: raw\n";
@@ -445,22 +449,8 @@ TEST(VolumeStoredType, CompressedMetaImageIsInflatedStraightIntoTheBuffer)
 {
   const vr::test::ScopedTemporaryFolder folder;
   const std::vector<short>              voxels = RandomShorts(9 * 7 * 5, 23);
-  auto                                  bytesOf = [&](bool bigEndian)
-  {
-    std::string bytes;
-    for (const short voxel : voxels)
-    {
-      char raw[2];
-      std::memcpy(raw, &voxel, 2);
-      if (bigEndian)
-      {
-        std::swap(raw[0], raw[1]);
-      }
-      bytes.append(raw, 2);
-    }
-    return bytes;
-  };
-  const auto header = [](bool bigEndian, const std::string & dataFile)
+  const auto                            bytesOf = [&](bool bigEndian) { return BytesOf(voxels, bigEndian); };
+  const auto                            header = [](bool bigEndian, const std::string & dataFile)
   {
     return "ObjectType = Image\nNDims = 3\nBinaryData = True\nBinaryDataByteOrderMSB = " +
            std::string(bigEndian ? "True" : "False") +
