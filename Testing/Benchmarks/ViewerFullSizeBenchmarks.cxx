@@ -363,39 +363,28 @@ FullSize_Logic_AngleChange(benchmark::State & state)
 
 const bool Registered = []
 {
+  // Each repetition one timed change (or one first image), reported as median and p95 over the repetitions.
+  const auto registerTimed = [](const char * name, void (*function)(benchmark::State &), long slices, int repetitions)
+  {
+    benchmark::RegisterBenchmark(name, function)
+      ->ArgName("slices")
+      ->Arg(slices)
+      ->Iterations(1)
+      ->Repetitions(repetitions)
+      ->UseManualTime()
+      ->Unit(benchmark::kMillisecond)
+      ->ComputeStatistics("p95", P95)
+      ->ReportAggregatesOnly(true);
+  };
   // The first images first: no other full-size study is open while one is read.
   for (const long slices : { 1200L, 2400L })
   {
-    benchmark::RegisterBenchmark("FullSize_FirstImage", FullSize_FirstImage)
-      ->ArgName("slices")
-      ->Arg(slices)
-      ->Iterations(1)
-      ->Repetitions(5)
-      ->UseManualTime()
-      ->Unit(benchmark::kMillisecond)
-      ->ComputeStatistics("p95", P95)
-      ->ReportAggregatesOnly(true);
+    registerTimed("FullSize_FirstImage", FullSize_FirstImage, slices, 5);
   }
   for (const long slices : { 1200L, 2400L })
   {
-    benchmark::RegisterBenchmark("FullSize_Logic_AngleChange", FullSize_Logic_AngleChange)
-      ->ArgName("slices")
-      ->Arg(slices)
-      ->Iterations(1)
-      ->Repetitions(20)
-      ->UseManualTime()
-      ->Unit(benchmark::kMillisecond)
-      ->ComputeStatistics("p95", P95)
-      ->ReportAggregatesOnly(true);
-    benchmark::RegisterBenchmark("FullSize_AngleChange", FullSize_AngleChange)
-      ->ArgName("slices")
-      ->Arg(slices)
-      ->Iterations(1)
-      ->Repetitions(20)
-      ->UseManualTime()
-      ->Unit(benchmark::kMillisecond)
-      ->ComputeStatistics("p95", P95)
-      ->ReportAggregatesOnly(true);
+    registerTimed("FullSize_Logic_AngleChange", FullSize_Logic_AngleChange, slices, 20);
+    registerTimed("FullSize_AngleChange", FullSize_AngleChange, slices, 20);
   }
   return true;
 }();
