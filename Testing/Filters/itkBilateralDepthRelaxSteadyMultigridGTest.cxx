@@ -18,6 +18,28 @@ namespace Steady = itk::detail::BilateralDepthRelaxSteady;
 
 using Dense = std::vector<std::vector<double>>;
 
+/** The 5-point operator of level \a l from the weight of each point's edge to the right and above and whether the point
+ * is free (1) or fixed (0), as the solver assembles it: a fixed point keeps no row, a free point's C counts the edges
+ * to fixed neighbours too (their depths are Dirichlet values). */
+void
+AssembleFinestLevel(Steady::Level &            l,
+                    const std::vector<float> & right,
+                    const std::vector<float> & up,
+                    const std::vector<float> & active)
+{
+  const long s = l.Stride;
+  for (long y = 0; y < l.Height; ++y)
+  {
+    for (long x = 0; x < l.Width; ++x)
+    {
+      const long p = l.At(x, y);
+      l.C[p] = (right[p] + right[p - 1] + up[p] + up[p - s]) * active[p];
+      l.E[p] = right[p] * active[p] * active[p + 1];
+      l.N[p] = up[p] * active[p] * active[p + s];
+    }
+  }
+}
+
 /** A finest level of \a width x \a height as the solver assembles it: random weights in [lightest, 1] on every edge, a
  * fraction \a cuts of them \a cutWeight instead (0: a weight that vanished across a depth jump), some points fixed
  * (inactive, C = 0, no couplings; their weights still add to their neighbours' C as Dirichlet values). */
@@ -61,17 +83,7 @@ struct Problem
         active[p] = fixed(generator) ? 0.0f : 1.0f;
       }
     }
-    const long s = l.Stride;
-    for (long y = 0; y < height; ++y)
-    {
-      for (long x = 0; x < width; ++x)
-      {
-        const long p = l.At(x, y);
-        l.C[p] = (right[p] + right[p - 1] + up[p] + up[p - s]) * active[p];
-        l.E[p] = right[p] * active[p] * active[p + 1];
-        l.N[p] = up[p] * active[p] * active[p + s];
-      }
-    }
+    AssembleFinestLevel(l, right, up, active);
   }
 
   /** Level \a k's points in order: (x, y) -> y * Width + x. */
@@ -413,7 +425,6 @@ struct LineProblem
     Steady::Level & l = Multigrid.Finest();
     l.X = X.data();
     l.B = B.data();
-    const long                            s = l.Stride;
     std::vector<float>                    right(l.Size(), 0.0f), up(l.Size(), 0.0f), active(l.Size(), 0.0f);
     std::mt19937                          generator(17);
     std::uniform_real_distribution<float> along(0.6f, 1.0f);
@@ -429,16 +440,7 @@ struct LineProblem
         active[p] = y == 0 || y + 1 == height ? 0.0f : 1.0f;
       }
     }
-    for (long y = 0; y < height; ++y)
-    {
-      for (long x = 0; x < width; ++x)
-      {
-        const long p = l.At(x, y);
-        l.C[p] = (right[p] + right[p - 1] + up[p] + up[p - s]) * active[p];
-        l.E[p] = right[p] * active[p] * active[p + 1];
-        l.N[p] = up[p] * active[p] * active[p + s];
-      }
-    }
+    AssembleFinestLevel(l, right, up, active);
   }
 };
 
