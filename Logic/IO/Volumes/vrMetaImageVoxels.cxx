@@ -4,7 +4,6 @@
 #include "vrInputError.h"
 #include "vrMetaImageHeaderCheck.h"
 
-#include "itkByteSwapper.h"
 #include "itkMetaImageIO.h"
 
 #include <zlib.h>
@@ -34,16 +33,6 @@ struct InflateStream
   }
 };
 
-/** Swaps the bytes of every voxel of \a pixelBytes in \a buffer. */
-void
-SwapVoxelBytes(void * buffer, std::uint64_t bytes, std::size_t pixelBytes)
-{
-  auto * data = static_cast<char *>(buffer);
-  for (std::uint64_t at = 0; at + pixelBytes <= bytes; at += pixelBytes)
-  {
-    std::reverse(data + at, data + at + pixelBytes);
-  }
-}
 } // namespace
 
 std::optional<CompressedMetaImageVoxels>
@@ -68,7 +57,7 @@ FindCompressedMetaImageVoxels(itk::ImageIOBase & io, const std::string & path, c
     return std::nullopt;
   }
   CompressedMetaImageVoxels voxels;
-  voxels.SwapBytes = header->BinaryDataByteOrderMSB() != itk::ByteSwapper<short>::SystemIsBigEndian();
+  voxels.BigEndian = header->BinaryDataByteOrderMSB();
   if (dataFile == "LOCAL")
   {
     voxels.DataFile = path;
@@ -87,7 +76,6 @@ void
 InflateMetaImageVoxels(const CompressedMetaImageVoxels & voxels,
                        void *                            buffer,
                        std::uint64_t                     bytes,
-                       std::size_t                       pixelBytes,
                        const std::string &               where)
 {
   std::ifstream file(voxels.DataFile, std::ios::binary);
@@ -157,10 +145,6 @@ InflateMetaImageVoxels(const CompressedMetaImageVoxels & voxels,
   if (done != bytes)
   {
     throw truncated();
-  }
-  if (voxels.SwapBytes && pixelBytes > 1)
-  {
-    SwapVoxelBytes(buffer, bytes, pixelBytes);
   }
 }
 } // namespace vr::detail

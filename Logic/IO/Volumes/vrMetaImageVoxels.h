@@ -26,8 +26,8 @@ struct CompressedMetaImageVoxels
   std::string DataFile;
   /** Where the stream begins in DataFile. */
   std::uint64_t Offset{ 0 };
-  /** Whether the voxels are in the other byte order than the machine's (BinaryDataByteOrderMSB). */
-  bool SwapBytes{ false };
+  /** Whether the voxels are stored most significant byte first (BinaryDataByteOrderMSB). */
+  bool BigEndian{ false };
 };
 
 /** The compressed voxels of the MetaImage \a path, whose header ITK's reader \a io has read (and
@@ -36,15 +36,15 @@ struct CompressedMetaImageVoxels
 std::optional<CompressedMetaImageVoxels>
 FindCompressedMetaImageVoxels(itk::ImageIOBase & io, const std::string & path, const std::string & where);
 
-/** Inflates the stream of \a voxels into \a buffer of \a bytes, voxels of \a pixelBytes each, in the machine's byte
- * order. Throws vr::InputError "<where>: the voxel data cannot be read (truncated?): ..." when the stream ends before
- * \a bytes, "<where>: the compressed voxel data is damaged: ..." when zlib cannot inflate it, and "<where>: the
- * compressed voxel data holds more than the header's ... bytes" when it holds more. */
+/** Inflates the stream of \a voxels into \a buffer of \a bytes, in the file's byte order (the caller, who knows the
+ * pixel type, brings them into the machine's). Throws vr::InputError "<where>: the voxel data cannot be read
+ * (truncated?): ..." when the stream ends before \a bytes, "<where>: the compressed voxel data is damaged: ..." when
+ * zlib cannot inflate it, and "<where>: the compressed voxel data holds more than the header's ... bytes" when it holds
+ * more. */
 void
 InflateMetaImageVoxels(const CompressedMetaImageVoxels & voxels,
                        void *                            buffer,
                        std::uint64_t                     bytes,
-                       std::size_t                       pixelBytes,
                        const std::string &               where);
 } // namespace vr::detail
 

@@ -15,6 +15,7 @@
 
 // Including the reader and writer here pulls in the IO factory registration that ITK_USE_FILE sets up
 // (ITK_IO_FACTORY_REGISTER_MANAGER): NRRD, NIfTI, MetaImage, PNG and GDCM are known to this translation unit.
+#include "itkByteSwapper.h"
 #include "itkGDCMImageIO.h"
 #include "itkImageFileReader.h"
 #include "itkImageFileWriter.h"
@@ -305,12 +306,18 @@ ReadCompressedMetaImage(itk::ImageIOBase *                        io,
                         const detail::CompressedMetaImageVoxels & compressed,
                         const std::string &                       where)
 {
-  auto volume = AllocateOnTheHeadersGrid<TPixel>(io, path, where);
-  detail::InflateMetaImageVoxels(compressed,
-                                 volume->GetBufferPointer(),
-                                 volume->GetLargestPossibleRegion().GetNumberOfPixels() * sizeof(TPixel),
-                                 sizeof(TPixel),
-                                 where);
+  auto              volume = AllocateOnTheHeadersGrid<TPixel>(io, path, where);
+  const std::size_t count = volume->GetLargestPossibleRegion().GetNumberOfPixels();
+  detail::InflateMetaImageVoxels(compressed, volume->GetBufferPointer(), count * sizeof(TPixel), where);
+  // From the file's byte order to the machine's (nothing to do where they are the same).
+  if (compressed.BigEndian)
+  {
+    itk::ByteSwapper<TPixel>::SwapRangeFromSystemToBigEndian(volume->GetBufferPointer(), count);
+  }
+  else
+  {
+    itk::ByteSwapper<TPixel>::SwapRangeFromSystemToLittleEndian(volume->GetBufferPointer(), count);
+  }
   return volume;
 }
 
