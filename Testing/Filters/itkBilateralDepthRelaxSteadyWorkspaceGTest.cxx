@@ -89,7 +89,7 @@ CountSolve(unsigned int width, unsigned int height, unsigned int threads, bool t
 }
 } // namespace
 
-// The documented figure (the header's "about 94 bytes per pixel at 512 x 1024") and the function agree with what a
+// The documented figure (the header's "about 95.5 bytes per pixel at 512 x 1024") and the function agree with what a
 // workspace holds and with the solve's peak, within 3 %, whichever path a solve takes: the run-off phantom's solves
 // end on their own grid, from the input; the thoracic phantom's (at 512 x 1024 and 256 x 768) start again from the
 // coarser grids, whose arrays lie in the image's grid's scratch arrays. A second solve on the same workspace
@@ -115,7 +115,7 @@ TEST(BilateralDepthRelaxSteadyWorkspace, WorkspaceBytesMatchTheAllocatedBytes)
         if (size.first == 512 && size.second == 1024)
         {
           EXPECT_EQ(counted.Grids > 1, thorax) << "the path the phantom's map takes (docs/steady-solver.md)";
-          EXPECT_NEAR(predicted / pixels, 94.0, 1.0) << "the header's figure";
+          EXPECT_NEAR(predicted / pixels, 95.5, 1.0) << "the header's figure";
         }
       }
     }

@@ -147,6 +147,45 @@ Field::Store(const float * depth, const unsigned char * fixed, float * relaxed) 
 }
 
 std::uint64_t
+Field::WeightRowSignature(long y)
+{
+  const long row = At(0, y);
+  return Rows().WeightRow(WeightRight + row,
+                          WeightDown + row,
+                          Depth + row,
+                          y + 1 < Height ? Depth + row + Stride : nullptr,
+                          Scale,
+                          Isotropic,
+                          Width);
+}
+
+void
+Field::AssembleRow(long y, bool hessian)
+{
+  const long row = At(0, y);
+  const long s = Stride;
+  Level &    l = Finest;
+  (hessian ? Rows().AssembleOperatorAndHessianRow : Rows().AssembleOperatorRow)(l.C + row,
+                                                                                l.E + row,
+                                                                                l.N + row,
+                                                                                HessianC + row,
+                                                                                HessianE + row,
+                                                                                HessianN + row,
+                                                                                Residual + row,
+                                                                                Depth + row,
+                                                                                Depth + row + s,
+                                                                                Depth + row - s,
+                                                                                Active + row,
+                                                                                Active + row + s,
+                                                                                WeightRight + row,
+                                                                                WeightDown + row,
+                                                                                WeightDown + row - s,
+                                                                                TwiceAnisotropy,
+                                                                                Width);
+  m_Buffers.RowMaxima[static_cast<std::size_t>(y)] = Rows().RowMaximumOverDiagonal(Residual + row, l.C + row, Width);
+}
+
+std::uint64_t
 Field::ComputeWeights()
 {
   std::vector<std::uint64_t> & signatures = m_Buffers.RowSignatures;
@@ -156,15 +195,7 @@ Field::ComputeWeights()
                   {
                     for (long y = y0; y < y1; ++y)
                     {
-                      const long row = At(0, y);
-                      signatures[static_cast<std::size_t>(y)] =
-                        Rows().WeightRow(WeightRight + row,
-                                         WeightDown + row,
-                                         Depth + row,
-                                         y + 1 < Height ? Depth + row + Stride : nullptr,
-                                         Scale,
-                                         Isotropic,
-                                         Width);
+                      signatures[static_cast<std::size_t>(y)] = WeightRowSignature(y);
                     }
                   });
   std::uint64_t signature = 0;
@@ -178,38 +209,31 @@ Field::ComputeWeights()
 double
 Field::Assemble(bool hessian)
 {
-  Level &               l = Finest;
-  std::vector<double> & maxima = m_Buffers.RowMaxima;
-  const long            s = Stride;
-  m_Bands.ForRows(
-    Height,
-    true,
-    [&](long y0, long y1)
-    {
-      for (long y = y0; y < y1; ++y)
-      {
-        const long row = At(0, y);
-        (hessian ? Rows().AssembleOperatorAndHessianRow : Rows().AssembleOperatorRow)(l.C + row,
-                                                                                      l.E + row,
-                                                                                      l.N + row,
-                                                                                      HessianC + row,
-                                                                                      HessianE + row,
-                                                                                      HessianN + row,
-                                                                                      Residual + row,
-                                                                                      Depth + row,
-                                                                                      Depth + row + s,
-                                                                                      Depth + row - s,
-                                                                                      Active + row,
-                                                                                      Active + row + s,
-                                                                                      WeightRight + row,
-                                                                                      WeightDown + row,
-                                                                                      WeightDown + row - s,
-                                                                                      TwiceAnisotropy,
-                                                                                      Width);
-        maxima[static_cast<std::size_t>(y)] = Rows().RowMaximumOverDiagonal(Residual + row, l.C + row, Width);
-      }
-    });
-  return *std::max_element(maxima.begin(), maxima.end());
+  m_Bands.ForRows(Height,
+                  true,
+                  [&](long y0, long y1)
+                  {
+                    for (long y = y0; y < y1; ++y)
+                    {
+                      AssembleRow(y, hessian);
+                    }
+                  });
+  return *std::max_element(m_Buffers.RowMaxima.begin(), m_Buffers.RowMaxima.end());
+}
+
+bool
+Field::ReassembleRows(long first, long last, bool hessian)
+{
+  bool samePattern = true;
+  for (long y = std::max(first - 1, 0L); y <= std::min(last, Height - 1); ++y)
+  {
+    samePattern = WeightRowSignature(y) == m_Buffers.RowSignatures[static_cast<std::size_t>(y)] && samePattern;
+  }
+  for (long y = std::max(first - 1, 0L); y <= std::min(last + 1, Height - 1); ++y)
+  {
+    AssembleRow(y, hessian);
+  }
+  return samePattern;
 }
 
 double

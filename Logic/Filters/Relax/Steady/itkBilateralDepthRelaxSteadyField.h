@@ -89,6 +89,13 @@ public:
   double
   Assemble(bool hessian);
 
+  /** ComputeWeights and Assemble(\a hessian) again where only the depths of rows [\a first, \a last] changed: the
+   * weights of rows first - 1 to last, the operator and residual of rows first - 1 to last + 1 (an edge reaches one
+   * row further), the same values as both on the whole grid. Returns whether the pattern of vanishing weights of those
+   * rows is the one ComputeWeights last signed (the floating regions are then those classified). */
+  bool
+  ReassembleRows(long first, long last, bool hessian);
+
   /** The energy change, times 2a, when the depths move by \a step times the correction Delta. Reads the weights
    * ComputeWeights last stored: they must be those of the current depths (as in every outer iteration's step). */
   double
@@ -134,6 +141,13 @@ public:
   float *     Saved;
 
 private:
+  /** Row \a y's weights (WeightRow) and their vanishing-weight signature. */
+  std::uint64_t
+  WeightRowSignature(long y);
+  /** Row \a y of Assemble, with its maximum into RowMaxima. */
+  void
+  AssembleRow(long y, bool hessian);
+
   FieldBuffers & m_Buffers;
   Bands &        m_Bands;
 };

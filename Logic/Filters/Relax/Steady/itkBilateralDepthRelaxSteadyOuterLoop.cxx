@@ -47,8 +47,9 @@ OuterLoop::Run(double                   tolerance,
     {
       UpdateWeightsAndRegions();
     }
-    // The Hessian while Newton steps go on; an outer iteration that turns to them below assembles it then.
-    const double residual = m_Field.Assemble(m_Newton);
+    // The Hessian while Newton steps go on; an outer iteration that turns to them below assembles it then. Where only
+    // a few pixels are left above the tolerance, they are settled on their own, not in another outer iteration.
+    const double residual = SettleStragglers(m_Field, m_Stragglers, m_Field.Assemble(m_Newton), tolerance, m_Newton);
     m_Report.Residual = residual;
     m_Report.OuterIterations = outer;
     if (outer == 0)

@@ -6,6 +6,7 @@
 #define itkBilateralDepthRelaxSteadyOuterLoop_h
 
 #include "itkBilateralDepthRelaxSteadyCorrection.h"
+#include "itkBilateralDepthRelaxSteadyStragglers.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -61,10 +62,11 @@ public:
   /** A Newton step that raises the energy is tried at this fraction of its length before the search (SearchStep). */
   static constexpr float NewtonBacktrack = 0.5f;
 
-  OuterLoop(Field & field, Multigrid & multigrid, Correction & correction)
+  OuterLoop(Field & field, Multigrid & multigrid, Correction & correction, StragglerBuffers & stragglers)
     : m_Field(field)
     , m_Multigrid(multigrid)
     , m_Correction(correction)
+    , m_Stragglers(stragglers)
   {
   }
 
@@ -104,6 +106,7 @@ private:
   Field &       m_Field;
   Multigrid &   m_Multigrid;
   Correction &  m_Correction;
+  StragglerBuffers & m_Stragglers;
   Report        m_Report;
   std::uint64_t m_Signature{ 0 };
   bool          m_Rebuild{ true };

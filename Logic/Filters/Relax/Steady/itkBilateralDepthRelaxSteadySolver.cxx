@@ -11,6 +11,7 @@
 #include "itkBilateralDepthRelaxSteadyMultigrid.h"
 #include "itkBilateralDepthRelaxSteadyNested.h"
 #include "itkBilateralDepthRelaxSteadyOuterLoop.h"
+#include "itkBilateralDepthRelaxSteadyStragglers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,7 @@ struct BilateralDepthRelaxSteadySolver::Workspace::Buffers
   Steady::BandBuffers          Bands;
   Steady::MultigridBuffers     Multigrid;
   Steady::FieldBuffers         Field;
+  Steady::StragglerBuffers     Stragglers;
   Steady::Lender               Lent;
   Steady::Array<float>         CoarseDepth;
   Steady::Array<unsigned char> CoarseFixed;
@@ -88,6 +90,8 @@ GridRowBytes(long w, long h, unsigned int threads)
   bytes += 4 * stride * sizeof(float) * Steady::Bands::TeamSize(threads, h);
   // The floating regions' runs: one per row where no weight within a row vanishes (more where some do).
   bytes += height * (sizeof(Steady::RowRun) + sizeof(std::int32_t) + 4 * sizeof(char) + 2 * sizeof(double));
+  // The last few pixels' windows.
+  bytes += Steady::StragglerBuffers::BytesFor(w, h);
   return bytes;
 }
 
@@ -128,10 +132,11 @@ SolveGrid(unsigned int                                              coarser,
   Steady::Multigrid  multigrid(buffers.Multigrid, bands, w, h, lender);
   Steady::Field      field(buffers.Field, bands, multigrid.Finest(), w, h, anisotropy, lender);
   Steady::Correction correction(field, multigrid, bands);
+  buffers.Stragglers.Reserve(w, h);
   field.Load(depth, fixed);
   // From the input first: where lagged weights converge fast (no depth step near the kernel's inflection), that is
   // the whole solve, as before nested iteration.
-  auto outcome = Steady::OuterLoop(field, multigrid, correction)
+  auto outcome = Steady::OuterLoop(field, multigrid, correction, buffers.Stragglers)
                    .Run(tolerance, ownProgress, settings.MaximumOuterIterations, {}, canNest);
   unsigned int fromInput = 0;
   unsigned int buildsFromInput = 0;
@@ -188,7 +193,7 @@ SolveGrid(unsigned int                                              coarser,
     field.Load(depth, fixed);
     const unsigned int left =
       settings.MaximumOuterIterations > fromInput ? settings.MaximumOuterIterations - fromInput : 0;
-    outcome = Steady::OuterLoop(field, multigrid, correction)
+    outcome = Steady::OuterLoop(field, multigrid, correction, buffers.Stragglers)
                 .Run(tolerance, ownProgress, left, { coarseRelaxed, coarseWidth, coarseHeight, &lent }, false);
   }
   Report result;
