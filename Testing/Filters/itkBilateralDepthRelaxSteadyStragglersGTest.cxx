@@ -144,8 +144,8 @@ TEST(BilateralDepthRelaxSteadyStragglers, AFewPixelsOffTheFixedPointAreSettledOn
 {
   // Five pixels 0.3 mm off the ramp: each and its four neighbours (0.3 / 4 mm) are above the tolerance, 25 pixels.
   const std::vector<std::pair<long, long>> raised{ { 10, 8 }, { 30, 20 }, { 20, 5 }, { 40, 28 }, { 12, 25 } };
-  Problem      problem(RampWidth, RampHeight, RampRaisedAt(raised, 0.3f), RampFixed());
-  const double before = problem.Field.Assemble(false);
+  Problem                                  problem(RampWidth, RampHeight, RampRaisedAt(raised, 0.3f), RampFixed());
+  const double                             before = problem.Field.Assemble(false);
   ASSERT_GT(before, 0.05) << "the raised pixels are far above the tolerance";
 
   const double after = problem.Settle(before);

@@ -63,23 +63,19 @@ Correction::Solve(double target, bool newton)
       break;
     }
     const float alpha = static_cast<float>(rz / curvature);
-    m_Bands.ForRows(m_Field.Height,
-                    true,
-                    [&](long y0, long y1)
-                    {
-                      for (long y = y0; y < y1; ++y)
-                      {
-                        const long row = m_Field.At(0, y);
-                        Rows().UpdateRow(m_Field.Delta + row,
-                                         m_Field.Residual + row,
-                                         m_Field.Direction + row,
-                                         m_Field.Z + row,
-                                         alpha,
-                                         width);
-                        maxima[static_cast<std::size_t>(y)] =
-                          Rows().RowMaximumOverDiagonal(m_Field.Residual + row, l.C + row, width);
-                      }
-                    });
+    m_Bands.ForRows(
+      m_Field.Height,
+      true,
+      [&](long y0, long y1)
+      {
+        for (long y = y0; y < y1; ++y)
+        {
+          const long row = m_Field.At(0, y);
+          Rows().UpdateRow(
+            m_Field.Delta + row, m_Field.Residual + row, m_Field.Direction + row, m_Field.Z + row, alpha, width);
+          maxima[static_cast<std::size_t>(y)] = Rows().RowMaximumOverDiagonal(m_Field.Residual + row, l.C + row, width);
+        }
+      });
     if (*std::max_element(maxima.begin(), maxima.end()) <= target)
     {
       break;

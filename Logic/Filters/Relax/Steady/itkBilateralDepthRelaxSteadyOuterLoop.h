@@ -103,16 +103,16 @@ private:
   void
   SearchStep(double target);
 
-  Field &       m_Field;
-  Multigrid &   m_Multigrid;
-  Correction &  m_Correction;
+  Field &            m_Field;
+  Multigrid &        m_Multigrid;
+  Correction &       m_Correction;
   StragglerBuffers & m_Stragglers;
-  Report        m_Report;
-  std::uint64_t m_Signature{ 0 };
-  bool          m_Rebuild{ true };
-  bool          m_Newton{ false };
-  double        m_First{ 0.0 };
-  double        m_Done{ 0.0 };
+  Report             m_Report;
+  std::uint64_t      m_Signature{ 0 };
+  bool               m_Rebuild{ true };
+  bool               m_Newton{ false };
+  double             m_First{ 0.0 };
+  double             m_Done{ 0.0 };
 };
 } // namespace itk::detail::BilateralDepthRelaxSteady
 

@@ -135,7 +135,8 @@ GatherWindows(const Field & field, StragglerBuffers & buffers)
       for (std::size_t k = from; k < buffers.Stragglers.size() && buffers.Stragglers[k].Y - StragglerRadius <= y; ++k)
       {
         const long x = buffers.Stragglers[k].X;
-        buffers.Columns.push_back({ std::max(x - StragglerRadius, 0L), std::min(x + StragglerRadius, field.Width - 1) });
+        buffers.Columns.push_back(
+          { std::max(x - StragglerRadius, 0L), std::min(x + StragglerRadius, field.Width - 1) });
       }
       std::sort(buffers.Columns.begin(),
                 buffers.Columns.end(),
