@@ -235,6 +235,30 @@ DenseSolve(Dense a, std::vector<double> b)
   }
   return x;
 }
+
+/** Independent normal values from \a seed at the active points of \a l (in raster order), 0 at the others. */
+std::vector<double>
+RandomRightHandSide(const Steady::Level & l, unsigned int seed)
+{
+  std::mt19937                     generator(seed);
+  std::normal_distribution<double> normal;
+  std::vector<double>              b(static_cast<std::size_t>(l.Width * l.Height), 0.0);
+  for (long y = 0; y < l.Height; ++y)
+    for (long x = 0; x < l.Width; ++x)
+      b[Problem::Index(l, x, y)] = l.C[l.At(x, y)] > 0.0f ? normal(generator) : 0.0;
+  return b;
+}
+
+/** \a a with 1 on the diagonal of the inactive points, whose rows are 0: a non-singular system whose solution at the
+ * active points is that of the active points alone (the cycle keeps x 0 at the others). */
+Dense
+WithInactivePointsSolvable(Dense a)
+{
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a[i][i] == 0.0)
+      a[i][i] = 1.0;
+  return a;
+}
 } // namespace
 
 // A_c = P^T A P from the 5-point finest level to the first coarse level, and from that 9-point level to the next.
@@ -306,23 +330,13 @@ TEST(BilateralDepthRelaxSteadyMultigrid, VCycleContractsTheError)
                           Case{ 0.1, 1e-3f, 1, 0.05f, 0.75 },
                           Case{ 0.1, 1e-3f, 3, 0.05f, 0.75 } })
   {
-    const unsigned int               threads = c.Threads;
-    Problem                          problem(37, 29, 4, c.Cuts, c.CutWeight, threads, c.Lightest);
-    Steady::Level &                  l = problem.Multigrid.Finest();
-    const Dense                      a = DenseOperator(l);
-    const long                       n = l.Width * l.Height;
-    std::mt19937                     generator(7);
-    std::normal_distribution<double> normal;
-    std::vector<double>              b(n, 0.0);
-    for (long y = 0; y < l.Height; ++y)
-      for (long x = 0; x < l.Width; ++x)
-        b[Problem::Index(l, x, y)] = l.C[l.At(x, y)] > 0.0f ? normal(generator) : 0.0;
-    // The inactive points' rows are 0: solve on the active ones, whose x the cycle keeps 0 elsewhere.
-    Dense active = a;
-    for (long i = 0; i < n; ++i)
-      if (a[i][i] == 0.0)
-        active[i][i] = 1.0;
-    const std::vector<double> solution = DenseSolve(active, b);
+    const unsigned int        threads = c.Threads;
+    Problem                   problem(37, 29, 4, c.Cuts, c.CutWeight, threads, c.Lightest);
+    Steady::Level &           l = problem.Multigrid.Finest();
+    const Dense               a = DenseOperator(l);
+    const long                n = l.Width * l.Height;
+    std::vector<double>       b = RandomRightHandSide(l, 7);
+    const std::vector<double> solution = DenseSolve(WithInactivePointsSolvable(a), b);
     problem.Multigrid.Build();
     std::vector<double> x(n, 0.0);
     auto                energyError = [&]()
@@ -535,18 +549,10 @@ TEST(BilateralDepthRelaxSteadyMultigrid, LineCoupledAlongItselfOnlyIsNotInterpol
     EXPECT_EQ(c.YB[k], expected) << "fine point (" << 2 * I << ", " << lineRow << ")";
   }
 
-  Steady::Level &                  l = problem.Multigrid.Finest();
-  const long                       n = l.Width * l.Height;
-  Dense                            a = DenseOperator(l);
-  std::mt19937                     generator(13);
-  std::normal_distribution<double> normal;
-  std::vector<double>              b(n, 0.0);
-  for (long y = 0; y < l.Height; ++y)
-    for (long x = 0; x < l.Width; ++x)
-      b[Problem::Index(l, x, y)] = l.C[l.At(x, y)] > 0.0f ? normal(generator) : 0.0;
-  for (long i = 0; i < n; ++i)
-    if (a[i][i] == 0.0)
-      a[i][i] = 1.0;
+  Steady::Level &           l = problem.Multigrid.Finest();
+  const long                n = l.Width * l.Height;
+  const Dense               a = WithInactivePointsSolvable(DenseOperator(l));
+  const std::vector<double> b = RandomRightHandSide(l, 13);
   std::vector<double>       x;
   const int                 iterations = PreconditionedIterations(problem, a, b, 1e-6, x);
   const std::vector<double> solution = DenseSolve(a, b);
