@@ -140,8 +140,7 @@ GatherWindows(const Field & field, StragglerBuffers & buffers)
       }
       std::sort(buffers.Columns.begin(),
                 buffers.Columns.end(),
-                [](const StragglerBuffers::RowRange & a, const StragglerBuffers::RowRange & b)
-                { return a.First < b.First; });
+                [](const StragglerBuffers::Span & a, const StragglerBuffers::Span & b) { return a.First < b.First; });
       long next = 0; // the first column not yet taken on this row
       for (const auto & columns : buffers.Columns)
       {
@@ -210,7 +209,7 @@ std::size_t
 StragglerBuffers::BytesFor(long width, long height)
 {
   const std::size_t stragglers = MostStragglers(width, height);
-  return stragglers * (sizeof(Straggler) + 2 * sizeof(RowRange)) +
+  return stragglers * (sizeof(Straggler) + 2 * sizeof(Span)) +
          MostWindowPixels(width, height) * (sizeof(long) + sizeof(double));
 }
 
@@ -223,8 +222,8 @@ StragglerBuffers::Reserve(long width, long height)
   if (Stragglers.capacity() != stragglers || Window.capacity() != pixels)
   {
     Stragglers = std::vector<Straggler>();
-    Ranges = std::vector<RowRange>();
-    Columns = std::vector<RowRange>();
+    Ranges = std::vector<Span>();
+    Columns = std::vector<Span>();
     Window = std::vector<long>();
     Saved = std::vector<double>();
     Stragglers.reserve(stragglers);

@@ -49,15 +49,17 @@ struct StragglerBuffers
     long X;
     long Y;
   };
-  struct RowRange
+  /** Rows or columns First to Last, both included. */
+  struct Span
   {
     long First;
     long Last;
   };
   std::vector<Straggler> Stragglers;
-  std::vector<RowRange>  Ranges;
+  /** The runs of rows the windows cover. */
+  std::vector<Span> Ranges;
   /** Within one row: the stragglers' windows' column ranges. */
-  std::vector<RowRange> Columns;
+  std::vector<Span> Columns;
   /** The windows' active pixels (index in the padded arrays), each once, in raster order, and their depths before. */
   std::vector<long>   Window;
   std::vector<double> Saved;
