@@ -223,6 +223,12 @@ TEST_F(ViewerLayoutTest, At800x500TheCPRViewKeepsItsWidthAndNoTextLiesOverAnImag
     EXPECT_LE(Window().minimumSizeHint().width(), size.width());
     EXPECT_GE(Window().GetCPRView()->width(), ViewerLayout::MinimumCPRWidth);
     EXPECT_GE(Window().GetCPRView()->height(), 150);
+    // The CPR view's upper annotations (angle, up, window; size, spacing) side by side, neither over the other.
+    ASSERT_TRUE(WaitUntilSettled(Window()));
+    const auto corners = Window().GetCPRView()->GetCornerTextBoxes();
+    EXPECT_LT(corners[0][1], corners[1][0]) << "the upper left text ends at x = " << corners[0][1]
+                                            << " px, the upper right one starts at x = " << corners[1][0] << " px";
+    EXPECT_GT(corners[1][1] - corners[1][0], 40.0) << "the upper right text is drawn";
     VesselPathPanel * panel = Window().GetPathPanel();
     ASSERT_TRUE(panel->isVisible());
     // The panel gets at least what its parts need, so its layout never stacks them over each other.
@@ -263,6 +269,35 @@ TEST_F(ViewerLayoutTest, At800x500TheCPRViewKeepsItsWidthAndNoTextLiesOverAnImag
                            .arg(size.height());
     EXPECT_TRUE(WriteWidgetPNG(&Window(), name).isEmpty());
   }
+}
+
+// A fresh start at 800 x 500 gives the CPR view its minimum width (240 px): the upper left annotation's widest line
+// and the upper right block no longer fit side by side at 14 points, and the font shrinks until they do.
+TEST_F(ViewerLayoutTest, TheCPRViewsUpperAnnotationsStayApartAtItsNarrowest)
+{
+  Window().resize(QSize(800, 500));
+  QSplitter * splitter = MainSplitter(Window());
+  ASSERT_NE(splitter, nullptr);
+  QList<int> sizes = splitter->sizes();
+  const int  spare = sizes[ViewerLayout::CPR] - ViewerLayout::MinimumCPRWidth;
+  sizes[ViewerLayout::CPR] -= spare;
+  sizes[ViewerLayout::Panel] += spare;
+  splitter->setSizes(sizes);
+  ASSERT_TRUE(WaitUntil(
+    [&]
+    {
+      QApplication::processEvents();
+      return Window().GetCPRView()->width() == ViewerLayout::MinimumCPRWidth;
+    },
+    10.0))
+    << "the CPR view is " << Window().GetCPRView()->width() << " px wide";
+  Window().GetPanel()->SetAngle(30.0, RequestKind::Final); // a new annotation at that width
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  const auto corners = Window().GetCPRView()->GetCornerTextBoxes();
+  EXPECT_LT(corners[0][1], corners[1][0]) << "the upper left text ends at x = " << corners[0][1]
+                                          << " px, the upper right one starts at x = " << corners[1][0] << " px";
+  EXPECT_GT(corners[1][1] - corners[1][0], 40.0) << "the upper right text is drawn";
+  EXPECT_GT(corners[0][3] - corners[0][2], 30.0) << "three lines of the upper left text, still readable";
 }
 
 TEST_F(ViewerLayoutTest, HomePutsThe3DCameraAlongTheViewDirectionAtAnyAngle)

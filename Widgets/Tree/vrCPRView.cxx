@@ -31,6 +31,7 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkCoordinate.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkUnsignedCharArray.h>
@@ -50,6 +51,9 @@ constexpr double LabelLayerZ = -0.2;
 constexpr double MaskLayerZ = -0.3;
 constexpr double LineLayerZ = -0.5;
 constexpr double CameraDistance = 1000.0;
+/** The upper corners' font size, and the smallest it shrinks to in a narrow view (FitCornerTexts). */
+constexpr int CornerFontSize = 14;
+constexpr int MinimumCornerFontSize = 9;
 
 /** Shares the pixels of a one-slice output node, placed at world (origin + i sx, origin + j sy). */
 void
@@ -251,7 +255,7 @@ CPRView::CPRView(QWidget * parent)
   {
     *corner = vtkSmartPointer<vtkTextActor>::New();
     vtkTextProperty * text = (*corner)->GetTextProperty();
-    text->SetFontSize(14);
+    text->SetFontSize(CornerFontSize);
     text->SetColor(0.95, 0.95, 0.95);
     text->ShadowOn();
     text->SetVerticalJustificationToTop();
@@ -605,12 +609,53 @@ CPRView::UpdateAnnotation()
   right << view.GetSize()[0] << " x " << view.GetSize()[1] << " px\n"
         << Format(view.GetSpacing()[0], 2) << " x " << Format(view.GetSpacing()[1], 2) << " mm";
   m_UpperRightText->SetInput(right.str().c_str());
+  FitCornerTexts();
   const unsigned int factor = m_Result->PreviewFactor;
   m_PreviewText->SetVisibility(factor > 1);
   if (factor > 1)
   {
     m_PreviewText->SetInput(("preview (1/" + std::to_string(factor) + " resolution)").c_str());
   }
+}
+
+/** The upper corners' font: the largest size, from CornerFontSize down to MinimumCornerFontSize, at which the two
+ * blocks fit side by side in the view's width. A narrow view (about 240 px at 800 x 500) would otherwise draw the
+ * right block over the left one's widest line. */
+void
+CPRView::FitCornerTexts()
+{
+  if (!m_Renderer->GetRenderWindow())
+  {
+    return;
+  }
+  // Between the blocks' 1 % margins, and a gap of 8 px.
+  const double room = 0.98 * m_Widget->width() * m_Widget->devicePixelRatioF() - 8.0;
+  for (int size = CornerFontSize; size >= MinimumCornerFontSize; --size)
+  {
+    m_UpperLeftText->GetTextProperty()->SetFontSize(size);
+    m_UpperRightText->GetTextProperty()->SetFontSize(size);
+    const auto boxes = GetCornerTextBoxes();
+    if ((boxes[0][1] - boxes[0][0]) + (boxes[1][1] - boxes[1][0]) <= room)
+    {
+      return;
+    }
+  }
+}
+
+std::array<std::array<double, 4>, 2>
+CPRView::GetCornerTextBoxes() const
+{
+  std::array<std::array<double, 4>, 2> boxes{};
+  std::size_t                          k = 0;
+  for (vtkTextActor * text : { m_UpperLeftText.Get(), m_UpperRightText.Get() })
+  {
+    // The box about the text's anchor, moved to where the anchor is in the view.
+    std::array<double, 4> & box = boxes[k++];
+    text->GetBoundingBox(m_Renderer, box.data());
+    const int * anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(m_Renderer);
+    box = { box[0] + anchor[0], box[1] + anchor[0], box[2] + anchor[1], box[3] + anchor[1] };
+  }
+  return boxes;
 }
 
 QString
@@ -879,6 +924,7 @@ CPRView::eventFilter(QObject * watched, QEvent * event)
       {
         FitImage();
       }
+      FitCornerTexts();
       return false;
     default:
       return false;

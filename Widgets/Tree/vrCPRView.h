@@ -182,6 +182,10 @@ public:
    * vr::DescribeFilterSettings. */
   QString
   GetCaption(bool unfiltered) const;
+  /** \return the upper left and upper right annotations' rectangles in the view's display pixels (x from the left, y
+   * from the bottom, as VTK gives them: xmin, xmax, ymin, ymax). */
+  std::array<std::array<double, 4>, 2>
+  GetCornerTextBoxes() const;
   /** \return seconds the latest vtkRenderWindow::Render() of a new image took. */
   double
   GetLastRenderSeconds() const
@@ -247,6 +251,8 @@ private:
   UpdateOverlays();
   void
   UpdateAnnotation();
+  void
+  FitCornerTexts();
   void
   UpdateCenterlines();
   void
