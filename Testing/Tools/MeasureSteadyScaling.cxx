@@ -144,6 +144,34 @@ Median(std::vector<double> values)
 }
 } // namespace
 
+/** \a text as a positive whole number, or an error that names \a what and the text. */
+unsigned int
+PositiveCount(const std::string & text, const std::string & what)
+{
+  std::size_t   used = 0;
+  unsigned long value = 0;
+  try
+  {
+    value = std::stoul(text, &used);
+  }
+  catch (const std::exception &)
+  {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || value == 0 || value > 1000000)
+  {
+    throw std::invalid_argument(what + " must be a positive whole number, not '" + text + "'");
+  }
+  return static_cast<unsigned int>(value);
+}
+
+constexpr const char * Usage =
+  "usage: MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] [--jacobi] case:W "
+  "...\n"
+  "  case: thorax, runoff, aorta, aortailiacs or aorta@ANGLE (degrees), at W x 2W pixels;\n"
+  "        fullsize, with W one of the full-size views' widths (253, 505, 1010)\n"
+  "  a: in mm^-2, default 1/9 (J = 3 mm)\n";
+
 int
 main(int argc, char * argv[])
 {
@@ -159,11 +187,11 @@ main(int argc, char * argv[])
       const std::string argument = argv[k];
       if (argument == "--repeat" && k + 1 < argc)
       {
-        repeat = static_cast<unsigned int>(std::stoul(argv[++k]));
+        repeat = PositiveCount(argv[++k], "--repeat");
       }
       else if (argument == "--threads" && k + 1 < argc)
       {
-        threads = static_cast<unsigned int>(std::stoul(argv[++k]));
+        threads = PositiveCount(argv[++k], "--threads");
       }
       else if (argument == "--anisotropy" && k + 1 < argc)
       {
@@ -177,10 +205,25 @@ main(int argc, char * argv[])
       {
         jacobi = true;
       }
+      else if (argument == "--help" || argument == "-h")
+      {
+        std::cout << Usage;
+        return EXIT_SUCCESS;
+      }
+      else if (argument.rfind("-", 0) == 0 || argument.find(':') == std::string::npos)
+      {
+        std::cerr << "error: '" << argument << "' is neither an option nor a case:W\n" << Usage;
+        return EXIT_FAILURE;
+      }
       else
       {
         cases.push_back(argument);
       }
+    }
+    if (cases.empty())
+    {
+      std::cerr << "error: no case given\n" << Usage;
+      return EXIT_FAILURE;
     }
     std::cout
       << "| case | W x H | start | median ms (n) | median CPU ms | fine outer | coarse outer | grids | V-cycles | "
@@ -191,7 +234,7 @@ main(int argc, char * argv[])
     {
       const auto          colon = item.find(':');
       const std::string   name = item.substr(0, colon);
-      const unsigned int  width = static_cast<unsigned int>(std::stoul(item.substr(colon + 1)));
+      const unsigned int  width = PositiveCount(item.substr(colon + 1), "the width of " + item);
       const Map           map = MakeMap(name, width);
       Solver::Workspace   input, nested;
       std::vector<double> times[2];
