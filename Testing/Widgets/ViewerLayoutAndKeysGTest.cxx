@@ -298,6 +298,31 @@ TEST_F(ViewerLayoutTest, TheCPRViewsUpperAnnotationsStayApartAtItsNarrowest)
                                           << " px, the upper right one starts at x = " << corners[1][0] << " px";
   EXPECT_GT(corners[1][1] - corners[1][0], 40.0) << "the upper right text is drawn";
   EXPECT_GT(corners[0][3] - corners[0][2], 30.0) << "three lines of the upper left text, still readable";
+  // The captions under the images (two or three lines of filter settings) stay inside the view, apart, and readable,
+  // in each comparison.
+  CPRView *    cpr = Window().GetCPRView();
+  QWidget *    view = cpr->GetRenderWidget();
+  const double viewWidth = view->width() * view->devicePixelRatioF();
+  for (const auto comparison : { CPRComparison::Filtered, CPRComparison::Split, CPRComparison::SideBySide })
+  {
+    SCOPED_TRACE("comparison " + std::to_string(static_cast<int>(comparison)));
+    cpr->SetComparison(comparison);
+    QApplication::processEvents();
+    const auto caption = cpr->GetCaptionBox(false);
+    EXPECT_LE(caption[1], viewWidth) << "the caption runs from x = " << caption[0] << " to " << caption[1]
+                                     << " px in a view " << viewWidth << " px wide";
+    EXPECT_GE(caption[0], 0.0) << "the caption starts left of the view";
+    // Two lines at MinimumCaptionFontSize (10 points) are 19 px high, one line 9 or 10.
+    EXPECT_GT(caption[3] - caption[2], 17.0) << "two lines of the caption or more";
+    EXPECT_GE(caption[2], 0.0) << "the caption's last line is below the view";
+    if (comparison == CPRComparison::SideBySide)
+    {
+      const auto unfiltered = cpr->GetCaptionBox(true);
+      EXPECT_GE(unfiltered[0], 0.0) << "the unfiltered caption starts left of the view";
+      EXPECT_LT(unfiltered[1], caption[0]) << "the unfiltered caption ends at x = " << unfiltered[1]
+                                           << " px, the filtered one starts at x = " << caption[0] << " px";
+    }
+  }
 }
 
 TEST_F(ViewerLayoutTest, HomePutsThe3DCameraAlongTheViewDirectionAtAnyAngle)

@@ -54,6 +54,11 @@ constexpr double CameraDistance = 1000.0;
 /** The upper corners' font size, and the smallest it shrinks to in a narrow view (FitCornerTexts). */
 constexpr int CornerFontSize = 14;
 constexpr int MinimumCornerFontSize = 9;
+/** The caption's font size, and the smallest it shrinks to where moving it left is not enough (FitCaption). */
+constexpr int CaptionFontSize = 15;
+constexpr int MinimumCaptionFontSize = 10;
+/** Display pixels kept free between a caption and the view's edges. */
+constexpr double CaptionMargin = 4.0;
 
 /** Shares the pixels of a one-slice output node, placed at world (origin + i sx, origin + j sy). */
 void
@@ -158,7 +163,7 @@ struct CPRView::Pane
     // The identity on bytes: the grey values are MapToGrey's.
     ImageActor->GetProperty()->SetColorWindow(255.0);
     ImageActor->GetProperty()->SetColorLevel(127.5);
-    Caption->GetTextProperty()->SetFontSize(15);
+    Caption->GetTextProperty()->SetFontSize(CaptionFontSize);
     Caption->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
     Caption->GetTextProperty()->ShadowOn();
     Caption->GetTextProperty()->SetVerticalJustificationToTop();
@@ -474,19 +479,23 @@ CPRView::UpdatePanes()
   if (hasImage)
   {
     // Two short lines, so that the caption fits under the image in the side-by-side comparison too.
-    std::string filtered = "bilateral: " + DescribeFilterSettings(m_Result->Parameters, "\n");
+    const std::string filtered = "bilateral: " + DescribeFilterSettings(m_Result->Parameters, "\n");
+    m_CaptionForms = { filtered };
     if (m_Comparison == CPRComparison::Split)
     {
-      // One caption for both halves: two captions side by side under half-images overlap.
-      filtered = std::string("left: ") + UnfilteredSettingsText + "; right: " + filtered;
+      // One caption for both halves: two captions side by side under half-images overlap. Each half's settings on a
+      // line of its own where the view is too narrow for the shorter form (FitCaptions).
+      const std::string halves = std::string("left: ") + UnfilteredSettingsText + ";";
+      m_CaptionForms = { halves + " right: " + filtered, halves + "\nright: " + filtered };
     }
-    m_Filtered->Caption->SetInput(filtered.c_str());
+    m_Filtered->Caption->SetInput(m_CaptionForms.front().c_str());
     m_Unfiltered->Caption->SetInput(UnfilteredSettingsText);
     m_Unfiltered->Caption->SetVisibility(showUnfiltered && m_Comparison != CPRComparison::Split);
     // Below the image, where no corner annotation sits.
     const double below = (m_FrameSize[1] + 0.5) * m_FrameSpacing[1];
     m_Filtered->Caption->GetPositionCoordinate()->SetValue(0.0, below, 0.0);
     m_Unfiltered->Caption->GetPositionCoordinate()->SetValue(UnfilteredOffset(), below, 0.0);
+    FitCaptions();
   }
   UpdateAnnotation();
 }
@@ -642,6 +651,89 @@ CPRView::FitCornerTexts()
   }
 }
 
+/** The captions start under their images' left edges. Where they would leave the view or run into each other (a
+ * narrow view: at 240 px the run-off phantom's caption lost "1" of "w = 1", and side by side the two captions
+ * overlapped), they move left, as far as the view's left margin, and only then shrink their font, from
+ * CaptionFontSize down to MinimumCaptionFontSize; the split view's caption then puts each half's settings on a line
+ * of its own. The captions are placed from the right: each as far right as its image, the one to its right and the
+ * view allow. */
+void
+CPRView::FitCaptions()
+{
+  if (!m_Renderer->GetRenderWindow() || m_FrameSize[1] == 0 || m_CaptionForms.empty())
+  {
+    return;
+  }
+  std::vector<Pane *> panes;
+  if (m_Comparison == CPRComparison::SideBySide)
+  {
+    panes.push_back(m_Unfiltered.get());
+  }
+  panes.push_back(m_Filtered.get());
+  const double below = (m_FrameSize[1] + 0.5) * m_FrameSpacing[1];
+  const double right = m_Renderer->GetSize()[0] - CaptionMargin;
+  // World units per display pixel along x (a parallel projection; world x runs to the right on screen).
+  const double perPixel =
+    2.0 * m_Renderer->GetActiveCamera()->GetParallelScale() / std::max(1, m_Renderer->GetSize()[1]);
+  std::vector<double> start(panes.size());
+  auto                place = [&](int size)
+  {
+    // Right to left: each caption ends before the next one (a gap of CaptionMargin) and before the view's edge.
+    double limit = right;
+    bool   fitsBelow = true;
+    for (std::size_t k = panes.size(); k-- > 0;)
+    {
+      vtkTextActor * caption = panes[k]->Caption;
+      caption->GetTextProperty()->SetFontSize(size);
+      caption->GetPositionCoordinate()->SetValue(panes[k]->Offset, below, 0.0);
+      const auto box = CaptionBoxOf(caption);
+      start[k] = std::min(box[0], limit - (box[1] - box[0]));
+      limit = start[k] - CaptionMargin;
+      fitsBelow = fitsBelow && box[2] >= 0.0; // display y runs up from the view's bottom
+    }
+    return start.front() >= CaptionMargin && fitsBelow;
+  };
+  auto apply = [&]()
+  {
+    for (std::size_t k = 0; k < panes.size(); ++k)
+    {
+      vtkTextActor * caption = panes[k]->Caption;
+      const double   natural = CaptionBoxOf(caption)[0];
+      const double   moved = std::max(start[k], CaptionMargin);
+      caption->GetPositionCoordinate()->SetValue(panes[k]->Offset + (moved - natural) * perPixel, below, 0.0);
+    }
+  };
+  for (const std::string & form : m_CaptionForms)
+  {
+    m_Filtered->Caption->SetInput(form.c_str());
+    for (int size = CaptionFontSize; size >= MinimumCaptionFontSize; --size)
+    {
+      if (place(size))
+      {
+        apply();
+        return;
+      }
+    }
+  }
+  // Nothing fits: the last form at the smallest size, from the left margin.
+  apply();
+}
+
+std::array<double, 4>
+CPRView::CaptionBoxOf(vtkTextActor * caption) const
+{
+  std::array<double, 4> box{};
+  caption->GetBoundingBox(m_Renderer, box.data());
+  const int * anchor = caption->GetPositionCoordinate()->GetComputedDisplayValue(m_Renderer);
+  return { box[0] + anchor[0], box[1] + anchor[0], box[2] + anchor[1], box[3] + anchor[1] };
+}
+
+std::array<double, 4>
+CPRView::GetCaptionBox(bool unfiltered) const
+{
+  return CaptionBoxOf((unfiltered ? m_Unfiltered : m_Filtered)->Caption);
+}
+
 std::array<std::array<double, 4>, 2>
 CPRView::GetCornerTextBoxes() const
 {
@@ -698,6 +790,7 @@ CPRView::FitImage()
   camera->SetParallelScale(halfHeight);
   camera->SetClippingRange(1.0, 2.0 * CameraDistance);
   m_ZoomedByUser = false;
+  FitCaptions();
 }
 
 void

@@ -14,6 +14,8 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "itkPoint.h"
 
@@ -186,6 +188,9 @@ public:
    * from the bottom, as VTK gives them: xmin, xmax, ymin, ymax). */
   std::array<std::array<double, 4>, 2>
   GetCornerTextBoxes() const;
+  /** \return the filtered (or unfiltered) image's caption's rectangle, in the same display pixels. */
+  std::array<double, 4>
+  GetCaptionBox(bool unfiltered) const;
   /** \return seconds the latest vtkRenderWindow::Render() of a new image took. */
   double
   GetLastRenderSeconds() const
@@ -254,6 +259,10 @@ private:
   void
   FitCornerTexts();
   void
+  FitCaptions();
+  std::array<double, 4>
+  CaptionBoxOf(vtkTextActor * caption) const;
+  void
   UpdateCenterlines();
   void
   UpdatePathMarker();
@@ -296,8 +305,10 @@ private:
   double        m_Level{ 200.0 };
   CPROverlays   m_Overlays;
   CPRComparison m_Comparison{ CPRComparison::Filtered };
-  PixelReadout  m_Readout;
-  double        m_LastRenderSeconds{ 0.0 };
+  /** The filtered caption's texts, the first tried first (FitCaptions). */
+  std::vector<std::string> m_CaptionForms;
+  PixelReadout             m_Readout;
+  double                   m_LastRenderSeconds{ 0.0 };
 
   // The drag in progress.
   Qt::MouseButton m_DragButton{ Qt::NoButton };
