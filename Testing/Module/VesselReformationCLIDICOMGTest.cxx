@@ -487,6 +487,30 @@ TEST(DICOMSeriesModule, AFalseTransferSyntaxIsNamed)
   }
 }
 
+// The one false claim GDCM reads through: a data set written with implicit VR under the Transfer Syntax UID of explicit
+// VR little-endian (GDCM parses it again with implicit VR). The file passes every check, so the series is read, the
+// same volume, with a warning naming the file (found by the DICOM fault campaign, seed 4, copy 750 of the run-off
+// phantom's series, which the reader had read without a word).
+TEST(DICOMSeriesModule, ExplicitVRClaimedOverImplicitVRDataIsReadWithAWarningNamingTheFile)
+{
+  CTSeriesOptions options;
+  options.Encoding.ExplicitVR = false;
+  const std::string folder = WriteSeries(
+    "implicit-claims-explicit",
+    [](std::vector<DICOMTestFile> & files)
+    { Named(files, "IM0009.dcm").Encoding.ClaimedTransferSyntax = "1.2.840.10008.1.2.1"; },
+    options);
+  const ModuleResult run = RunModule(folder, "implicit-claims-explicit");
+  ExpectRead(run);
+  EXPECT_TRUE(Contains(run.Module.Err,
+                       "warning: volume folder " + folder + ": the DICOM file " + InFolder(folder, "IM0009.dcm") +
+                         " declares explicit VR (Transfer Syntax UID \"1.2.840.10008.1.2.1\") but its data set is "
+                         "written with implicit VR"))
+    << run.Module.Err;
+  EXPECT_TRUE(Contains(run.Returned.at("inputWarnings"), InFolder(folder, "IM0009.dcm")));
+  EXPECT_EQ(SlicesThatDiffer(vr::ReadVolume(folder), TheScene().Volume, 0.0), std::vector<unsigned int>());
+}
+
 TEST(DICOMSeriesModule, SliceThicknessIsNoReasonToMoveOrDropASlice)
 {
   for (const std::string & value : { "0", "-1", "NaN", "removed", "25" })

@@ -74,6 +74,9 @@ struct DICOMFileAttributes
   std::map<std::uint32_t, std::string> Values;
   /** The patient and study (vr::DICOMAttribute keys), for the node the volume becomes. */
   std::map<std::string, std::string> Identity;
+  /** The file's Transfer Syntax UID says explicit VR, but GDCM found its data set written with implicit VR and read
+   * it so (a wrong file meta information that GDCM recovers from): said in a warning when the file is read. */
+  bool ImplicitUnderExplicitClaim{ false };
 
   /** \return the attribute's text, or none when the file lacks it. */
   std::optional<std::string>

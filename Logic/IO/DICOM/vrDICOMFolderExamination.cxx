@@ -100,6 +100,22 @@ IsImageStorageClass(const std::string & uid)
   return false;
 }
 
+/** Whether GDCM read \a file's data set with implicit VR although its Transfer Syntax UID declares explicit VR: where
+ * an explicit-VR parse fails, GDCM parses the data set again with implicit VR, and the elements read so carry no VR of
+ * their own (gdcm::VR::INVALID; their dictionary's VR applies). */
+bool
+ReadAsImplicitUnderExplicitClaim(const gdcm::File & file)
+{
+  const gdcm::DataSet & elements = file.GetDataSet();
+  if (!file.GetHeader().GetDataSetTransferSyntax().IsExplicit() || elements.IsEmpty())
+  {
+    return false;
+  }
+  return std::all_of(elements.Begin(),
+                     elements.End(),
+                     [](const gdcm::DataElement & element) { return element.GetVR() == gdcm::VR::INVALID; });
+}
+
 std::string
 Names(const std::vector<std::string> & paths)
 {
@@ -188,6 +204,7 @@ ExamineDICOMFolder(const std::string & folder, const std::function<void(const st
     {
       file.Values[DICOMTag::TransferSyntaxUID.Key()] = *syntax;
     }
+    file.ImplicitUnderExplicitClaim = ReadAsImplicitUnderExplicitClaim(reader.GetFile());
     for (const DICOMAttributeTag & tag : DICOMTag::DataSetAttributes())
     {
       if (const auto text = TextOf(elements, tag))

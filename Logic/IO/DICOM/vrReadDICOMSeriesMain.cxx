@@ -184,6 +184,33 @@ OtherSetsOfTheUID(const std::vector<DICOMFileAttributes> & files,
   return std::to_string(count) + (count == 1 ? " other file" : " other files") + " of the Series Instance UID " + uid +
          " differ from the series chosen and " + (count == 1 ? "was" : "were") + " not read: " + text;
 }
+/** The warning for the chosen set's files whose data set GDCM read with implicit VR under a Transfer Syntax UID that
+ * declares explicit VR: their pixels and attributes pass every check, so the series is read, and the user learns that
+ * the files' meta information is wrong. */
+std::string
+ImplicitUnderExplicitClaimWarning(const std::vector<DICOMFileAttributes> & files, const DICOMImageSet & set)
+{
+  std::vector<std::size_t> misdeclared;
+  for (const std::size_t j : set.Files)
+  {
+    if (files[j].ImplicitUnderExplicitClaim)
+    {
+      misdeclared.push_back(j);
+    }
+  }
+  if (misdeclared.empty())
+  {
+    return std::string();
+  }
+  const DICOMFileAttributes & first = files[misdeclared.front()];
+  const std::string           more =
+    misdeclared.size() > 1 ? " and " + std::to_string(misdeclared.size() - 1) + " other files of the series" : "";
+  return "the DICOM file " + first.File + more + (misdeclared.size() > 1 ? " declare" : " declares") +
+         " explicit VR (Transfer Syntax UID " + first.Shown(DICOMTag::TransferSyntaxUID) + ") but " +
+         (misdeclared.size() > 1 ? "their data sets are" : "its data set is") +
+         " written with implicit VR: read as written, as GDCM does, since every check of the series holds for " +
+         (misdeclared.size() > 1 ? "them" : "it") + "; the file meta information is wrong (check the files' source)";
+}
 } // namespace
 
 int
@@ -252,6 +279,10 @@ main(int argc, char * argv[])
   if (const std::string others = OtherSetsOfTheUID(files, sets, chosen); !others.empty())
   {
     warnings.push_back(others);
+  }
+  if (const std::string misdeclared = ImplicitUnderExplicitClaimWarning(files, sets[chosen]); !misdeclared.empty())
+  {
+    warnings.push_back(misdeclared);
   }
 
   // Every file agrees; one instance once; the geometry from the positions.
