@@ -686,7 +686,7 @@ CPRView::FitCaptions()
       vtkTextActor * caption = panes[k]->Caption;
       caption->GetTextProperty()->SetFontSize(size);
       caption->GetPositionCoordinate()->SetValue(panes[k]->Offset, below, 0.0);
-      const auto box = CaptionBoxOf(caption);
+      const auto box = TextBoxOf(caption);
       start[k] = std::min(box[0], limit - (box[1] - box[0]));
       limit = start[k] - CaptionMargin;
       fitsBelow = fitsBelow && box[2] >= 0.0; // display y runs up from the view's bottom
@@ -698,7 +698,7 @@ CPRView::FitCaptions()
     for (std::size_t k = 0; k < panes.size(); ++k)
     {
       vtkTextActor * caption = panes[k]->Caption;
-      const double   natural = CaptionBoxOf(caption)[0];
+      const double   natural = TextBoxOf(caption)[0];
       const double   moved = std::max(start[k], CaptionMargin);
       caption->GetPositionCoordinate()->SetValue(panes[k]->Offset + (moved - natural) * perPixel, below, 0.0);
     }
@@ -720,34 +720,25 @@ CPRView::FitCaptions()
 }
 
 std::array<double, 4>
-CPRView::CaptionBoxOf(vtkTextActor * caption) const
+CPRView::TextBoxOf(vtkTextActor * text) const
 {
+  // The box about the text's anchor, moved to where the anchor is in the view.
   std::array<double, 4> box{};
-  caption->GetBoundingBox(m_Renderer, box.data());
-  const int * anchor = caption->GetPositionCoordinate()->GetComputedDisplayValue(m_Renderer);
+  text->GetBoundingBox(m_Renderer, box.data());
+  const int * anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(m_Renderer);
   return { box[0] + anchor[0], box[1] + anchor[0], box[2] + anchor[1], box[3] + anchor[1] };
 }
 
 std::array<double, 4>
 CPRView::GetCaptionBox(bool unfiltered) const
 {
-  return CaptionBoxOf((unfiltered ? m_Unfiltered : m_Filtered)->Caption);
+  return TextBoxOf((unfiltered ? m_Unfiltered : m_Filtered)->Caption);
 }
 
 std::array<std::array<double, 4>, 2>
 CPRView::GetCornerTextBoxes() const
 {
-  std::array<std::array<double, 4>, 2> boxes{};
-  std::size_t                          k = 0;
-  for (vtkTextActor * text : { m_UpperLeftText.Get(), m_UpperRightText.Get() })
-  {
-    // The box about the text's anchor, moved to where the anchor is in the view.
-    std::array<double, 4> & box = boxes[k++];
-    text->GetBoundingBox(m_Renderer, box.data());
-    const int * anchor = text->GetPositionCoordinate()->GetComputedDisplayValue(m_Renderer);
-    box = { box[0] + anchor[0], box[1] + anchor[0], box[2] + anchor[1], box[3] + anchor[1] };
-  }
-  return boxes;
+  return { TextBoxOf(m_UpperLeftText), TextBoxOf(m_UpperRightText) };
 }
 
 QString

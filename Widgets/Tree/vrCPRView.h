@@ -260,8 +260,9 @@ private:
   FitCornerTexts();
   void
   FitCaptions();
+  /** A text actor's rectangle in the view's display pixels (as GetCornerTextBoxes gives them). */
   std::array<double, 4>
-  CaptionBoxOf(vtkTextActor * caption) const;
+  TextBoxOf(vtkTextActor * text) const;
   void
   UpdateCenterlines();
   void
