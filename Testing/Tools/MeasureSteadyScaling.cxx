@@ -9,7 +9,8 @@
 //
 //   MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] [--jacobi] case:W ...
 //   (case thorax|runoff|aorta|aortailiacs|aorta@ANGLE (the aorta at ANGLE degrees), H = 2 W, or fullsize, W one of the
-//   full-size views' widths (vr::benchmarks::FullSizeViews); a in mm^-2, default 1/9: J = 3 mm)
+//   full-size views' widths (vr::benchmarks::FullSizeViews); runoff-repeated|runoff-subsampled, the run-off map at
+//   half or twice the width resampled to W x 2W; a in mm^-2, default 1/9: J = 3 mm)
 #include "PlainBilateralDepthRelax.h"
 #include "vrBenchmarkScene.h"
 #include "vrCenterlineIO.h"
@@ -43,6 +44,32 @@ MapOf(const vr::test::PhantomDepthMap & map, unsigned int width, unsigned int he
   return { vr::test::PixelsOf(map.Depth.GetPointer()), vr::test::PixelsOf(map.Fixed.GetPointer()), width, height };
 }
 
+/** The run-off phantom's map at W x 2W resampled to \a width x 2 \a width by nearest pixel: each pixel repeated
+ * 2 x 2 (W = width / 2), or every other pixel taken (W = 2 width). The same content at another resolution, to tell
+ * the solver's own scaling from what a finer map adds (docs/measurements/2026-11-29-steady-runoff-content.md). */
+Map
+RunoffResampled(unsigned int width, bool repeated)
+{
+  const unsigned int sourceWidth = repeated ? width / 2 : 2 * width;
+  const Map          source = MapOf(
+    vr::benchmarks::PhantomScene::Instance().GetDepthMap(sourceWidth, 2 * sourceWidth), sourceWidth, 2 * sourceWidth);
+  const unsigned int height = 2 * width;
+  Map                map{ std::vector<float>(std::size_t{ width } * height),
+           std::vector<unsigned char>(std::size_t{ width } * height),
+           width,
+           height };
+  for (std::size_t y = 0; y < height; ++y)
+  {
+    for (std::size_t x = 0; x < width; ++x)
+    {
+      const std::size_t from = repeated ? (y / 2) * sourceWidth + x / 2 : (2 * y) * sourceWidth + 2 * x;
+      map.Depth[y * width + x] = source.Depth[from];
+      map.Fixed[y * width + x] = source.Fixed[from];
+    }
+  }
+  return map;
+}
+
 Map
 MakeMap(const std::string & name, unsigned int width)
 {
@@ -54,6 +81,14 @@ MakeMap(const std::string & name, unsigned int width)
   if (name == "runoff")
   {
     return MapOf(vr::benchmarks::PhantomScene::Instance().GetDepthMap(width, height), width, height);
+  }
+  if (name == "runoff-repeated" || name == "runoff-subsampled")
+  {
+    if (width < 2 || width % 2 != 0)
+    {
+      throw std::invalid_argument(name + " needs an even width, not " + std::to_string(width));
+    }
+    return RunoffResampled(width, name == "runoff-repeated");
   }
   if (name == "aorta")
   {
@@ -79,7 +114,8 @@ MakeMap(const std::string & name, unsigned int width)
     }
     throw std::invalid_argument("no full-size view is " + std::to_string(width) + " pixels wide");
   }
-  throw std::invalid_argument("unknown case " + name + " (thorax, runoff, aorta, aortailiacs or fullsize)");
+  throw std::invalid_argument("unknown case " + name +
+                              " (thorax, runoff, runoff-repeated, runoff-subsampled, aorta, aortailiacs or fullsize)");
 }
 
 struct Run
@@ -169,6 +205,8 @@ constexpr const char * Usage =
   "usage: MeasureSteadyScaling [--repeat N] [--threads T] [--anisotropy a] [--only nested|input] [--jacobi] case:W "
   "...\n"
   "  case: thorax, runoff, aorta, aortailiacs or aorta@ANGLE (degrees), at W x 2W pixels;\n"
+  "        runoff-repeated (the run-off map at W/2 x W, each pixel 2 x 2) or runoff-subsampled (the map at\n"
+  "        2W x 4W, every other pixel), at W x 2W, W even;\n"
   "        fullsize, with W one of the full-size views' widths (253, 505, 1010)\n"
   "  a: in mm^-2, default 1/9 (J = 3 mm)\n";
 
