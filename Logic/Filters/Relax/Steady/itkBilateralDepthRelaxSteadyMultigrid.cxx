@@ -11,6 +11,24 @@ namespace itk::detail::BilateralDepthRelaxSteady
 {
 namespace
 {
+/** A 9-point level's diagonal coupling \a diagonal of a fine point between two coarse points counts towards the side of
+ * the coarse point whose own coupling \a link to the diagonal neighbour is at least DiagonalLink times its diagonal
+ * \a coarseC; otherwise it is collapsed like the couplings across. Where a depth step runs between the coarse point and
+ * the diagonal neighbour (the corner where two steps meet), counting it towards that side would interpolate from
+ * across the step. */
+inline void
+SortDiagonal(float & toSide, float & across, float diagonal, float link, float coarseC)
+{
+  if (link >= Multigrid::DiagonalLink * coarseC)
+  {
+    toSide += diagonal;
+  }
+  else
+  {
+    across += diagonal;
+  }
+}
+
 /** Interpolation weights of coarse row \a J from the operator of the finer level \a f, following the weights: a
  * fine point between two coarse points along x collapses its stencil along y (its couplings above and below are
  * taken as if to itself) and takes each side in proportion to its couplings to that side's column, divided by its
@@ -35,13 +53,15 @@ BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
     {
       float toLeft = f.template Weight<-1, 0>(px);
       float toRight = f.template Weight<1, 0>(px);
+      float across = f.template Weight<0, 1>(px) + f.template Weight<0, -1>(px);
       if constexpr (NinePoint)
       {
-        toLeft += f.template Weight<-1, 1>(px) + f.template Weight<-1, -1>(px);
-        toRight += f.template Weight<1, 1>(px) + f.template Weight<1, -1>(px);
+        SortDiagonal(toLeft, across, f.template Weight<-1, 1>(px), f.template Weight<0, 1>(p), f.C[p]);
+        SortDiagonal(toLeft, across, f.template Weight<-1, -1>(px), f.template Weight<0, -1>(p), f.C[p]);
+        SortDiagonal(toRight, across, f.template Weight<1, 1>(px), f.template Weight<0, 1>(p + 2), f.C[p + 2]);
+        SortDiagonal(toRight, across, f.template Weight<1, -1>(px), f.template Weight<0, -1>(p + 2), f.C[p + 2]);
       }
-      const float across = f.template Weight<0, 1>(px) + f.template Weight<0, -1>(px);
-      float       denominator = f.C[px] - f.template Weight<0, 1>(px) - f.template Weight<0, -1>(px);
+      float denominator = f.C[px] - across;
       denominator = denominator > 0.0f ? denominator : toLeft + toRight;
       if (denominator > 0.0f && !(toLeft + toRight < Multigrid::WeakInterpolation * across))
       {
@@ -56,13 +76,16 @@ BuildEdgeInterpolationRow(const Level & f, Level & c, long J)
     {
       float toBelow = f.template Weight<0, -1>(py);
       float toAbove = f.template Weight<0, 1>(py);
+      float across = f.template Weight<1, 0>(py) + f.template Weight<-1, 0>(py);
       if constexpr (NinePoint)
       {
-        toBelow += f.template Weight<1, -1>(py) + f.template Weight<-1, -1>(py);
-        toAbove += f.template Weight<1, 1>(py) + f.template Weight<-1, 1>(py);
+        const long q = p + 2 * f.Stride;
+        SortDiagonal(toBelow, across, f.template Weight<1, -1>(py), f.template Weight<1, 0>(p), f.C[p]);
+        SortDiagonal(toBelow, across, f.template Weight<-1, -1>(py), f.template Weight<-1, 0>(p), f.C[p]);
+        SortDiagonal(toAbove, across, f.template Weight<1, 1>(py), f.template Weight<1, 0>(q), f.C[q]);
+        SortDiagonal(toAbove, across, f.template Weight<-1, 1>(py), f.template Weight<-1, 0>(q), f.C[q]);
       }
-      const float across = f.template Weight<1, 0>(py) + f.template Weight<-1, 0>(py);
-      float       denominator = f.C[py] - f.template Weight<1, 0>(py) - f.template Weight<-1, 0>(py);
+      float denominator = f.C[py] - across;
       denominator = denominator > 0.0f ? denominator : toBelow + toAbove;
       if (denominator > 0.0f && !(toBelow + toAbove < Multigrid::WeakInterpolation * across))
       {

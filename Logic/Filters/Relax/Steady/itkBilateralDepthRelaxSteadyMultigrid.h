@@ -26,7 +26,8 @@ struct MultigridBuffers
 
 /** A black-box multigrid: coarse points on every other row and column, interpolation that follows the weights (a
  * point beside a depth jump interpolates from its own side only, a point on a line coupled along it only from
- * neither), Galerkin coarse operators (9-point stencils),
+ * neither, a diagonal coupling counts towards a coarse point only where that point is coupled to its end), Galerkin
+ * coarse operators (9-point stencils),
  * red-black Gauss-Seidel smoothing on the 5-point finest level and four-colour Gauss-Seidel on the 9-point coarse
  * ones, a dense Cholesky solve on the coarsest (at most CoarsestPoints points). Build() makes the hierarchy from the
  * finest level's operator; Cycle() applies one V(1,1)-cycle, a symmetric approximate inverse of it. Every sweep
@@ -41,6 +42,10 @@ public:
    * this fraction of its couplings across (see docs/steady-solver.md, "Lines of pixels coupled along themselves
    * only"). */
   static constexpr float WeakInterpolation = 0.01f;
+
+  /** On a 9-point level, a fine point's diagonal coupling counts towards a coarse point only where that coarse point's
+   * coupling to the diagonal neighbour is at least this fraction of its diagonal (see docs/steady-solver.md). */
+  static constexpr float DiagonalLink = 0.01f;
 
   /** A hierarchy over a \a width x \a height finest level, whose operator C, E, N the caller fills and whose right-hand
    * side B and correction X the caller points at arrays of the level's layout. With \a lender, the levels' arrays are
