@@ -40,10 +40,9 @@ AssembleFinestLevel(Steady::Level &            l,
   }
 }
 
-/** A finest level of \a width x \a height as the solver assembles it: random weights in [lightest, 1] on every edge, a
- * fraction \a cuts of them \a cutWeight instead (0: a weight that vanished across a depth jump), some points fixed
- * (inactive, C = 0, no couplings; their weights still add to their neighbours' C as Dirichlet values). */
-struct Problem
+/** A hierarchy over a finest level of \a width x \a height whose X and B are arrays of its own: what every problem
+ * below has, before it fills the finest level's weights. */
+struct Hierarchy
 {
   Steady::BandBuffers      BandBuffers;
   Steady::MultigridBuffers MultigridBuffers;
@@ -51,13 +50,7 @@ struct Problem
   Steady::Bands            Bands;
   Steady::Multigrid        Multigrid;
 
-  Problem(long         width,
-          long         height,
-          unsigned int seed,
-          double       cuts = 0.1,
-          float        cutWeight = 0.0f,
-          unsigned int threads = 1,
-          float        lightest = 0.05f)
+  Hierarchy(long width, long height, unsigned int threads = 1)
     : X(Steady::PaddedSize(width, height), 0.0f)
     , B(Steady::PaddedSize(width, height), 0.0f)
     , Bands(BandBuffers, threads, height, Steady::PaddedStride(width))
@@ -66,6 +59,24 @@ struct Problem
     Steady::Level & l = Multigrid.Finest();
     l.X = X.data();
     l.B = B.data();
+  }
+};
+
+/** A finest level of \a width x \a height as the solver assembles it: random weights in [lightest, 1] on every edge, a
+ * fraction \a cuts of them \a cutWeight instead (0: a weight that vanished across a depth jump), some points fixed
+ * (inactive, C = 0, no couplings; their weights still add to their neighbours' C as Dirichlet values). */
+struct Problem : Hierarchy
+{
+  Problem(long         width,
+          long         height,
+          unsigned int seed,
+          double       cuts = 0.1,
+          float        cutWeight = 0.0f,
+          unsigned int threads = 1,
+          float        lightest = 0.05f)
+    : Hierarchy(width, height, threads)
+  {
+    Steady::Level &                       l = Multigrid.Finest();
     std::mt19937                          generator(seed);
     std::uniform_real_distribution<float> weight(lightest, 1.0f);
     std::bernoulli_distribution           cut(cuts);
@@ -422,23 +433,12 @@ namespace
  * whose edges to the rows above and below weigh \a across: a line of pixels between two depth steps (the VMTK aorta
  * where its iliacs cross has such lines, hundreds of pixels long, with weights of 1e-14 to 1e-22 across). In float,
  * C = 1 + 1 + across + across is 2 on the line. */
-struct LineProblem
+struct LineProblem : Hierarchy
 {
-  Steady::BandBuffers      BandBuffers;
-  Steady::MultigridBuffers MultigridBuffers;
-  std::vector<float>       X, B;
-  Steady::Bands            Bands;
-  Steady::Multigrid        Multigrid;
-
   LineProblem(long width, long height, long lineRow, long lineLength, float across)
-    : X(Steady::PaddedSize(width, height), 0.0f)
-    , B(Steady::PaddedSize(width, height), 0.0f)
-    , Bands(BandBuffers, 1, height, Steady::PaddedStride(width))
-    , Multigrid(MultigridBuffers, Bands, width, height)
+    : Hierarchy(width, height)
   {
-    Steady::Level & l = Multigrid.Finest();
-    l.X = X.data();
-    l.B = B.data();
+    Steady::Level &                       l = Multigrid.Finest();
     std::vector<float>                    right(l.Size(), 0.0f), up(l.Size(), 0.0f), active(l.Size(), 0.0f);
     std::mt19937                          generator(17);
     std::uniform_real_distribution<float> along(0.6f, 1.0f);
@@ -575,26 +575,16 @@ namespace
  * depth steps (weight 0 on the edges that cross its border), the rest an L-shaped region around it: the shape of the
  * run-off phantom where the step between its legs meets the horizontal one. All other weights 1; the bottom and top
  * rows fixed, so that both regions are anchored. */
-struct CornerProblem
+struct CornerProblem : Hierarchy
 {
-  Steady::BandBuffers      BandBuffers;
-  Steady::MultigridBuffers MultigridBuffers;
-  std::vector<float>       X, B;
-  Steady::Bands            Bands;
-  Steady::Multigrid        Multigrid;
-  long                     CornerX, CornerY;
+  long CornerX, CornerY;
 
   CornerProblem(long width, long height, long cornerX, long cornerY)
-    : X(Steady::PaddedSize(width, height), 0.0f)
-    , B(Steady::PaddedSize(width, height), 0.0f)
-    , Bands(BandBuffers, 1, height, Steady::PaddedStride(width))
-    , Multigrid(MultigridBuffers, Bands, width, height)
+    : Hierarchy(width, height)
     , CornerX(cornerX)
     , CornerY(cornerY)
   {
-    Steady::Level & l = Multigrid.Finest();
-    l.X = X.data();
-    l.B = B.data();
+    Steady::Level &    l = Multigrid.Finest();
     std::vector<float> right(l.Size(), 0.0f), up(l.Size(), 0.0f), active(l.Size(), 0.0f);
     for (long y = 0; y < height; ++y)
     {
