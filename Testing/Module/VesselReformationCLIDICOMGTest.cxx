@@ -511,6 +511,28 @@ TEST(DICOMSeriesModule, ExplicitVRClaimedOverImplicitVRDataIsReadWithAWarningNam
   EXPECT_EQ(SlicesThatDiffer(vr::ReadVolume(folder), TheScene().Volume, 0.0), std::vector<unsigned int>());
 }
 
+// Two such files: the warning names the first and counts the other, in the singular.
+TEST(DICOMSeriesModule, TwoFilesClaimingExplicitVROverImplicitVRDataAreNamedAndCounted)
+{
+  CTSeriesOptions options;
+  options.Encoding.ExplicitVR = false;
+  const std::string folder = WriteSeries(
+    "implicit-claims-explicit-twice",
+    [](std::vector<DICOMTestFile> & files)
+    {
+      Named(files, "IM0009.dcm").Encoding.ClaimedTransferSyntax = "1.2.840.10008.1.2.1";
+      Named(files, "IM0012.dcm").Encoding.ClaimedTransferSyntax = "1.2.840.10008.1.2.1";
+    },
+    options);
+  const ModuleResult run = RunModule(folder, "implicit-claims-explicit-twice");
+  ExpectRead(run);
+  EXPECT_TRUE(Contains(run.Module.Err,
+                       "the DICOM file " + InFolder(folder, "IM0009.dcm") +
+                         " and 1 other file of the series declare explicit VR"))
+    << run.Module.Err;
+  EXPECT_EQ(SlicesThatDiffer(vr::ReadVolume(folder), TheScene().Volume, 0.0), std::vector<unsigned int>());
+}
+
 TEST(DICOMSeriesModule, SliceThicknessIsNoReasonToMoveOrDropASlice)
 {
   for (const std::string & value : { "0", "-1", "NaN", "removed", "25" })

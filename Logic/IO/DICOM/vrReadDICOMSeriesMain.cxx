@@ -184,6 +184,7 @@ OtherSetsOfTheUID(const std::vector<DICOMFileAttributes> & files,
   return std::to_string(count) + (count == 1 ? " other file" : " other files") + " of the Series Instance UID " + uid +
          " differ from the series chosen and " + (count == 1 ? "was" : "were") + " not read: " + text;
 }
+
 /** The warning for the chosen set's files whose data set GDCM read with implicit VR under a Transfer Syntax UID that
  * declares explicit VR: their pixels and attributes pass every check, so the series is read, and the user learns that
  * the files' meta information is wrong. */
@@ -203,8 +204,10 @@ ImplicitUnderExplicitClaimWarning(const std::vector<DICOMFileAttributes> & files
     return std::string();
   }
   const DICOMFileAttributes & first = files[misdeclared.front()];
+  const std::size_t           others = misdeclared.size() - 1;
   const std::string           more =
-    misdeclared.size() > 1 ? " and " + std::to_string(misdeclared.size() - 1) + " other files of the series" : "";
+    others > 0 ? " and " + std::to_string(others) + (others == 1 ? " other file" : " other files") + " of the series"
+                         : "";
   return "the DICOM file " + first.File + more + (misdeclared.size() > 1 ? " declare" : " declares") +
          " explicit VR (Transfer Syntax UID " + first.Shown(DICOMTag::TransferSyntaxUID) + ") but " +
          (misdeclared.size() > 1 ? "their data sets are" : "its data set is") +
