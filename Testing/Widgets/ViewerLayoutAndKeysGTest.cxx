@@ -325,6 +325,39 @@ TEST_F(ViewerLayoutTest, TheCPRViewsUpperAnnotationsStayApartAtItsNarrowest)
   }
 }
 
+// Maximising the window refits the image, and the captions with it, at the new size: the caption is where and as large
+// as a fresh fit at that size puts it. (The render window takes the widget's new size after the view sees the resize;
+// fitted at that moment, the caption kept the small window's font, 10 points, away from the image's left edge.)
+TEST_F(ViewerLayoutTest, AfterTheWindowGrowsTheCaptionIsWhereAFreshFitPutsIt)
+{
+  Window().resize(QSize(800, 500));
+  ASSERT_TRUE(WaitUntilSettled(Window()));
+  CPRView * cpr = Window().GetCPRView();
+  QWidget * view = cpr->GetRenderWidget();
+  const int narrow = view->width();
+  Window().resize(QSize(1800, 1000));
+  ASSERT_TRUE(WaitUntil(
+    [&]
+    {
+      QApplication::processEvents();
+      return view->width() > narrow + 400;
+    },
+    10.0));
+  for (int k = 0; k < 10; ++k)
+  {
+    QApplication::processEvents();
+  }
+  const auto afterResize = cpr->GetCaptionBox(false);
+  cpr->FitImage();
+  const auto fresh = cpr->GetCaptionBox(false);
+  for (std::size_t k = 0; k < 4; ++k)
+  {
+    EXPECT_NEAR(afterResize[k], fresh[k], 1.0)
+      << "caption box [x0, x1, y0, y1] coordinate " << k << ": " << afterResize[k] << " after the resize, " << fresh[k]
+      << " when fitted afresh";
+  }
+}
+
 TEST_F(ViewerLayoutTest, HomePutsThe3DCameraAlongTheViewDirectionAtAnyAngle)
 {
   // ResetCamera looks along v from 30 degrees aside and 10 above: cos(angle) = cos 30 cos 10.

@@ -10,6 +10,7 @@
 #include <QEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QTimer>
 #include <QVBoxLayout>
 #include <QVTKOpenGLNativeWidget.h>
 #include <QWheelEvent>
@@ -1003,12 +1004,21 @@ CPRView::eventFilter(QObject * watched, QEvent * event)
       }
       return false;
     case QEvent::Resize:
-      // Keep the image fitted when the widget changes size, unless the user zoomed or panned since the last fit.
-      if (!m_ZoomedByUser)
-      {
-        FitImage();
-      }
-      FitCornerTexts();
+      // Keep the image fitted when the widget changes size, unless the user zoomed or panned since the last fit. The
+      // render window takes the widget's new size in the widget's own handling of this event, after this filter: the
+      // captions, measured in the render window's pixels, are fitted once that is done (fitted here, after a
+      // maximised window they kept the old width's smallest font, away from the image's edge).
+      QTimer::singleShot(0,
+                         this,
+                         [this]
+                         {
+                           if (!m_ZoomedByUser)
+                           {
+                             FitImage();
+                           }
+                           FitCornerTexts();
+                           Render();
+                         });
       return false;
     default:
       return false;
